@@ -1,0 +1,30 @@
+#pragma once
+// A conforming simplex mesh (triangles in 2D, tetrahedra in 3D) with linear geometry and
+// named boundary parts. Plain arrays, so it can be built, read or partitioned anywhere.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace signorini {
+
+struct SimplexMesh {
+  int dim = 0;                              // 2 or 3
+  std::vector<double> vertices;             // dim * numVertices(), interleaved x, y(, z)
+  std::vector<long long> cells;             // (dim + 1) * numCells(), vertex ids
+  std::vector<long long> facets;            // dim * numFacets(): boundary facets (edges in 2D, triangles in 3D)
+  std::vector<int> facetTags;               // one tag per boundary facet
+  std::map<std::string, int> boundaryTags;  // boundary name -> tag
+
+  long long numVertices() const { return dim > 0 ? static_cast<long long>(vertices.size()) / dim : 0; }
+  long long numCells() const { return dim > 0 ? static_cast<long long>(cells.size()) / (dim + 1) : 0; }
+  long long numFacets() const { return dim > 0 ? static_cast<long long>(facets.size()) / dim : 0; }
+
+  // Tag of a named boundary; throws InputError listing the known names if it is absent.
+  int tag(const std::string& boundaryName) const;
+
+  // The cell's (dim + 1) vertices, dim coordinates each, in cell order: the input the
+  // element routines expect.
+  void cellVertexCoordinates(long long cell, double* coords) const;
+};
+
+}  // namespace signorini

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Installs every dependency of Signorini from Debian's package archive.
+# Idempotent: when everything is present it returns at once without touching apt.
+set -euo pipefail
+
+packages=(
+  build-essential cmake make pkg-config
+  trilinos-all-dev            # Teuchos, Tpetra, Belos, MueLu, Ifpack2, Amesos2, Zoltan2, ...
+  libptscotch-dev libscotch-dev  # named by Debian's Trilinos CMake config
+  libopenmpi-dev openmpi-bin
+  libmetis-dev
+  libgmsh-dev gmsh            # Gmsh SDK (mesh reading) and CLI (test meshes)
+  libmuparser-dev             # user expressions for loads, gaps, displacements
+  libgtest-dev                # unit tests
+  python3 python3-numpy python3-matplotlib python3-meshio  # scripts and output checks
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${Status}' "$p" 2>/dev/null || true)
+  [[ "$status" == "install ok installed" ]] || missing+=("$p")
+done
+
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+
+echo "install-deps: installing ${missing[*]}"
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then SUDO="sudo"; fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,22 @@
+#include "signorini/SimplexMesh.hpp"
+
+#include "signorini/Error.hpp"
+
+namespace signorini {
+
+int SimplexMesh::tag(const std::string& boundaryName) const {
+  const auto it = boundaryTags.find(boundaryName);
+  if (it != boundaryTags.end()) return it->second;
+  std::string known;
+  for (const auto& [name, value] : boundaryTags) known += (known.empty() ? "" : ", ") + ("\"" + name + "\"");
+  throw InputError("unknown boundary \"" + boundaryName + "\"; the mesh has: " +
+                   (known.empty() ? std::string("no named boundaries") : known));
+}
+
+void SimplexMesh::cellVertexCoordinates(long long cell, double* coords) const {
+  const long long* cellVertices = cells.data() + (dim + 1) * cell;
+  for (int v = 0; v <= dim; ++v)
+    for (int j = 0; j < dim; ++j) coords[v * dim + j] = vertices[dim * cellVertices[v] + j];
+}
+
+}  // namespace signorini

@@ -1,0 +1,56 @@
+#include "signorini/KrylovSolver.hpp"
+
+#include <BelosLinearProblem.hpp>
+#include <BelosSolverFactory.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Operator.hpp>
+
+#include "signorini/Error.hpp"
+
+namespace signorini {
+
+Teuchos::ParameterList KrylovSolver::validParameters() {
+  Teuchos::ParameterList p("Krylov");
+  p.set("solver", "CG", "Belos solver name: CG, MINRES, GMRES, or any name Belos knows");
+  p.sublist("Belos", false, "Passed to the Belos solver unchanged");
+  return p;
+}
+
+KrylovSolver::KrylovSolver(const Teuchos::ParameterList& params)
+    : solver_(params.isParameter("solver") ? params.get<std::string>("solver") : "CG"),
+      belos_(params.isSublist("Belos") ? params.sublist("Belos") : Teuchos::ParameterList()) {
+  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
+  if (!factory.isSupported(solver_))
+    throw InputError("Krylov solver \"" + solver_ + "\" is not a Belos solver");
+}
+
+KrylovResult KrylovSolver::solve(const RCP<const Operator>& A, const RCP<const Operator>& M,
+                                 const RCP<const MultiVector>& b, const RCP<MultiVector>& x,
+                                 double tol, int maxIterations) const {
+  auto problem = rcp(new Belos::LinearProblem<Scalar, MultiVector, Operator>(A, x, b));
+  if (!M.is_null()) problem->setRightPrec(M);
+  problem->setProblem();
+
+  auto params = rcp(new Teuchos::ParameterList(belos_));
+  params->set("Convergence Tolerance", tol);
+  params->set("Maximum Iterations", maxIterations);
+  // The forcing condition is on the true residual relative to the right-hand side.
+  if (!params->isParameter("Implicit Residual Scaling"))
+    params->set("Implicit Residual Scaling", "Norm of RHS");
+  if (!params->isParameter("Explicit Residual Scaling"))
+    params->set("Explicit Residual Scaling", "Norm of RHS");
+
+  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
+  auto solver = factory.create(solver_, params);
+  solver->setProblem(problem);
+  Belos::ReturnType status = solver->solve();
+
+  KrylovResult result;
+  result.iterations = solver->getNumIters();
+  result.converged = status == Belos::Converged;
+  result.relativeResidual = solver->achievedTol();
+  return result;
+}
+
+}  // namespace signorini
