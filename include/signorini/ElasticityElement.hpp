@@ -1,0 +1,51 @@
+#pragma once
+// Element matrices and vectors of isotropic linear elasticity for vector valued P_k on one
+// simplex with straight sides. Local dof ordering: dim * localNode + component. The cell is
+// given by vertexCoords, its (dim + 1) vertices with dim coordinates each, in cell order.
+#include <functional>
+#include <vector>
+
+#include "signorini/LagrangeBasis.hpp"
+
+namespace signorini {
+
+struct IsotropicMaterial {
+  double youngsModulus = 1.0;
+  double poissonRatio = 0.3;
+  bool planeStrain = true;  // 2D only: false selects plane stress
+
+  // Lame parameters of the 3D law, which plane strain shares:
+  // lambda = E nu / ((1 + nu)(1 - 2 nu)), mu = E / (2 (1 + nu)).
+  // Throw InputError unless E > 0 and -1 < nu < 1/2.
+  double lame1() const;
+  double lame2() const;
+  // The lambda a dim-dimensional model uses: plane stress (dim 2, !planeStrain) replaces it by
+  // 2 lambda mu / (lambda + 2 mu) = E nu / (1 - nu^2).
+  double effectiveLame1(int dim) const;
+};
+
+// Stiffness matrix, (dim * n)^2 row-major with n = basis.size(): exactly integrated, exactly
+// symmetric. Reference gradient products are tabulated once per (dim, degree), so a call
+// costs O(n^2 dim^3) and allocates nothing once Ke has its size.
+void elasticityStiffness(const LagrangeBasis& basis, const double* vertexCoords, const IsotropicMaterial& material,
+                         std::vector<double>& Ke);
+
+// Fe_(dim a + c) = integral over the cell of f_c phi_a, with a rule exact for total degree
+// quadratureDegree; force(x, f) writes dim components at point x.
+void bodyForceLoad(const LagrangeBasis& basis, const double* vertexCoords,
+                   const std::function<void(const double* x, double* f)>& force, int quadratureDegree,
+                   std::vector<double>& Fe);
+
+// Fe_(dim a + c) = integral over local facet localFacet (opposite local vertex localFacet)
+// of t_c phi_a, with the facet's true surface measure; traction(x, t) writes dim components.
+// Fe has the size of the whole cell's vector; nodes off the facet get 0.
+void facetTractionLoad(const LagrangeBasis& basis, const double* vertexCoords, int localFacet,
+                       const std::function<void(const double* x, double* t)>& traction, int quadratureDegree,
+                       std::vector<double>& Fe);
+
+// Cauchy stress sigma = lambda tr(eps) I + 2 mu eps at reference point xi, from the cell's local
+// displacement dofs: the full symmetric dim x dim tensor, row-major (in-plane part in 2D).
+void cellStress(const LagrangeBasis& basis, const double* vertexCoords, const IsotropicMaterial& material,
+                const double* localDisplacement, const double* xi, double* sigma);
+
+}  // namespace signorini

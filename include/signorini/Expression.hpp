@@ -1,0 +1,28 @@
+#pragma once
+// A user-supplied scalar expression of the coordinates x, y, z (muparser syntax), for
+// loads, tractions, gaps and prescribed displacements given in the XML.
+#include <memory>
+#include <string>
+
+namespace signorini {
+
+class Expression {
+ public:
+  // Parses `text` at once: a syntax error or an unknown variable throws InputError whose
+  // message names `what` (e.g. "Problem/body force: y").
+  Expression(const std::string& text, const std::string& what);
+  Expression(const Expression& other);
+  Expression& operator=(const Expression& other);
+  ~Expression();
+
+  double operator()(const double* x, int dim) const;
+  const std::string& text() const { return text_; }
+  bool isConstantZero() const;
+
+ private:
+  struct Parser;
+  std::string text_, what_;
+  std::unique_ptr<Parser> parser_;
+};
+
+}  // namespace signorini

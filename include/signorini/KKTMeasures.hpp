@@ -1,0 +1,23 @@
+#pragma once
+// The optimality measures of min 1/2 v^T Q v - b^T v s.t. c = A v - d <= 0 with multipliers
+// lambda <= 0 (the paper's sign), absolute and relative:
+//   stationarity       ||Q v - b - A^T lambda||          / max(||b||, ||A^T lambda||)
+//   complementarity    max_i |lambda_i c_i|, relative: m max_i |lambda_i c_i| (a bound of the
+//                      duality gap, so of the error in J) / max(|b^T v|, v^T Q v)
+//   primal feasibility max(0, max_i c_i)                  / max(||v||_inf, ||d||_inf)
+//   dual feasibility   max(0, max_i lambda_i)             / ||lambda||_inf
+// (a zero scale counts as 1).
+#include "signorini/ContactQP.hpp"
+
+namespace signorini {
+
+struct KKTMeasures {
+  double stationarity = 0, complementarity = 0, primalFeasibility = 0, dualFeasibility = 0;  // relative
+  double stationarityAbs = 0, complementarityAbs = 0, primalFeasibilityAbs = 0, dualFeasibilityAbs = 0;
+
+  double worst() const;  // largest relative measure
+};
+
+KKTMeasures kktMeasures(const ContactQP& qp, const Vector& v, const Vector& lambda);
+
+}  // namespace signorini

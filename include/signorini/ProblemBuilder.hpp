@@ -1,0 +1,27 @@
+#pragma once
+// From a validated "Problem" parameter list to the distributed discrete problem: mesh
+// (box generator or Gmsh file), METIS partition, P_k space and the assembled ContactQP.
+#include <memory>
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "signorini/ContactQP.hpp"
+#include "signorini/DistributedSpace.hpp"
+#include "signorini/ProblemDefinition.hpp"
+
+namespace signorini {
+
+struct AssembledProblem {
+  ProblemDefinition definition;
+  std::shared_ptr<const SimplexMesh> mesh;
+  std::unique_ptr<DistributedSpace> space;
+  ContactQP qp;
+  double setupSeconds = 0, assemblySeconds = 0;  // max over ranks
+};
+
+// `baseDirectory` resolves a relative "mesh: file".
+AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
+                              const std::string& baseDirectory = ".");
+
+}  // namespace signorini

@@ -1,0 +1,43 @@
+#pragma once
+// What the user asks to solve: mesh source, element degree, material, loads, boundary
+// conditions and obstacle, read from the "Problem" parameter list and validated there.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "signorini/ElasticityElement.hpp"
+#include "signorini/Expression.hpp"
+
+namespace signorini {
+
+// A vector field on a named boundary; absent components are left free.
+struct BoundaryField {
+  std::string boundary;
+  std::vector<std::optional<Expression>> components;  // dim entries
+};
+
+struct ProblemDefinition {
+  std::string name;
+  std::string meshType;  // "box" or "gmsh"
+  int dim = 2;
+  std::array<long long, 3> cells{{1, 1, 1}};
+  std::array<double, 3> lengths{{1.0, 1.0, 1.0}};
+  std::string meshFile;
+  int degree = 1;
+  IsotropicMaterial material;
+  std::vector<Expression> bodyForce;  // dim components
+  int loadQuadratureDegree = 5;
+  std::vector<BoundaryField> dirichlet, traction;
+  std::string contactBoundary;
+  std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  // unit, from obstacle into body
+  std::optional<Expression> gap;
+
+  static Teuchos::ParameterList validParameters();
+  // `dim` of a Gmsh mesh is only known once it is read: pass it then (0 = from the list).
+  static ProblemDefinition fromParameters(const Teuchos::ParameterList& problem, int meshDim = 0);
+};
+
+}  // namespace signorini

@@ -1,0 +1,264 @@
+#include "signorini/ElasticityAssembler.hpp"
+
+#include <algorithm>
+
+#include <Kokkos_DualView.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
+#include <Tpetra_FECrsGraph.hpp>
+#include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/ElasticityElement.hpp"
+#include "signorini/Error.hpp"
+
+namespace signorini {
+namespace {
+
+using FEGraph = Tpetra::FECrsGraph<LocalOrdinal, GlobalOrdinal, Node>;
+using FEMatrix = Tpetra::FECrsMatrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
+using Export = Tpetra::Export<LocalOrdinal, GlobalOrdinal, Node>;
+
+// Prescribed displacements, indexed by space DOF (dim * space node + component).
+struct DirichletData {
+  std::vector<char> fixed;
+  std::vector<double> value;
+};
+
+DirichletData dirichletData(const DistributedSpace& ds, const ProblemDefinition& problem) {
+  const LagrangeSpace& space = ds.space();
+  const int dim = ds.dim();
+  DirichletData data{std::vector<char>(dim * space.numNodes(), 0),
+                     std::vector<double>(dim * space.numNodes(), 0.0)};
+  for (const BoundaryField& bc : problem.dirichlet) {
+    const int tag = ds.mesh().tag(bc.boundary);
+    for (long long node : space.boundaryNodes(tag)) {
+      const double* x = &space.nodeCoordinates()[dim * node];
+      for (int c = 0; c < dim; ++c) {
+        if (!bc.components[c]) continue;
+        data.fixed[dim * node + c] = 1;
+        data.value[dim * node + c] = (*bc.components[c])(x, dim);
+      }
+    }
+  }
+  return data;
+}
+
+// The FE graph of the local cells: for each overlap node, its neighbours through the local
+// cells, sorted; every component row of the node gets all components of the neighbours.
+RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
+  const LagrangeSpace& space = ds.space();
+  const int dim = ds.dim(), npc = space.nodesPerCell();
+  const auto& overlap = ds.overlapSpaceNodes();
+  std::vector<int> localIndex(space.numNodes(), -1);
+  for (std::size_t i = 0; i < overlap.size(); ++i) localIndex[overlap[i]] = static_cast<int>(i);
+
+  // node -> local cells, in CSR form
+  std::vector<std::size_t> start(overlap.size() + 1, 0);
+  for (long long c : ds.localCells())
+    for (int i = 0; i < npc; ++i) ++start[localIndex[space.cellNodes(c)[i]] + 1];
+  for (std::size_t i = 0; i < overlap.size(); ++i) start[i + 1] += start[i];
+  std::vector<long long> cellsOfNode(start.back());
+  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+  for (long long c : ds.localCells())
+    for (int i = 0; i < npc; ++i) cellsOfNode[fill[localIndex[space.cellNodes(c)[i]]]++] = c;
+
+  std::vector<std::vector<GlobalOrdinal>> neighbours(overlap.size());
+  Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("entries per row", dim * overlap.size());
+  auto hostCounts = counts.view_host();
+  for (std::size_t i = 0; i < overlap.size(); ++i) {
+    auto& nb = neighbours[i];
+    for (std::size_t k = start[i]; k < start[i + 1]; ++k) {
+      const long long* nodes = space.cellNodes(cellsOfNode[k]);
+      for (int j = 0; j < npc; ++j) nb.push_back(ds.globalNode(nodes[j]));
+    }
+    std::sort(nb.begin(), nb.end());
+    nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+    for (int c = 0; c < dim; ++c) hostCounts(dim * i + c) = dim * nb.size();
+  }
+  counts.modify_host();
+  counts.sync_device();
+
+  auto graph = rcp(new FEGraph(ds.ownedDofMap(), ds.overlapDofMap(), counts));
+  graph->beginAssembly();
+  std::vector<GlobalOrdinal> cols;
+  for (std::size_t i = 0; i < overlap.size(); ++i) {
+    cols.clear();
+    for (GlobalOrdinal n : neighbours[i])
+      for (int c = 0; c < dim; ++c) cols.push_back(dim * n + c);
+    const GlobalOrdinal node = ds.globalNode(overlap[i]);
+    for (int c = 0; c < dim; ++c) graph->insertGlobalIndices(dim * node + c, cols.size(), cols.data());
+  }
+  graph->endAssembly();
+  return graph;
+}
+
+// Symmetric elimination of prescribed DOFs inside one element: their known values move to
+// the right-hand side of the free DOFs, their rows and columns are zeroed. The unit
+// diagonal and the prescribed value are set once, by the owner, after assembly.
+void eliminatePrescribed(const std::vector<char>& fixed, const std::vector<double>& value,
+                         int n, std::vector<double>& Ke, std::vector<double>& Fe) {
+  for (int j = 0; j < n; ++j) {
+    if (!fixed[j]) continue;
+    for (int i = 0; i < n; ++i) {
+      if (!fixed[i]) Fe[i] -= Ke[i * n + j] * value[j];
+    }
+  }
+  for (int j = 0; j < n; ++j) {
+    if (!fixed[j]) continue;
+    Fe[j] = 0.0;
+    for (int i = 0; i < n; ++i) Ke[i * n + j] = Ke[j * n + i] = 0.0;
+  }
+}
+
+}  // namespace
+
+RCP<MultiVector> rigidBodyModes(const DistributedSpace& ds) {
+  const int dim = ds.dim();
+  const int numModes = dim == 2 ? 3 : 6;
+  auto modes = rcp(new MultiVector(ds.ownedDofMap(), numModes));
+  const auto& coords = ds.space().nodeCoordinates();
+  const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
+  for (int k = 0; k < numModes; ++k) {
+    auto data = modes->getDataNonConst(k);
+    for (std::size_t i = 0; i < numOwned; ++i) {
+      const double* x = &coords[dim * ds.overlapSpaceNodes()[i]];
+      double* u = &data[dim * i];
+      if (k < dim) {
+        u[k] = 1.0;  // translation
+      } else if (dim == 2) {
+        u[0] = -x[1];
+        u[1] = x[0];
+      } else {
+        // rotation about axis a = k - 3: u = e_a x (x - 0)
+        const int a = k - 3, p = (a + 1) % 3, q = (a + 2) % 3;
+        u[p] = -x[q];
+        u[q] = x[p];
+      }
+    }
+  }
+  return modes;
+}
+
+ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition& problem) {
+  const LagrangeSpace& space = ds.space();
+  const SimplexMesh& mesh = ds.mesh();
+  const int dim = ds.dim(), npc = space.nodesPerCell(), n = dim * npc;
+  const DirichletData dirichlet = dirichletData(ds, problem);
+  if (problem.bodyForce.size() != static_cast<std::size_t>(dim))
+    throw InputError("Problem: the body force needs " + std::to_string(dim) + " components");
+
+  auto K = rcp(new FEMatrix(elasticityGraph(ds)));
+  Vector bOverlap(ds.overlapDofMap());
+
+  std::vector<double> vertexCoords((dim + 1) * dim), Ke, Fe, value(n);
+  std::vector<char> fixed(n);
+  std::vector<GlobalOrdinal> dofs(n);
+  const auto force = [&](const double* x, double* f) {
+    for (int c = 0; c < dim; ++c) f[c] = problem.bodyForce[c](x, dim);
+  };
+  const auto gatherCell = [&](long long cell) {
+    mesh.cellVertexCoordinates(cell, vertexCoords.data());
+    const long long* nodes = space.cellNodes(cell);
+    for (int i = 0; i < npc; ++i)
+      for (int c = 0; c < dim; ++c) {
+        const long long spaceDof = dim * nodes[i] + c;
+        dofs[dim * i + c] = dim * ds.globalNode(nodes[i]) + c;
+        fixed[dim * i + c] = dirichlet.fixed[spaceDof];
+        value[dim * i + c] = dirichlet.value[spaceDof];
+      }
+  };
+
+  K->beginAssembly();
+  for (long long cell : ds.localCells()) {
+    gatherCell(cell);
+    elasticityStiffness(space.basis(), vertexCoords.data(), problem.material, Ke);
+    bodyForceLoad(space.basis(), vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
+    eliminatePrescribed(fixed, value, n, Ke, Fe);
+    for (int i = 0; i < n; ++i) {
+      K->sumIntoGlobalValues(dofs[i], n, &Ke[i * n], dofs.data());
+      bOverlap.sumIntoGlobalValue(dofs[i], Fe[i]);
+    }
+  }
+  for (const BoundaryField& bc : problem.traction) {
+    const auto traction = [&](const double* x, double* t) {
+      for (int c = 0; c < dim; ++c) t[c] = (*bc.components[c])(x, dim);
+    };
+    for (const auto& [cell, facet] : space.boundaryFacets(mesh.tag(bc.boundary))) {
+      if (!ds.isLocalCell(cell)) continue;
+      gatherCell(cell);
+      facetTractionLoad(space.basis(), vertexCoords.data(), facet, traction,
+                        problem.loadQuadratureDegree, Fe);
+      for (int i = 0; i < n; ++i)
+        if (!fixed[i]) bOverlap.sumIntoGlobalValue(dofs[i], Fe[i]);
+    }
+  }
+  // Owners put the unit diagonal of prescribed DOFs.
+  const auto& overlap = ds.overlapSpaceNodes();
+  const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
+  const double one = 1.0;
+  for (std::size_t i = 0; i < numOwned; ++i)
+    for (int c = 0; c < dim; ++c)
+      if (dirichlet.fixed[dim * overlap[i] + c]) {
+        const GlobalOrdinal dof = dim * ds.globalNode(overlap[i]) + c;
+        K->sumIntoGlobalValues(dof, 1, &one, &dof);
+      }
+  K->endAssembly();
+
+  auto b = rcp(new Vector(ds.ownedDofMap()));
+  b->doExport(bOverlap, Export(ds.overlapDofMap(), ds.ownedDofMap()), Tpetra::ADD);
+  {
+    auto data = b->getDataNonConst();
+    for (std::size_t i = 0; i < numOwned; ++i)
+      for (int c = 0; c < dim; ++c)
+        if (dirichlet.fixed[dim * overlap[i] + c]) data[dim * i + c] = dirichlet.value[dim * overlap[i] + c];
+  }
+
+  // Contact: one constraint per contact node, numbered in the order of the renumbered nodes,
+  // so that each rank owns a contiguous range.
+  std::vector<long long> contactNodes;
+  if (!problem.contactBoundary.empty()) contactNodes = space.boundaryNodes(mesh.tag(problem.contactBoundary));
+  std::sort(contactNodes.begin(), contactNodes.end(),
+            [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
+  std::vector<GlobalOrdinal> ownedConstraints;
+  for (std::size_t k = 0; k < contactNodes.size(); ++k)
+    if (ds.ownsNode(contactNodes[k])) ownedConstraints.push_back(static_cast<GlobalOrdinal>(k));
+  auto constraintMap = rcp(new Map(contactNodes.size(), Teuchos::ArrayView<const GlobalOrdinal>(ownedConstraints),
+                                   0, ds.comm()));
+  auto A = rcp(new CrsMatrix(constraintMap, dim));
+  auto d = rcp(new Vector(constraintMap));
+  {
+    auto dData = d->getDataNonConst();
+    std::vector<GlobalOrdinal> cols(dim);
+    std::vector<double> vals(dim);
+    for (std::size_t i = 0; i < ownedConstraints.size(); ++i) {
+      const long long node = contactNodes[ownedConstraints[i]];
+      for (int c = 0; c < dim; ++c) {
+        cols[c] = dim * ds.globalNode(node) + c;
+        vals[c] = -problem.obstacleDirection[c];
+      }
+      A->insertGlobalValues(ownedConstraints[i], dim, vals.data(), cols.data());
+      dData[i] = (*problem.gap)(&space.nodeCoordinates()[dim * node], dim);
+    }
+  }
+  A->fillComplete(ds.ownedDofMap(), constraintMap);
+
+  auto coordinates = rcp(new MultiVector(ds.ownedNodeMap(), dim));
+  for (int c = 0; c < dim; ++c) {
+    auto data = coordinates->getDataNonConst(c);
+    for (std::size_t i = 0; i < numOwned; ++i) data[i] = space.nodeCoordinates()[dim * overlap[i] + c];
+  }
+
+  ContactQP qp;
+  qp.Q = K;
+  qp.b = b;
+  qp.A = A;
+  qp.d = d;
+  qp.nullspace = rigidBodyModes(ds);
+  qp.coordinates = coordinates;
+  qp.blockSize = dim;
+  return qp;
+}
+
+}  // namespace signorini

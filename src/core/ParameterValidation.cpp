@@ -1,0 +1,146 @@
+#include "signorini/ParameterValidation.hpp"
+
+#include <algorithm>
+#include <sstream>
+#include <vector>
+
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "signorini/Error.hpp"
+
+namespace signorini {
+namespace {
+
+bool isPassThrough(const std::string& name) { return name == "MueLu" || name == "Belos"; }
+
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      std::size_t above = row[j];
+      bool same = std::tolower(a[i - 1]) == std::tolower(b[j - 1]);
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string join(const std::string& path, const std::string& name) {
+  return path.empty() ? name : path + "/" + name;
+}
+
+std::string validNames(const Teuchos::ParameterList& valid) {
+  std::ostringstream out;
+  bool first = true;
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    if (valid.name(it) == kAnyNameSublist) continue;
+    out << (first ? "" : ", ") << '"' << valid.name(it) << '"';
+    first = false;
+  }
+  return out.str();
+}
+
+void validateInto(const Teuchos::ParameterList& user, Teuchos::ParameterList& merged,
+                  const std::string& path) {
+  const bool anyName = merged.isSublist(kAnyNameSublist);
+  const Teuchos::ParameterList templ = anyName ? merged.sublist(kAnyNameSublist) : Teuchos::ParameterList();
+  if (anyName) merged.remove(kAnyNameSublist);
+
+  for (auto it = user.begin(); it != user.end(); ++it) {
+    const std::string& name = user.name(it);
+    const Teuchos::ParameterEntry& entry = user.entry(it);
+    const std::string where = join(path, name);
+
+    if (anyName) {
+      if (!entry.isList())
+        throw InputError(where + ": expected a sublist (one per named item)");
+      Teuchos::ParameterList sub = templ;
+      sub.setName(name);
+      validateInto(Teuchos::getValue<Teuchos::ParameterList>(entry), sub, where);
+      merged.set(name, sub);
+      continue;
+    }
+    if (!merged.isParameter(name)) {
+      std::string hint = closestName(name, merged);
+      throw InputError(where + ": unknown parameter" +
+                       (hint.empty() ? std::string() : "; did you mean \"" + hint + "\"?") +
+                       " Valid names here: " + validNames(merged));
+    }
+    Teuchos::ParameterEntry& target = merged.getEntry(name);
+    if (target.isList()) {
+      if (!entry.isList()) throw InputError(where + ": expected a sublist");
+      if (isPassThrough(name)) {
+        target.setValue(Teuchos::getValue<Teuchos::ParameterList>(entry));
+      } else {
+        validateInto(Teuchos::getValue<Teuchos::ParameterList>(entry), merged.sublist(name), where);
+      }
+      continue;
+    }
+    if (entry.isList()) throw InputError(where + ": expected a value, not a sublist");
+
+    Teuchos::ParameterEntry value = entry;
+    const auto& expected = target.getAny(false).type();
+    if (value.getAny(false).type() != expected) {
+      if (expected == typeid(double) && value.isType<int>()) {
+        value.setValue(static_cast<double>(Teuchos::getValue<int>(value)));
+      } else {
+        throw InputError(where + ": has type " + value.getAny(false).typeName() +
+                         ", expected " + target.getAny(false).typeName());
+      }
+    }
+    if (auto validator = target.validator(); !validator.is_null()) {
+      try {
+        validator->validate(value, name, path.empty() ? "top level" : path);
+      } catch (const std::exception&) {
+        std::ostringstream accepted;
+        validator->printDoc("", accepted);
+        std::string doc = accepted.str();
+        while (!doc.empty() && (doc.back() == '\n' || doc.back() == ' ')) doc.pop_back();
+        std::replace(doc.begin(), doc.end(), '\n', ' ');
+        throw InputError(where + ": invalid value " + Teuchos::toString(value.getAny(false)) +
+                         "; accepted: " + doc);
+      }
+    }
+    value.setValidator(target.validator());
+    value.setDocString(target.docString());
+    target = value;
+  }
+}
+
+// Templates of user-named sublists are not parameters: drop those the user did not use.
+void removeTemplates(Teuchos::ParameterList& list) {
+  if (list.isSublist(kAnyNameSublist)) list.remove(kAnyNameSublist);
+  for (auto it = list.begin(); it != list.end(); ++it)
+    if (list.entry(it).isList() && !isPassThrough(list.name(it)))
+      removeTemplates(list.sublist(list.name(it)));
+}
+
+}  // namespace
+
+std::string closestName(const std::string& name, const Teuchos::ParameterList& valid) {
+  std::string best;
+  std::size_t bestDistance = std::max<std::size_t>(3, name.size() / 3) + 1;
+  for (auto it = valid.begin(); it != valid.end(); ++it) {
+    std::size_t d = editDistance(name, valid.name(it));
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = valid.name(it);
+    }
+  }
+  return best;
+}
+
+Teuchos::ParameterList validatedParameters(const Teuchos::ParameterList& user,
+                                           const Teuchos::ParameterList& valid,
+                                           const std::string& path) {
+  Teuchos::ParameterList merged = valid;
+  validateInto(user, merged, path);
+  removeTemplates(merged);
+  return merged;
+}
+
+}  // namespace signorini

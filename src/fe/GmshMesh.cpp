@@ -1,0 +1,455 @@
+#include "signorini/GmshMesh.hpp"
+
+#include <gmsh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <exception>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <new>
+#include <numeric>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "signorini/Error.hpp"
+
+namespace signorini {
+namespace {
+
+using Tag = std::size_t;  // Gmsh node and element tags
+
+constexpr int kLineType = 1;         // 2-node line
+constexpr int kTriangleType = 2;     // 3-node triangle
+constexpr int kTetrahedronType = 4;  // 4-node tetrahedron
+
+int simplexType(int d) { return d == 1 ? kLineType : d == 2 ? kTriangleType : kTetrahedronType; }
+
+std::string simplexDescription(int d) {
+  return d == 1   ? "2-node lines (Gmsh type 1)"
+         : d == 2 ? "3-node triangles (Gmsh type 2)"
+                  : "4-node tetrahedra (Gmsh type 4)";
+}
+
+// ---------------------------------------------------------------------------------------
+// What is taken from Gmsh, before any checking.
+
+struct ElementBlock {
+  int type = 0;
+  std::vector<Tag> elementTags;
+  std::vector<Tag> nodeTags;  // numNodes(type) per element
+};
+
+struct BoundaryGroup {
+  int tag = 0;
+  std::string name;
+  std::vector<ElementBlock> blocks;
+};
+
+std::string boundaryName(const BoundaryGroup& group) {
+  return group.name.empty() ? "physical" + std::to_string(group.tag) : group.name;
+}
+
+struct RawMesh {
+  int dim = 0;  // 2 or 3; 0 if the file has no element of dimension 2 or 3
+  int highestDimensionFound = -1;
+  std::vector<Tag> nodeTags;
+  std::vector<double> nodeCoords;  // x, y, z per node
+  std::vector<ElementBlock> cellBlocks;
+  std::vector<BoundaryGroup> boundaryGroups;
+};
+
+// ---------------------------------------------------------------------------------------
+// Gmsh session.
+
+std::mutex& gmshMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+
+// Gmsh 4.8 has no gmsh::isInitialized(). Its getters are silent no-ops when the API was
+// never initialised, and throw when it was initialised and finalised since: either way the
+// value stays untouched.
+bool gmshIsInitialized() {
+  double terminal = -1;
+  try {
+    gmsh::option::getNumber("General.Terminal", terminal);
+  } catch (...) {
+    return false;
+  }
+  return terminal != -1;
+}
+
+// Opens Gmsh for one read and puts everything back on destruction, even on error: either
+// initialises and finalises Gmsh, or (when the caller already runs a Gmsh session) reads
+// into a temporary model and restores the caller's current model and terminal option.
+class GmshSession {
+ public:
+  GmshSession() : owner_(!gmshIsInitialized()) {
+    if (owner_) gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+  }
+  GmshSession(const GmshSession&) = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+  ~GmshSession() {
+    try {
+      if (owner_) {
+        gmsh::finalize();
+        return;
+      }
+      if (addedModel_) {
+        gmsh::model::setCurrent(kModelName);
+        gmsh::model::remove();
+      }
+      if (savedModel_) gmsh::model::setCurrent(callerModel_);
+      if (savedTerminal_) gmsh::option::setNumber("General.Terminal", callerTerminal_);
+    } catch (...) {
+      // Nothing sensible to do about a failing clean-up; never throw from a destructor.
+    }
+  }
+
+  void load(const std::string& path) {
+    if (!owner_) {
+      gmsh::option::getNumber("General.Terminal", callerTerminal_);
+      savedTerminal_ = true;
+    }
+    gmsh::option::setNumber("General.Terminal", 0);
+    if (owner_) {
+      gmsh::open(path);
+      return;
+    }
+    gmsh::model::getCurrent(callerModel_);
+    savedModel_ = true;
+    gmsh::model::add(kModelName);
+    addedModel_ = true;
+    gmsh::merge(path);
+  }
+
+ private:
+  static constexpr const char* kModelName = "signorini-readGmshMesh";
+  bool owner_;
+  bool savedTerminal_ = false;
+  double callerTerminal_ = 0;
+  bool savedModel_ = false;
+  std::string callerModel_;
+  bool addedModel_ = false;
+};
+
+// ---------------------------------------------------------------------------------------
+// Extraction through the Gmsh API (current model).
+
+void appendElements(int dim, int entity, std::vector<ElementBlock>& blocks) {
+  std::vector<int> types;
+  std::vector<std::vector<Tag>> elementTags, nodeTags;
+  gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, entity);
+  for (std::size_t i = 0; i < types.size(); ++i) {
+    if (elementTags[i].empty()) continue;
+    blocks.push_back({types[i], std::move(elementTags[i]), std::move(nodeTags[i])});
+  }
+}
+
+// Elements of dimension dim in the physical groups of that dimension, or all of them if
+// there are no such groups.
+std::vector<ElementBlock> domainElements(int dim) {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, dim);
+  std::vector<ElementBlock> blocks;
+  if (groups.empty()) {
+    appendElements(dim, -1, blocks);
+    return blocks;
+  }
+  std::set<int> entities;  // an entity may be in several groups: take it once
+  for (const auto& group : groups) {
+    std::vector<int> tags;
+    gmsh::model::getEntitiesForPhysicalGroup(dim, group.second, tags);
+    entities.insert(tags.begin(), tags.end());
+  }
+  for (int entity : entities) appendElements(dim, entity, blocks);
+  return blocks;
+}
+
+RawMesh extractMesh() {
+  RawMesh raw;
+  for (int d = 3; d >= 0 && raw.highestDimensionFound < 0; --d) {
+    std::vector<int> types;
+    gmsh::model::mesh::getElementTypes(types, d, -1);
+    if (!types.empty()) raw.highestDimensionFound = d;
+  }
+  if (raw.highestDimensionFound < 2) return raw;
+  raw.dim = raw.highestDimensionFound;
+
+  std::vector<double> parametricCoords;
+  gmsh::model::mesh::getNodes(raw.nodeTags, raw.nodeCoords, parametricCoords, -1, -1,
+                              /*includeBoundary=*/false, /*returnParametricCoord=*/false);
+  raw.cellBlocks = domainElements(raw.dim);
+
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, raw.dim - 1);
+  for (const auto& group : groups) {
+    BoundaryGroup boundary;
+    boundary.tag = group.second;
+    gmsh::model::getPhysicalName(raw.dim - 1, group.second, boundary.name);
+    std::vector<int> entities;
+    gmsh::model::getEntitiesForPhysicalGroup(raw.dim - 1, group.second, entities);
+    std::sort(entities.begin(), entities.end());
+    entities.erase(std::unique(entities.begin(), entities.end()), entities.end());
+    for (int entity : entities) appendElements(raw.dim - 1, entity, boundary.blocks);
+    raw.boundaryGroups.push_back(std::move(boundary));
+  }
+  return raw;
+}
+
+std::string typeName(int type) {
+  std::string name;
+  int dim = 0, order = 0, numNodes = 0, numPrimaryNodes = 0;
+  std::vector<double> localCoords;
+  gmsh::model::mesh::getElementProperties(type, name, dim, order, numNodes, localCoords,
+                                          numPrimaryNodes);
+  return "\"" + name + "\" (Gmsh type " + std::to_string(type) + ")";
+}
+
+// Rejects element types other than the linear simplex of dimension d, which the elements
+// of `where` must be as `role` ("cells" or "boundary facets"). Needs Gmsh open (type names).
+void checkTypes(const std::vector<ElementBlock>& blocks, int d, const std::string& where,
+                const std::string& role, const std::string& prefix) {
+  for (const ElementBlock& block : blocks)
+    if (block.type != simplexType(d))
+      throw InputError(prefix + where + " has " + std::to_string(block.elementTags.size()) +
+                       " elements of type " + typeName(block.type) + ", but its " + role +
+                       " must be " + simplexDescription(d) +
+                       ": Signorini reads only linear simplex meshes, " + simplexDescription(2) +
+                       " in 2D or " + simplexDescription(3) + " in 3D");
+}
+
+// ---------------------------------------------------------------------------------------
+// Building the SimplexMesh from the raw data (no Gmsh involved).
+
+// Elements of the blocks in increasing element tag, (tag, first node tag), each element and
+// each set of nodes once: of elements with the same nodes, the one with the smallest tag.
+// Such duplicates are how MSH 2 files store an element in several physical groups (one copy
+// per group, under different tags); Gmsh reads all copies into the one entity, which is then
+// in all the groups.
+std::vector<std::pair<Tag, const Tag*>> uniqueElements(const std::vector<ElementBlock>& blocks,
+                                                       int nodesPerElement) {
+  using Key = std::array<Tag, 4>;  // sorted node tags, padded with 0 (never a node tag)
+  std::vector<std::pair<Key, std::pair<Tag, const Tag*>>> keyed;
+  for (const ElementBlock& block : blocks)
+    for (std::size_t e = 0; e < block.elementTags.size(); ++e) {
+      const Tag* nodes = block.nodeTags.data() + e * nodesPerElement;
+      Key key{0, 0, 0, 0};
+      for (int i = 0; i < nodesPerElement; ++i) {  // insertion sort of at most 4 tags
+        int j = i;
+        for (; j > 0 && key[j - 1] > nodes[i]; --j) key[j] = key[j - 1];
+        key[j] = nodes[i];
+      }
+      keyed.push_back({key, {block.elementTags[e], nodes}});
+    }
+  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first : a.second.first < b.second.first;
+  });
+  std::vector<std::pair<Tag, const Tag*>> elements;
+  for (std::size_t i = 0; i < keyed.size(); ++i)
+    if (i == 0 || keyed[i].first != keyed[i - 1].first) elements.push_back(keyed[i].second);
+  std::sort(elements.begin(), elements.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  return elements;
+}
+
+using Face = std::array<long long, 3>;  // sorted vertex ids, unused entries -1
+
+Face sortedFace(const long long* ids, int n) {
+  Face face{-1, -1, -1};
+  for (int i = 0; i < n; ++i) face[i] = ids[i];
+  // n <= 3: a sorting network (std::sort here draws a false -Warray-bounds from GCC 12)
+  if (face[0] > face[1]) std::swap(face[0], face[1]);
+  if (n == 3) {
+    if (face[1] > face[2]) std::swap(face[1], face[2]);
+    if (face[0] > face[1]) std::swap(face[0], face[1]);
+  }
+  return face;
+}
+
+// Signed measure times dim! of the simplex with the given vertex coordinates.
+double signedDeterminant(int dim, const double* x) {
+  if (dim == 2) return (x[2] - x[0]) * (x[5] - x[1]) - (x[4] - x[0]) * (x[3] - x[1]);
+  double a[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) a[r][c] = x[3 * (r + 1) + c] - x[c];
+  return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+         a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+         a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+}
+
+double longestEdge(int dim, const double* x) {
+  double longest = 0;
+  for (int i = 0; i <= dim; ++i)
+    for (int j = i + 1; j <= dim; ++j) {
+      double squared = 0;
+      for (int c = 0; c < dim; ++c)
+        squared += (x[dim * i + c] - x[dim * j + c]) * (x[dim * i + c] - x[dim * j + c]);
+      longest = std::max(longest, std::sqrt(squared));
+    }
+  return longest;
+}
+
+SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
+  const int dim = raw.dim;
+  const int nodesPerCell = dim + 1;
+  SimplexMesh mesh;
+  mesh.dim = dim;
+
+  // Cells, each once, by element tag.
+  const auto cellElements = uniqueElements(raw.cellBlocks, nodesPerCell);
+  if (cellElements.empty())
+    throw InputError(prefix + "its physical groups of dimension " + std::to_string(dim) +
+                     " hold no elements, so the mesh has no cells");
+
+  // Vertices: the nodes of the cells, in increasing node tag.
+  std::vector<Tag> used;
+  used.reserve(cellElements.size() * nodesPerCell);
+  for (const auto& element : cellElements)
+    used.insert(used.end(), element.second, element.second + nodesPerCell);
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  auto vertexId = [&used](Tag node) -> long long {
+    const auto it = std::lower_bound(used.begin(), used.end(), node);
+    return it != used.end() && *it == node ? static_cast<long long>(it - used.begin()) : -1;
+  };
+
+  std::vector<std::size_t> byTag(raw.nodeTags.size());
+  std::iota(byTag.begin(), byTag.end(), std::size_t{0});
+  std::sort(byTag.begin(), byTag.end(),
+            [&raw](std::size_t a, std::size_t b) { return raw.nodeTags[a] < raw.nodeTags[b]; });
+  mesh.vertices.resize(dim * used.size());
+  std::vector<double> z(used.size(), 0.0);
+  {
+    std::size_t k = 0;  // walk both sorted sequences
+    for (std::size_t v = 0; v < used.size(); ++v) {
+      while (k < byTag.size() && raw.nodeTags[byTag[k]] < used[v]) ++k;
+      if (k == byTag.size() || raw.nodeTags[byTag[k]] != used[v])
+        throw InputError(prefix + "a cell uses node " + std::to_string(used[v]) +
+                         ", which the file does not define");
+      const double* x = raw.nodeCoords.data() + 3 * byTag[k];
+      for (int c = 0; c < dim; ++c) mesh.vertices[dim * v + c] = x[c];
+      z[v] = x[2];
+    }
+  }
+  if (dim == 2) {
+    double extent = 0;
+    for (int c = 0; c < 2; ++c) {
+      double lo = mesh.vertices[c], hi = mesh.vertices[c];
+      for (std::size_t v = 0; v < used.size(); ++v) {
+        lo = std::min(lo, mesh.vertices[2 * v + c]);
+        hi = std::max(hi, mesh.vertices[2 * v + c]);
+      }
+      extent = std::max(extent, hi - lo);
+    }
+    for (std::size_t v = 0; v < used.size(); ++v)
+      if (std::abs(z[v]) > 1e-12 * extent)
+        throw InputError(prefix + "it is a 2D mesh (triangles) but node " +
+                         std::to_string(used[v]) + " has z = " + std::to_string(z[v]) +
+                         "; a 2D mesh must lie in the plane z = 0");
+  }
+
+  // Cells, positively oriented.
+  mesh.cells.resize(nodesPerCell * cellElements.size());
+  std::vector<double> x(dim * nodesPerCell);
+  for (std::size_t c = 0; c < cellElements.size(); ++c) {
+    long long* cell = mesh.cells.data() + nodesPerCell * c;
+    for (int i = 0; i < nodesPerCell; ++i) cell[i] = vertexId(cellElements[c].second[i]);
+    for (int i = 0; i < nodesPerCell; ++i)
+      for (int j = 0; j < dim; ++j) x[dim * i + j] = mesh.vertices[dim * cell[i] + j];
+    const double det = signedDeterminant(dim, x.data());
+    if (!(std::abs(det) > 1e-12 * std::pow(longestEdge(dim, x.data()), dim)))
+      throw InputError(prefix + "element " + std::to_string(cellElements[c].first) +
+                       " is degenerate (zero " + (dim == 2 ? "area" : "volume") + ")");
+    if (det < 0) std::swap(cell[1], cell[2]);
+  }
+
+  // Faces of the cells, to check the boundary facets against.
+  std::vector<Face> faces;
+  faces.reserve(nodesPerCell * cellElements.size());
+  for (std::size_t c = 0; c < cellElements.size(); ++c) {
+    const long long* cell = mesh.cells.data() + nodesPerCell * c;
+    for (int omit = 0; omit < nodesPerCell; ++omit) {
+      long long ids[3];
+      for (int i = 0, k = 0; i < nodesPerCell; ++i)
+        if (i != omit) ids[k++] = cell[i];
+      faces.push_back(sortedFace(ids, dim));
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+
+  // Boundary facets, group by group.
+  for (const BoundaryGroup& group : raw.boundaryGroups) {
+    const std::string name = boundaryName(group);
+    if (!mesh.boundaryTags.emplace(name, group.tag).second)
+      throw InputError(prefix + "two physical groups of dimension " + std::to_string(dim - 1) +
+                       " (tags " + std::to_string(mesh.boundaryTags.at(name)) + " and " +
+                       std::to_string(group.tag) + ") have the same name \"" + name + "\"");
+    for (const auto& element : uniqueElements(group.blocks, dim)) {
+      long long ids[3];
+      for (int i = 0; i < dim; ++i) ids[i] = vertexId(element.second[i]);
+      const Face face = sortedFace(ids, dim);
+      if (std::find(ids, ids + dim, -1) != ids + dim ||
+          !std::binary_search(faces.begin(), faces.end(), face))
+        throw InputError(prefix + "boundary element " + std::to_string(element.first) +
+                         " of the group \"" + name + "\" is not a " + (dim == 2 ? "edge" : "face") +
+                         " of any cell of the mesh");
+      mesh.facets.insert(mesh.facets.end(), ids, ids + dim);
+      mesh.facetTags.push_back(group.tag);
+    }
+  }
+  return mesh;
+}
+
+}  // namespace
+
+SimplexMesh readGmshMesh(const std::string& path) {
+  const std::string prefix = "Gmsh mesh file '" + path + "': ";
+  {
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error) || !std::ifstream(path))
+      throw InputError(prefix + "cannot open it (missing, not a regular file or unreadable)");
+  }
+
+  RawMesh raw;
+  {
+    std::lock_guard<std::mutex> lock(gmshMutex());
+    try {
+      GmshSession session;
+      session.load(path);
+      raw = extractMesh();
+      if (raw.dim == 0)
+        throw InputError(prefix + "it holds no " + simplexDescription(2) + " nor " +
+                         simplexDescription(3) +
+                         (raw.highestDimensionFound < 0
+                              ? std::string(" (no elements at all: is it a mesh file?)")
+                              : " (its highest-dimensional elements are of dimension " +
+                                    std::to_string(raw.highestDimensionFound) + ")"));
+      checkTypes(raw.cellBlocks, raw.dim, "the " + std::to_string(raw.dim) + "D domain", "cells",
+                 prefix);
+      for (const BoundaryGroup& group : raw.boundaryGroups)
+        checkTypes(group.blocks, raw.dim - 1, "the boundary group \"" + boundaryName(group) + "\"",
+                   "boundary facets", prefix);
+    } catch (const Error&) {
+      throw;
+    } catch (const std::bad_alloc&) {
+      throw;
+    } catch (const std::string& message) {  // what Gmsh 4.8 throws
+      throw InputError(prefix + "Gmsh cannot read it: " + message);
+    } catch (const std::exception& e) {
+      throw InputError(prefix + "Gmsh cannot read it: " + e.what());
+    } catch (...) {
+      throw InputError(prefix + "Gmsh cannot read it");
+    }
+  }
+  return buildMesh(raw, prefix);
+}
+
+}  // namespace signorini

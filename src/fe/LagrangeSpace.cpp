@@ -1,0 +1,190 @@
+#include "signorini/LagrangeSpace.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <string>
+#include <utility>
+
+#include "signorini/Error.hpp"
+
+namespace signorini {
+namespace {
+
+// Up to three sorted entries, padded with -1. With degree <= 3 a node's lattice point has
+// at most three nonzero a_i, and a facet at most three vertices.
+using Key = std::array<long long, 3>;
+
+// Open-addressing hash map Key -> long long with linear probing: millions of nodes need a
+// flat table, not a node-based map.
+class KeyTable {
+ public:
+  explicit KeyTable(std::size_t expectedSize) {
+    std::size_t capacity = 16;
+    while (capacity < 2 * expectedSize) capacity *= 2;
+    rehash(capacity);
+  }
+
+  // The value stored for key; stores `value` first if the key is new.
+  long long findOrInsert(const Key& key, long long value) {
+    std::size_t slot = hash(key) & mask_;
+    while (keys_[slot][0] != -1) {
+      if (keys_[slot] == key) return values_[slot];
+      slot = (slot + 1) & mask_;
+    }
+    keys_[slot] = key;
+    values_[slot] = value;
+    if (2 * ++size_ > keys_.size()) rehash(2 * keys_.size());
+    return value;
+  }
+
+  // The value stored for key, -1 if absent.
+  long long find(const Key& key) const {
+    for (std::size_t slot = hash(key) & mask_; keys_[slot][0] != -1; slot = (slot + 1) & mask_)
+      if (keys_[slot] == key) return values_[slot];
+    return -1;
+  }
+
+ private:
+  static std::size_t hash(const Key& key) {
+    std::uint64_t h = 0;
+    for (long long entry : key) {  // splitmix64 finaliser over each entry
+      h ^= static_cast<std::uint64_t>(entry) + 0x9e3779b97f4a7c15ULL;
+      h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+      h ^= h >> 31;
+    }
+    return static_cast<std::size_t>(h);
+  }
+
+  void rehash(std::size_t capacity) {
+    std::vector<Key> oldKeys(capacity, Key{-1, -1, -1});
+    std::vector<long long> oldValues(capacity);
+    oldKeys.swap(keys_);
+    oldValues.swap(values_);
+    mask_ = capacity - 1;
+    for (std::size_t i = 0; i < oldKeys.size(); ++i) {
+      if (oldKeys[i][0] == -1) continue;
+      std::size_t slot = hash(oldKeys[i]) & mask_;
+      while (keys_[slot][0] != -1) slot = (slot + 1) & mask_;
+      keys_[slot] = oldKeys[i];
+      values_[slot] = oldValues[i];
+    }
+  }
+
+  std::vector<Key> keys_;
+  std::vector<long long> values_;
+  std::size_t size_ = 0;
+  std::size_t mask_ = 0;
+};
+
+// Sorts the first `size` entries (insertion sort: at most three of them).
+Key sortedKey(Key key, int size) {
+  for (int i = 1; i < size; ++i)
+    for (int j = i; j > 0 && key[j - 1] > key[j]; --j) std::swap(key[j - 1], key[j]);
+  return key;
+}
+
+}  // namespace
+
+LagrangeSpace::LagrangeSpace(const SimplexMesh& mesh, int degree) : mesh_(&mesh), basis_(mesh.dim, degree) {
+  const int d = mesh.dim;
+  const long long numVertices = mesh.numVertices();
+  const long long numCells = mesh.numCells();
+  const long long numFacets = mesh.numFacets();
+  if (mesh.vertices.size() % d != 0 || mesh.cells.size() % (d + 1) != 0 || mesh.facets.size() % d != 0 ||
+      mesh.facetTags.size() != static_cast<std::size_t>(numFacets))
+    throw InputError("mesh: array sizes do not fit dimension " + std::to_string(d));
+
+  // Boundary facets are found as cell faces whose vertices all lie on boundary facets.
+  std::vector<char> onBoundary(numVertices, 0);
+  KeyTable facetIndex(numFacets);
+  for (long long facet = 0; facet < numFacets; ++facet) {
+    Key key = {-1, -1, -1};
+    for (int v = 0; v < d; ++v) {
+      key[v] = mesh.facets[d * facet + v];
+      if (key[v] < 0 || key[v] >= numVertices)
+        throw InputError("mesh: facet " + std::to_string(facet) + " references a missing vertex");
+      onBoundary[key[v]] = 1;
+    }
+    if (facetIndex.findOrInsert(sortedKey(key, d), facet) != facet)
+      throw InputError("mesh: boundary facet " + std::to_string(facet) + " is listed twice");
+  }
+  facetCells_.assign(numFacets, {-1, -1});
+
+  const int nodesPerCell = basis_.size();
+  const auto& lattice = basis_.latticeIndices();
+  nodeCoordinates_ = mesh.vertices;
+  numNodes_ = numVertices;
+  KeyTable nodeIndex(degree > 1 ? numCells : 0);
+  if (degree > 1) cellNodes_.resize(static_cast<std::size_t>(nodesPerCell) * numCells);
+
+  for (long long cell = 0; cell < numCells; ++cell) {
+    const long long* vertex = mesh.cells.data() + (d + 1) * cell;
+    int boundaryVertices = 0;
+    for (int v = 0; v <= d; ++v) {
+      if (vertex[v] < 0 || vertex[v] >= numVertices)
+        throw InputError("mesh: cell " + std::to_string(cell) + " references a missing vertex");
+      boundaryVertices += onBoundary[vertex[v]];
+    }
+    for (int f = 0; boundaryVertices >= d && f <= d; ++f) {
+      if (boundaryVertices - onBoundary[vertex[f]] < d) continue;  // facet f has an interior vertex
+      Key key = {-1, -1, -1};
+      for (int v = 0, n = 0; v <= d; ++v)
+        if (v != f) key[n++] = vertex[v];
+      const long long facet = facetIndex.find(sortedKey(key, d));
+      if (facet < 0) continue;
+      if (facetCells_[facet].first != -1)
+        throw InputError("mesh: boundary facet " + std::to_string(facet) + " is shared by two cells");
+      facetCells_[facet] = {cell, f};
+    }
+
+    if (degree == 1) continue;
+    long long* nodes = cellNodes_.data() + static_cast<std::size_t>(nodesPerCell) * cell;
+    for (int local = 0; local < nodesPerCell; ++local) {
+      const auto& a = lattice[local];
+      if (local <= d) {  // the vertices, first in the local order
+        nodes[local] = vertex[local];
+        continue;
+      }
+      Key key = {-1, -1, -1};
+      int size = 0;
+      for (int i = 0; i <= d; ++i)
+        if (a[i] > 0) key[size++] = vertex[i] << 2 | a[i];  // a_i <= 3 fits two bits
+      nodes[local] = nodeIndex.findOrInsert(sortedKey(key, size), numNodes_);
+      if (nodes[local] != numNodes_) continue;
+      ++numNodes_;
+      for (int j = 0; j < d; ++j) {
+        double x = 0.0;
+        for (int i = 0; i <= d; ++i) x += a[i] * mesh.vertices[d * vertex[i] + j];
+        nodeCoordinates_.push_back(x / degree);
+      }
+    }
+  }
+
+  for (long long facet = 0; facet < numFacets; ++facet)
+    if (facetCells_[facet].first == -1)
+      throw InputError("mesh: boundary facet " + std::to_string(facet) + " is not a face of any cell");
+}
+
+std::vector<long long> LagrangeSpace::boundaryNodes(int tag) const {
+  const auto& lattice = basis_.latticeIndices();
+  std::vector<long long> nodes;
+  for (const auto& [cell, f] : boundaryFacets(tag)) {
+    const long long* cellNode = cellNodes(cell);
+    for (int local = 0; local < nodesPerCell(); ++local)
+      if (lattice[local][f] == 0) nodes.push_back(cellNode[local]);  // on the facet opposite vertex f
+  }
+  std::sort(nodes.begin(), nodes.end());
+  nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
+  return nodes;
+}
+
+std::vector<std::pair<long long, int>> LagrangeSpace::boundaryFacets(int tag) const {
+  std::vector<std::pair<long long, int>> result;
+  for (std::size_t facet = 0; facet < facetCells_.size(); ++facet)
+    if (mesh_->facetTags[facet] == tag) result.push_back(facetCells_[facet]);
+  return result;
+}
+
+}  // namespace signorini

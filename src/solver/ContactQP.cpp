@@ -1,0 +1,9 @@
+#include "signorini/ContactQP.hpp"
+
+#include <Tpetra_CrsMatrix.hpp>
+
+namespace signorini {
+
+RCP<const CrsMatrix> ContactQP::Qmatrix() const { return Teuchos::rcp_dynamic_cast<const CrsMatrix>(Q); }
+
+}  // namespace signorini

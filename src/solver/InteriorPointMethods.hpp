@@ -1,0 +1,51 @@
+#pragma once
+// Private to src/solver: the two interior point methods and what they share.
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_Time.hpp>
+
+#include "signorini/ContactQP.hpp"
+#include "signorini/IterationObserver.hpp"
+#include "signorini/NewtonSystemSolver.hpp"
+#include "signorini/SolveResult.hpp"
+
+namespace signorini::detail {
+
+SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
+                            IterationObserver& observer);
+SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
+                               IterationObserver& observer);
+
+// Largest alpha in (0, inf] with x + alpha dx >= 0, over all ranks (inf if dx >= 0).
+double maxStepToBoundary(const Vector& x, const Vector& dx);
+
+// Objective J(v) = 1/2 v^T Q v - b^T v, given Qv.
+double objective(const ContactQP& qp, const Vector& v, const Vector& Qv);
+
+// Scales of the problem from one rough unconstrained solve Q v_hat = b, used to build
+// starting points: a displacement scale and an energy scale, both positive.
+struct ProblemScales {
+  double displacement = 1.0;
+  double energy = 1.0;
+  int krylovIterations = 0;
+};
+// `newton` must have its weights set to zero (H = Q).
+ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0);
+
+// Adds the end-of-solve data (objective, multipliers, KKT measures, active set) to `result`.
+void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, const Vector& slack,
+                  SolveResult& result);
+
+// Fills v with the initial guess or zero.
+RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
+
+// Absolute Krylov tolerance of a truncated Newton step with right-hand side norm rhsNorm.
+struct ForcingRule {
+  std::string type;     // "adaptive" or "constant"
+  double eta = 0.1;     // constant forcing, or the largest adaptive one
+  double safety = 0.1;  // adaptive: fraction of the current residual scale
+  double floor = 0.0;   // never ask for less than this (absolute)
+  double tolerance(double rhsNorm, double residualScale) const;
+};
+ForcingRule forcingRule(const Teuchos::ParameterList& params, double floor);
+
+}  // namespace signorini::detail

@@ -1,0 +1,179 @@
+#include "signorini/InteriorPointSolver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "InteriorPointMethods.hpp"
+#include "signorini/Error.hpp"
+#include "signorini/NewtonSystemSolver.hpp"
+#include "signorini/ParameterValidation.hpp"
+
+namespace signorini {
+namespace {
+
+template <class T>
+Teuchos::RCP<Teuchos::EnhancedNumberValidator<T>> range(T lo, T hi) {
+  return rcp(new Teuchos::EnhancedNumberValidator<T>(lo, hi));
+}
+
+Teuchos::RCP<Teuchos::StringValidator> choices(std::initializer_list<std::string> names) {
+  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
+}
+
+}  // namespace
+
+Teuchos::ParameterList InteriorPointSolver::validParameters() {
+  Teuchos::ParameterList p("Solver");
+  p.set("method", "primal-dual", "\"primal-dual\" (Algorithm 3.2 with slack variables) or \"primal\" (Algorithm 3.1)",
+        choices({"primal-dual", "primal"}));
+  p.set("kkt: tolerance", 1e-8, "Stop when every relative KKT measure is at most this", range(1e-16, 1.0));
+  p.set("maximum iterations", 200, "Main iterations allowed", range(1, 100000));
+  p.set("forcing: type", "adaptive",
+        "Truncated Newton forcing: \"constant\" (||H dv + g|| <= eta ||g||) or \"adaptive\" (the "
+        "residual allowed follows the barrier parameter, never above eta ||g||)",
+        choices({"adaptive", "constant"}));
+  p.set("forcing: eta", 0.1, "Constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
+  p.set("forcing: safety", 0.1, "Adaptive forcing: fraction of the current residual scale", range(1e-6, 1.0));
+  p.set("starting point: complementarity", 1.0,
+        "Initial s^T y as a multiple of the energy scale |b^T v_hat| of the unconstrained solution "
+        "(primal-dual)", range(1e-12, 1e12));
+
+  p.set("primal-dual: centering", "mehrotra",
+        "\"mehrotra\": predictor-corrector; \"fixed\": mu_{k+1} = (primal-dual: mu factor) mu_k with "
+        "backtracking on 1/2 ||F||^2 (the paper's Algorithm 3.2)",
+        choices({"mehrotra", "fixed"}));
+  p.set("primal-dual: mu factor", 0.2, "Fixed centering: factor of mu per iteration", range(1e-6, 0.999));
+  p.set("primal-dual: fraction to boundary", 0.995, "Step kept this fraction inside s > 0, y > 0", range(0.5, 0.99999));
+  p.set("primal-dual: armijo", 0.01, "Fixed centering: Armijo constant of the merit backtracking", range(1e-8, 0.5));
+
+  p.set("primal: mu0", -1.0,
+        "Initial barrier parameter mu_0; -1: from the problem's scale, (starting point: "
+        "complementarity) |b^T v_hat| / m (the paper: 1)");
+  p.set("primal: zeta0", -1.0,
+        "Initial inner tolerance zeta_0 on ||grad psi||; -1: ||b|| (the paper: 1500)");
+  p.set("primal: delta", 0.2, "zeta_{k+1} = delta zeta_k (the paper: 0.5)", range(1e-6, 0.999999));
+  p.set("primal: gamma", 0.2, "mu_{k+1} = gamma mu_k; the initial gamma when adaptive (the paper: 0.5)", range(1e-6, 0.999999));
+  p.set("primal: tau", 0.01, "Armijo constant tau of the backtracking line search", range(1e-8, 0.5));
+  p.set("primal: fraction to boundary", 0.99, "sigma in (28): first trial step min(1, sigma alpha_bar)",
+        range(0.5, 0.999999));
+  p.set("primal: maximum inner iterations", 50, "Newton steps allowed per main iteration", range(1, 10000));
+  p.set("primal: starting margin", 0.1,
+        "The initial guess is shifted so that every slack d - A v is at least this times the "
+        "displacement scale of the unconstrained solution",
+        range(1e-12, 1e6));
+  p.set("gamma: adaptive", false,
+        "Adapt gamma as in the paper's section 4 (the paper: true; measured on problem M it drives "
+        "gamma to its maximum and stalls, see xml/ipm-primal.xml)");
+  p.set("gamma: few inner iterations", 3, "Fewer inner iterations than this count as few", range(1, 1000));
+  p.set("gamma: successive main iterations", 3, "Few inner iterations this many times in a row lower gamma",
+        range(1, 1000));
+  p.set("gamma: decrease factor", 0.99, "gamma <- max(gamma: min, factor * gamma)", range(1e-6, 1.0));
+  p.set("gamma: min", 0.54, "Lower bound in the decrease rule", range(1e-6, 0.999999));
+  p.set("gamma: increase factor", 1.05, "gamma <- min(gamma: max, factor * gamma) after more inner iterations",
+        range(1.0, 100.0));
+  p.set("gamma: max", 0.99, "Upper bound in the increase rule", range(1e-6, 0.999999));
+
+  p.setParameters(NewtonSystemSolver::validParameters());
+  return p;
+}
+
+InteriorPointSolver::InteriorPointSolver(const Teuchos::ParameterList& params)
+    : params_(validatedParameters(params, validParameters(), "Solver")) {}
+
+SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initialGuess,
+                                       IterationObserver* observer) const {
+  IterationObserver silent;
+  IterationObserver& obs = observer ? *observer : silent;
+  if (params_.get<std::string>("method") == "primal")
+    return detail::solvePrimalBarrier(qp, params_, initialGuess, obs);
+  return detail::solvePrimalDual(qp, params_, initialGuess, obs);
+}
+
+namespace detail {
+
+double maxStepToBoundary(const Vector& x, const Vector& dx) {
+  double local = std::numeric_limits<double>::infinity();
+  auto xd = x.getData();
+  auto dd = dx.getData();
+  for (std::size_t i = 0; i < x.getLocalLength(); ++i)
+    if (dd[i] < 0) local = std::min(local, -xd[i] / dd[i]);
+  double global = local;
+  Teuchos::reduceAll(*x.getMap()->getComm(), Teuchos::REDUCE_MIN, 1, &local, &global);
+  return global;
+}
+
+double objective(const ContactQP& qp, const Vector& v, const Vector& Qv) {
+  return 0.5 * Qv.dot(v) - qp.b->dot(v);
+}
+
+RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0) {
+  auto v = rcp(new Vector(qp.Q->getDomainMap()));
+  if (v0) {
+    if (!v0->getMap()->isSameAs(*v->getMap())) throw InputError("initial guess: not on Q's domain map");
+    v->assign(*v0);
+  }
+  return v;
+}
+
+ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0) {
+  // r = b - Q v0; Q w = r roughly; v_hat = v0 + w.
+  Vector r(*qp.b, Teuchos::Copy), w(qp.Q->getDomainMap());
+  qp.Q->apply(v0, r, Teuchos::NO_TRANS, -1.0, 1.0);
+  ProblemScales scales;
+  scales.krylovIterations = newton.solve(r, w, 1e-2 * r.norm2()).iterations;
+  w.update(1.0, v0, 1.0);
+  Vector c(qp.A->getRangeMap());
+  qp.A->apply(w, c);
+  c.update(-1.0, *qp.d, 1.0);
+  const double candidates[] = {qp.d->getGlobalLength() ? c.normInf() : 0.0, w.normInf(), 1.0};
+  for (double value : candidates)
+    if (value > 0) {
+      scales.displacement = value;
+      break;
+    }
+  const double energy = std::abs(qp.b->dot(w));
+  scales.energy = energy > 0 ? energy : 1.0;
+  return scales;
+}
+
+void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, const Vector& slack,
+                  SolveResult& result) {
+  Vector Qv(qp.Q->getRangeMap());
+  qp.Q->apply(v, Qv);
+  result.objective = objective(qp, v, Qv);
+  result.v = rcp(new Vector(v, Teuchos::Copy));
+  result.lambda = rcp(new Vector(lambda, Teuchos::Copy));
+  result.kkt = kktMeasures(qp, v, lambda);
+  // Active: the multiplier is large relative to the slack, both measured on their own scale.
+  const double lambdaScale = lambda.getGlobalLength() ? lambda.normInf() : 0.0;
+  const double slackScale = slack.getGlobalLength() ? slack.normInf() : 0.0;
+  long long local = 0;
+  auto l = lambda.getData();
+  auto s = slack.getData();
+  for (std::size_t i = 0; i < lambda.getLocalLength(); ++i)
+    if (std::abs(l[i]) * slackScale > std::abs(s[i]) * lambdaScale && lambdaScale > 0) ++local;
+  Teuchos::reduceAll(*v.getMap()->getComm(), Teuchos::REDUCE_SUM, 1, &local, &result.activeConstraints);
+}
+
+double ForcingRule::tolerance(double rhsNorm, double residualScale) const {
+  if (type == "constant") return eta * rhsNorm;
+  return std::min(eta * rhsNorm, std::max(floor, safety * residualScale));
+}
+
+ForcingRule forcingRule(const Teuchos::ParameterList& params, double floor) {
+  ForcingRule rule;
+  rule.type = params.get<std::string>("forcing: type");
+  rule.eta = params.get<double>("forcing: eta");
+  rule.safety = params.get<double>("forcing: safety");
+  rule.floor = floor;
+  return rule;
+}
+
+}  // namespace detail
+}  // namespace signorini

@@ -1,0 +1,245 @@
+// Algorithm 3.1 of the paper: the primal log-barrier method
+//   psi(v, mu) = J(v) - mu sum log(d - A v)_i,  grad psi = Q v - b + A^T (mu / s),
+//   H = Q + A^T diag(mu / s^2) A,  s = d - A v > 0,
+// with inner truncated Newton loops to ||grad psi|| < zeta_k, Armijo backtracking from the
+// fraction-to-boundary step (28), zeta_{k+1} = delta zeta_k, mu_{k+1} = gamma_{k+1} mu_k and
+// the adaptive gamma of section 4.
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "InteriorPointMethods.hpp"
+#include "signorini/Error.hpp"
+#include "signorini/NewtonSystemSolver.hpp"
+
+namespace signorini::detail {
+namespace {
+
+// sum_i log(1 + alpha ds_i / s_i): the change of sum log s along a step, computed without
+// the cancellation that would make tiny decreases of psi invisible near the solution.
+double logChange(const Vector& s, double alpha, const Vector& ds) {
+  double local = 0;
+  auto sd = s.getData();
+  auto dd = ds.getData();
+  for (std::size_t i = 0; i < s.getLocalLength(); ++i) local += std::log1p(alpha * dd[i] / sd[i]);
+  double global = local;
+  Teuchos::reduceAll(*s.getMap()->getComm(), Teuchos::REDUCE_SUM, 1, &local, &global);
+  return global;
+}
+
+// Moves v along A^T so that every slack d - A v is at least `margin`. Exact when the rows of
+// A touch disjoint unknowns (one row per contact node), which makes A A^T diagonal.
+void shiftIntoInterior(const ContactQP& qp, Vector& v, double margin) {
+  const auto cmap = qp.A->getRangeMap();
+  CrsMatrix pattern(*qp.A, Teuchos::Copy);
+  pattern.resumeFill();
+  pattern.setAllToScalar(1.0);
+  pattern.fillComplete(qp.A->getDomainMap(), cmap);
+  Vector ones(cmap), rowsPerUnknown(v.getMap());
+  ones.putScalar(1.0);
+  pattern.apply(ones, rowsPerUnknown, Teuchos::TRANS);
+  if (rowsPerUnknown.normInf() > 1.0)
+    throw InputError("Solver/method \"primal\": the rows of A share unknowns, so no strictly feasible point "
+                     "can be built from the initial guess; use method \"primal-dual\"");
+
+  Vector rowNorm2(cmap), s(cmap), w(cmap);
+  {
+    auto rn = rowNorm2.getDataNonConst();
+    for (std::size_t i = 0; i < cmap->getNodeNumElements(); ++i) {
+      CrsMatrix::nonconst_local_inds_host_view_type cols("cols", qp.A->getNumEntriesInLocalRow(i));
+      CrsMatrix::nonconst_values_host_view_type vals("vals", cols.extent(0));
+      size_t count = 0;
+      qp.A->getLocalRowCopy(i, cols, vals, count);
+      for (size_t j = 0; j < count; ++j) rn[i] += vals(j) * vals(j);
+    }
+  }
+  qp.A->apply(v, s);
+  s.update(1.0, *qp.d, -1.0);
+  {
+    auto sd = s.getData();
+    auto rn = rowNorm2.getData();
+    auto wd = w.getDataNonConst();
+    for (std::size_t i = 0; i < s.getLocalLength(); ++i) {
+      if (rn[i] == 0.0) {
+        if (sd[i] <= 0) throw InputError("constraint with an empty row of A and d <= 0 is infeasible");
+        continue;
+      }
+      wd[i] = std::min(0.0, sd[i] - margin) / rn[i];
+    }
+  }
+  qp.A->apply(w, v, Teuchos::TRANS, 1.0, 1.0);
+}
+
+}  // namespace
+
+SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+                               IterationObserver& observer) {
+  Teuchos::Time timer("primal");
+  timer.start(true);
+  const auto vmap = qp.Q->getDomainMap();
+  const auto cmap = qp.A->getRangeMap();
+  const long long m = cmap->getGlobalNumElements();
+  observer.onStart("primal (Algorithm 3.1)", vmap->getGlobalNumElements(), m);
+
+  SolveResult result;
+  NewtonSystemSolver newton(qp, p);
+  RCP<Vector> v = initialDisplacement(qp, v0);
+  Vector D(cmap);
+  newton.setWeights(D);
+  const ProblemScales scales = problemScales(qp, newton, *v);
+  result.krylovIterations += scales.krylovIterations;
+  shiftIntoInterior(qp, *v, p.get<double>("primal: starting margin") * scales.displacement);
+
+  const double tol = p.get<double>("kkt: tolerance");
+  const int maxIterations = p.get<int>("maximum iterations");
+  const int maxInner = p.get<int>("primal: maximum inner iterations");
+  const double delta = p.get<double>("primal: delta"), tau = p.get<double>("primal: tau");
+  const double ftb = p.get<double>("primal: fraction to boundary");
+  const bool adaptiveGamma = p.get<bool>("gamma: adaptive");
+  const int few = p.get<int>("gamma: few inner iterations");
+  const int successive = p.get<int>("gamma: successive main iterations");
+  const double gammaDecrease = p.get<double>("gamma: decrease factor"), gammaMin = p.get<double>("gamma: min");
+  const double gammaIncrease = p.get<double>("gamma: increase factor"), gammaMax = p.get<double>("gamma: max");
+  const double bnorm = qp.b->norm2();
+  double mu = p.get<double>("primal: mu0"), zeta = p.get<double>("primal: zeta0"), gamma = p.get<double>("primal: gamma");
+  if (mu <= 0) mu = p.get<double>("starting point: complementarity") * scales.energy / std::max(m, 1LL);
+  if (zeta <= 0) zeta = bnorm > 0 ? bnorm : 1.0;
+  const ForcingRule forcing = forcingRule(p, 0.1 * tol * bnorm);
+
+  Vector s(cmap), y(cmap), lambda(cmap), Adv(cmap), minusAdv(cmap), Qv(vmap), g(vmap), dv(vmap), Qdv(vmap), rhs(vmap);
+  // s = d - A v, y = mu / s, g = Q v - b + A^T y
+  auto evaluate = [&]() {
+    qp.A->apply(*v, s);
+    s.update(1.0, *qp.d, -1.0);
+    y.reciprocal(s);
+    y.scale(mu);
+    qp.Q->apply(*v, Qv);
+    g.update(1.0, Qv, -1.0, *qp.b, 0.0);
+    qp.A->apply(y, g, Teuchos::TRANS, 1.0, 1.0);
+    ++result.gradientEvaluations;
+    return g.norm2();
+  };
+
+  int fewInARow = 0;
+  bool failed = false;
+  for (int k = 0;; ++k) {
+    int inner = 0;
+    for (;;) {
+      const double gnorm = evaluate();
+      if (!std::isfinite(gnorm)) {
+        result.status = SolveStatus::NumericalBreakdown;
+        result.message = "non-finite gradient; check the problem data (Q must be positive definite)";
+        failed = true;
+        break;
+      }
+      if ((inner > 0 && gnorm < zeta) || inner == maxInner) break;
+
+      {
+        auto sd = s.getData();
+        auto dd = D.getDataNonConst();
+        for (std::size_t i = 0; i < s.getLocalLength(); ++i) dd[i] = mu / (sd[i] * sd[i]);
+      }
+      newton.setWeights(D);
+      rhs.update(-1.0, g, 0.0);
+      const double residualScale = gnorm * std::min(1.0, std::sqrt(gnorm / (bnorm > 0 ? bnorm : 1.0)));
+      double tolAbs = std::min(0.5 * gnorm, forcing.tolerance(gnorm, residualScale));
+      KrylovResult kr = newton.solve(rhs, dv, tolAbs);
+      ++result.newtonSteps;
+      int krylov = kr.iterations;
+      double slope = g.dot(dv);
+      if (!(slope < 0)) {  // not a descent direction: solve once more, much tighter
+        kr = newton.solve(rhs, dv, 1e-3 * tolAbs);
+        krylov += kr.iterations;
+        slope = g.dot(dv);
+      }
+      result.krylovIterations += krylov;
+      result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, krylov);
+      if (!(slope < 0)) {
+        result.status = SolveStatus::KrylovFailure;
+        result.message = "the Krylov solver returned no descent direction; raise Solver/Krylov/maximum "
+                         "iterations or choose a stronger Solver/Preconditioner";
+        failed = true;
+        break;
+      }
+
+      // Fraction to the boundary (28), then Armijo backtracking on psi, evaluated without
+      // further operator applications: psi is quadratic plus a sum of logs along the line.
+      qp.A->apply(dv, Adv);
+      minusAdv.update(-1.0, Adv, 0.0);
+      double alpha = std::min(1.0, ftb * maxStepToBoundary(s, minusAdv));
+      qp.Q->apply(dv, Qdv);
+      const double linear = Qv.dot(dv) - qp.b->dot(dv), quadratic = 0.5 * Qdv.dot(dv);
+      auto psiChange = [&](double a) {  // psi(v + a dv) - psi(v)
+        ++result.functionEvaluations;
+        return a * linear + a * a * quadratic - mu * logChange(s, a, minusAdv);
+      };
+      int halvings = 0;
+      while (!(psiChange(alpha) <= tau * alpha * slope) && halvings < 60) {
+        alpha *= 0.5;
+        ++halvings;
+      }
+      if (halvings == 60) {
+        result.status = SolveStatus::LineSearchFailure;
+        result.message = "no Armijo decrease along the Newton direction; tighten Solver/forcing: eta";
+        failed = true;
+        break;
+      }
+      v->update(alpha, dv, 1.0);
+      ++inner;
+
+      NewtonStepRecord record;
+      record.outer = k + 1;
+      record.inner = inner;
+      record.mu = mu;
+      record.step = alpha;
+      record.krylovIterations = krylov;
+      s.update(-alpha, Adv, 1.0);  // slack at the new point, for the multipliers
+      lambda.reciprocal(s);
+      lambda.scale(-mu);
+      record.kkt = kktMeasures(qp, *v, lambda);
+      Vector Qvn(vmap);
+      qp.Q->apply(*v, Qvn);
+      record.objective = objective(qp, *v, Qvn);
+      record.seconds = timer.totalElapsedTime(true);
+      result.history.push_back(record);
+      observer.onNewtonStep(record);
+    }
+    if (failed) break;
+    result.innerIterations.push_back(inner);
+    result.outerIterations = k + 1;
+
+    lambda.update(-1.0, y, 0.0);
+    if (kktMeasures(qp, *v, lambda).worst() <= tol) {
+      result.status = SolveStatus::Converged;
+      result.message = "every relative KKT measure is below " + std::to_string(tol);
+      break;
+    }
+    if (k + 1 == maxIterations) {
+      result.status = SolveStatus::IterationLimit;
+      result.message = "maximum iterations (" + std::to_string(maxIterations) +
+                       ") reached; raise Solver/maximum iterations or loosen Solver/kkt: tolerance";
+      break;
+    }
+    if (adaptiveGamma) {
+      fewInARow = inner < few ? fewInARow + 1 : 0;
+      if (fewInARow >= successive) {
+        gamma = std::max(gammaMin, gammaDecrease * gamma);
+        fewInARow = 0;
+      } else if (inner > few) {
+        gamma = std::min(gammaMax, gammaIncrease * gamma);
+      }
+    }
+    mu *= gamma;
+    // Below the stationarity the KKT target asks for, a tighter inner loop buys nothing.
+    zeta = std::max(delta * zeta, 0.1 * tol * bnorm);
+  }
+
+  finishResult(qp, *v, lambda, s, result);
+  result.seconds = timer.totalElapsedTime(true);
+  observer.onFinish(result);
+  return result;
+}
+
+}  // namespace signorini::detail

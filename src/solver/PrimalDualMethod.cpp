@@ -1,0 +1,268 @@
+// Algorithm 3.2 of the paper on the slack formulation (9): variables v, s = d - A v > 0
+// (kept as an independent variable, so any initial guess is accepted) and y = -lambda > 0.
+// Residuals r_d = Q v - b + A^T y, r_p = A v + s - d, r_c = s.y - mu_target; the Newton
+// system condenses to H dv = -r_d - A^T ((-r_c + y.r_p)/s), H = Q + A^T (Y S^-1) A, with
+// ds = -r_p - A dv and dy = (-r_c - y.ds)/s computed exactly, so the truncation error of the
+// Krylov solve only enters the dual residual, and the forcing rule controls it.
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "InteriorPointMethods.hpp"
+#include "signorini/NewtonSystemSolver.hpp"
+
+namespace signorini::detail {
+namespace {
+
+// out_i = f(i) over the local entries of vectors on the same map.
+template <class F>
+void forEach(Vector& out, F f) {
+  auto o = out.getDataNonConst();
+  for (std::size_t i = 0; i < out.getLocalLength(); ++i) o[i] = f(i);
+}
+
+}  // namespace
+
+SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+                            IterationObserver& observer) {
+  Teuchos::Time timer("primal-dual");
+  timer.start(true);
+  const std::string centering = p.get<std::string>("primal-dual: centering");
+  const auto vmap = qp.Q->getDomainMap();
+  const auto cmap = qp.A->getRangeMap();
+  const long long m = cmap->getGlobalNumElements();
+  observer.onStart("primal-dual (" + centering + " centering)", vmap->getGlobalNumElements(), m);
+
+  SolveResult result;
+  NewtonSystemSolver newton(qp, p);
+  RCP<Vector> v = initialDisplacement(qp, v0);
+  Vector s(cmap), y(cmap), D(cmap);
+  newton.setWeights(D);
+  const ProblemScales scales = problemScales(qp, newton, *v);
+  result.krylovIterations += scales.krylovIterations;
+
+  // Start: s = max(d - A v, displacement scale), s^T y = theta * energy scale, y = mu0 / s.
+  Vector Av(cmap);
+  qp.A->apply(*v, Av);
+  {
+    auto dd = qp.d->getData();
+    auto ad = Av.getData();
+    forEach(s, [&](std::size_t i) { return std::max(dd[i] - ad[i], scales.displacement); });
+  }
+  const double mu0 = m > 0 ? p.get<double>("starting point: complementarity") * scales.energy / m : 0.0;
+  {
+    auto sd = s.getData();
+    forEach(y, [&](std::size_t i) { return mu0 / sd[i]; });
+  }
+
+  const double tol = p.get<double>("kkt: tolerance");
+  const int maxIterations = p.get<int>("maximum iterations");
+  const double bnorm = qp.b->norm2();
+  const ForcingRule forcing = forcingRule(p, 0.1 * tol * bnorm);
+  const double ftb = p.get<double>("primal-dual: fraction to boundary");
+  const double muFactor = p.get<double>("primal-dual: mu factor");
+  const double armijo = p.get<double>("primal-dual: armijo");
+
+  Vector Qv(vmap), rd(vmap), rhs(vmap), dv(vmap), t(vmap), lambda(cmap), rp(cmap), rc(cmap), u(cmap), Adv(cmap),
+      ds(cmap), dy(cmap);
+  NewtonStepRecord pending;
+  bool havePending = false;
+  double mu = 0;
+
+  // Direction for a complementarity residual rc; returns the Krylov result.
+  auto direction = [&](const Vector& rcv) {
+    {
+      auto rcd = rcv.getData();
+      auto yd = y.getData();
+      auto rpd = rp.getData();
+      auto sd = s.getData();
+      forEach(u, [&](std::size_t i) { return (-rcd[i] + yd[i] * rpd[i]) / sd[i]; });
+    }
+    rhs.assign(rd);
+    qp.A->apply(u, rhs, Teuchos::TRANS, -1.0, -1.0);
+    const double residualScale = std::max(rd.norm2(), mu0 > 0 ? bnorm * mu / mu0 : 0.0);
+    KrylovResult kr = newton.solve(rhs, dv, forcing.tolerance(rhs.norm2(), residualScale));
+    qp.A->apply(dv, Adv);
+    ds.update(-1.0, rp, -1.0, Adv, 0.0);
+    {
+      auto rcd = rcv.getData();
+      auto yd = y.getData();
+      auto dsd = ds.getData();
+      auto sd = s.getData();
+      forEach(dy, [&](std::size_t i) { return (-rcd[i] - yd[i] * dsd[i]) / sd[i]; });
+    }
+    ++result.newtonSteps;
+    result.krylovIterations += kr.iterations;
+    result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, kr.iterations);
+    return kr;
+  };
+
+  for (int k = 0;; ++k) {
+    qp.Q->apply(*v, Qv);
+    rd.assign(Qv);
+    rd.update(-1.0, *qp.b, 1.0);
+    qp.A->apply(y, rd, Teuchos::TRANS, 1.0, 1.0);
+    qp.A->apply(*v, Av);
+    rp.update(1.0, Av, 1.0, s, 0.0);
+    rp.update(-1.0, *qp.d, 1.0);
+    mu = m > 0 ? s.dot(y) / m : 0.0;
+    ++result.gradientEvaluations;
+    lambda.update(-1.0, y, 0.0);
+    const KKTMeasures kkt = kktMeasures(qp, *v, lambda);
+
+    if (havePending) {
+      pending.objective = objective(qp, *v, Qv);
+      pending.kkt = kkt;
+      pending.seconds = timer.totalElapsedTime(true);
+      result.history.push_back(pending);
+      observer.onNewtonStep(pending);
+    }
+    result.outerIterations = k;
+    if (!std::isfinite(mu) || !std::isfinite(kkt.stationarityAbs)) {
+      result.status = SolveStatus::NumericalBreakdown;
+      result.message = "non-finite iterate; check the problem data (Q must be positive definite)";
+      break;
+    }
+    if (kkt.worst() <= tol) {
+      result.status = SolveStatus::Converged;
+      result.message = "every relative KKT measure is below " + std::to_string(tol);
+      break;
+    }
+    if (k == maxIterations) {
+      result.status = SolveStatus::IterationLimit;
+      result.message = "maximum iterations (" + std::to_string(maxIterations) +
+                       ") reached; raise Solver/maximum iterations or loosen Solver/kkt: tolerance";
+      break;
+    }
+
+    {
+      auto yd = y.getData();
+      auto sd = s.getData();
+      forEach(D, [&](std::size_t i) { return yd[i] / sd[i]; });
+    }
+    newton.setWeights(D);
+
+    int krylovThisStep = 0;
+    double muTarget = 0;
+    bool krylovFailed = false;
+    auto takeDirection = [&](const Vector& rcv) {
+      KrylovResult kr = direction(rcv);
+      krylovThisStep += kr.iterations;
+      if (!kr.converged && !(kr.relativeResidual < 1.0)) krylovFailed = true;
+    };
+    if (centering == "mehrotra") {
+      rc.elementWiseMultiply(1.0, s, y, 0.0);
+      takeDirection(rc);
+      const double ap = std::min(1.0, maxStepToBoundary(s, ds)), ad = std::min(1.0, maxStepToBoundary(y, dy));
+      double muAffine = 0;
+      if (m > 0) {
+        Vector sa(s, Teuchos::Copy), ya(y, Teuchos::Copy);
+        sa.update(ap, ds, 1.0);
+        ya.update(ad, dy, 1.0);
+        muAffine = sa.dot(ya) / m;
+      }
+      const double sigma = mu > 0 ? std::pow(muAffine / mu, 3) : 0.0;
+      muTarget = sigma * mu;
+      {
+        // rc = s.y + ds_aff.dy_aff - sigma mu, from the affine direction still in ds, dy
+        auto sd = s.getData();
+        auto yd = y.getData();
+        auto dsd = ds.getData();
+        auto dyd = dy.getData();
+        forEach(rc, [&](std::size_t i) { return sd[i] * yd[i] + dsd[i] * dyd[i] - muTarget; });
+      }
+      takeDirection(rc);
+    } else {
+      muTarget = muFactor * mu;
+      {
+        auto sd = s.getData();
+        auto yd = y.getData();
+        forEach(rc, [&](std::size_t i) { return sd[i] * yd[i] - muTarget; });
+      }
+      takeDirection(rc);
+    }
+    if (krylovFailed) {
+      result.status = SolveStatus::KrylovFailure;
+      result.message = "the Krylov solver made no progress on a Newton system; raise Solver/Krylov/maximum "
+                       "iterations or choose a stronger Solver/Preconditioner";
+      break;
+    }
+
+    const double alphaMax = std::min(maxStepToBoundary(s, ds), maxStepToBoundary(y, dy));
+    double alpha = std::min(1.0, ftb * alphaMax);
+
+    if (centering == "fixed") {
+      // Backtracking on phi = 1/2 ||F||^2 along the direction; F is linear in alpha but for
+      // the complementarity block, so phi(alpha) needs no operator application.
+      qp.Q->apply(dv, t);
+      qp.A->apply(dy, t, Teuchos::TRANS, 1.0, 1.0);
+      auto phi = [&](double a) {
+        Vector r1(rd, Teuchos::Copy);
+        r1.update(a, t, 1.0);
+        double value = r1.dot(r1) + (1 - a) * (1 - a) * rp.dot(rp);
+        double local = 0;
+        auto sd = s.getData();
+        auto yd = y.getData();
+        auto dsd = ds.getData();
+        auto dyd = dy.getData();
+        for (std::size_t i = 0; i < s.getLocalLength(); ++i) {
+          double c = (sd[i] + a * dsd[i]) * (yd[i] + a * dyd[i]) - muTarget;
+          local += c * c;
+        }
+        double global = local;
+        Teuchos::reduceAll(*cmap->getComm(), Teuchos::REDUCE_SUM, 1, &local, &global);
+        ++result.functionEvaluations;
+        return 0.5 * (value + global);
+      };
+      const double phi0 = phi(0.0);
+      double slope = rd.dot(t) - rp.dot(rp);
+      {
+        double local = 0;
+        auto sd = s.getData();
+        auto yd = y.getData();
+        auto dsd = ds.getData();
+        auto dyd = dy.getData();
+        for (std::size_t i = 0; i < s.getLocalLength(); ++i)
+          local += (sd[i] * yd[i] - muTarget) * (dsd[i] * yd[i] + sd[i] * dyd[i]);
+        double global = local;
+        Teuchos::reduceAll(*cmap->getComm(), Teuchos::REDUCE_SUM, 1, &local, &global);
+        slope += global;
+      }
+      int halvings = 0;
+      while (phi(alpha) > phi0 + armijo * alpha * slope && halvings < 40) {
+        alpha *= 0.5;
+        ++halvings;
+      }
+      if (halvings == 40 || slope >= 0) {
+        result.status = SolveStatus::LineSearchFailure;
+        result.message = "no decrease of the merit function along the Newton direction; tighten "
+                         "Solver/forcing: eta or use Solver/primal-dual: centering = mehrotra";
+        break;
+      }
+    }
+
+    v->update(alpha, dv, 1.0);
+    s.update(alpha, ds, 1.0);
+    y.update(alpha, dy, 1.0);
+
+    pending = NewtonStepRecord();
+    pending.outer = k + 1;
+    pending.mu = muTarget;
+    pending.step = alpha;
+    pending.krylovIterations = krylovThisStep;
+    havePending = true;
+    result.innerIterations.push_back(1);
+  }
+
+  Vector slack(cmap);
+  qp.A->apply(*v, slack);
+  slack.update(1.0, *qp.d, -1.0);
+  finishResult(qp, *v, lambda, slack, result);
+  result.seconds = timer.totalElapsedTime(true);
+  observer.onFinish(result);
+  return result;
+}
+
+}  // namespace signorini::detail
