@@ -114,6 +114,17 @@ void eliminatePrescribed(const std::vector<char>& fixed, const std::vector<doubl
 
 }  // namespace
 
+// One constraint per contact node, numbered in the order of the renumbered nodes, so that
+// each rank owns a contiguous range of constraints.
+std::vector<long long> contactNodeOrder(const DistributedSpace& ds, const ProblemDefinition& problem) {
+  std::vector<long long> nodes;
+  if (problem.contactBoundary.empty()) return nodes;
+  nodes = ds.space().boundaryNodes(ds.mesh().tag(problem.contactBoundary));
+  std::sort(nodes.begin(), nodes.end(),
+            [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
+  return nodes;
+}
+
 RCP<MultiVector> rigidBodyModes(const DistributedSpace& ds) {
   const int dim = ds.dim();
   const int numModes = dim == 2 ? 3 : 6;
@@ -215,12 +226,7 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
         if (dirichlet.fixed[dim * overlap[i] + c]) data[dim * i + c] = dirichlet.value[dim * overlap[i] + c];
   }
 
-  // Contact: one constraint per contact node, numbered in the order of the renumbered nodes,
-  // so that each rank owns a contiguous range.
-  std::vector<long long> contactNodes;
-  if (!problem.contactBoundary.empty()) contactNodes = space.boundaryNodes(mesh.tag(problem.contactBoundary));
-  std::sort(contactNodes.begin(), contactNodes.end(),
-            [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
+  const std::vector<long long> contactNodes = contactNodeOrder(ds, problem);
   std::vector<GlobalOrdinal> ownedConstraints;
   for (std::size_t k = 0; k < contactNodes.size(); ++k)
     if (ds.ownsNode(contactNodes[k])) ownedConstraints.push_back(static_cast<GlobalOrdinal>(k));
@@ -234,11 +240,13 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
     std::vector<double> vals(dim);
     for (std::size_t i = 0; i < ownedConstraints.size(); ++i) {
       const long long node = contactNodes[ownedConstraints[i]];
-      for (int c = 0; c < dim; ++c) {
-        cols[c] = dim * ds.globalNode(node) + c;
-        vals[c] = -problem.obstacleDirection[c];
-      }
-      A->insertGlobalValues(ownedConstraints[i], dim, vals.data(), cols.data());
+      int count = 0;  // only the nonzero components of -n_o
+      for (int c = 0; c < dim; ++c)
+        if (problem.obstacleDirection[c] != 0.0) {
+          cols[count] = dim * ds.globalNode(node) + c;
+          vals[count++] = -problem.obstacleDirection[c];
+        }
+      A->insertGlobalValues(ownedConstraints[i], count, vals.data(), cols.data());
       dData[i] = (*problem.gap)(&space.nodeCoordinates()[dim * node], dim);
     }
   }

@@ -1,0 +1,320 @@
+#include "signorini/Application.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <MatrixMarket_Tpetra.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_Time.hpp>
+#include <Teuchos_TimeMonitor.hpp>
+#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/ElasticityAssembler.hpp"
+#include "signorini/Error.hpp"
+#include "signorini/InteriorPointSolver.hpp"
+#include "signorini/ParameterValidation.hpp"
+#include "signorini/ProblemBuilder.hpp"
+#include "signorini/RunSummary.hpp"
+#include "signorini/VtuWriter.hpp"
+
+namespace signorini {
+namespace {
+
+Teuchos::ParameterList outputParameters() {
+  Teuchos::ParameterList p("Output");
+  p.set("directory", "results", "Directory of solution.pvtu, summary.json and history.csv (--output overrides)");
+  p.set("write solution", true, "Write solution.pvtu with one .vtu per rank");
+  p.set("write history", true, "Write history.csv, one row per Newton step");
+  return p;
+}
+
+// Parses "text" as the type of `model`; throws InputError naming `where`.
+Teuchos::ParameterEntry parseLike(const Teuchos::ParameterEntry* model, const std::string& text,
+                                  const std::string& where) {
+  Teuchos::ParameterEntry entry;
+  std::istringstream in(text);
+  auto fail = [&](const std::string& type) {
+    return InputError("--set " + where + ": \"" + text + "\" is not a valid " + type);
+  };
+  if (model && model->isType<int>()) {
+    int v;
+    if (!(in >> v) || !in.eof()) throw fail("int");
+    entry.setValue(v);
+  } else if (model && model->isType<double>()) {
+    double v;
+    if (!(in >> v) || !in.eof()) throw fail("double");
+    entry.setValue(v);
+  } else if (model && model->isType<bool>()) {
+    if (text != "true" && text != "false") throw fail("bool (true or false)");
+    entry.setValue(text == "true");
+  } else if (model && model->isType<std::string>()) {
+    entry.setValue(text);
+  } else if (model && model->isArray()) {
+    // Arrays keep Teuchos' "{a, b}" syntax.
+    Teuchos::ParameterList tmp;
+    std::string xml = "<ParameterList><Parameter name=\"x\" type=\"" + model->getAny(false).typeName() +
+                      "\" value=\"" + text + "\"/></ParameterList>";
+    try {
+      tmp = *Teuchos::getParametersFromXmlString(xml);
+    } catch (const std::exception& e) {
+      throw fail(model->getAny(false).typeName());
+    }
+    entry = tmp.getEntry("x");
+  } else {
+    // Unknown to the valid lists (e.g. inside a MueLu or Belos sublist): infer the type.
+    int i;
+    double d;
+    std::istringstream asInt(text), asDouble(text);
+    if ((asInt >> i) && asInt.eof())
+      entry.setValue(i);
+    else if ((asDouble >> d) && asDouble.eof())
+      entry.setValue(d);
+    else if (text == "true" || text == "false")
+      entry.setValue(text == "true");
+    else
+      entry.setValue(text);
+  }
+  return entry;
+}
+
+double maxOverRanks(const Comm& comm, double value) {
+  double result = value;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &value, &result);
+  return result;
+}
+
+void exportQp(const AssembledProblem& p, const std::string& directory, const Comm& comm) {
+  using Writer = Tpetra::MatrixMarket::Writer<CrsMatrix>;
+  if (comm.getRank() == 0) std::filesystem::create_directories(directory);
+  comm.barrier();
+  auto Q = p.qp.Qmatrix();
+  if (Q.is_null()) throw InputError("--export-qp needs Q as an assembled matrix");
+  Writer::writeSparseFile(directory + "/Q.mtx", Q, "Q", "stiffness, Dirichlet DOFs eliminated symmetrically");
+  Writer::writeSparseFile(directory + "/A.mtx", p.qp.A, "A", "contact constraints A v <= d");
+  Writer::writeDenseFile(directory + "/b.mtx", p.qp.b, "b", "load vector");
+  Writer::writeDenseFile(directory + "/d.mtx", p.qp.d, "d", "contact gaps");
+  Writer::writeDenseFile(directory + "/coords.mtx", p.qp.coordinates, "coords",
+                         "node coordinates; DOF dim*node+c is component c of node node");
+}
+
+double vonMises(const double* s, int dim, const IsotropicMaterial& material) {
+  double sxx = s[0], syy, szz, sxy, syz = 0, szx = 0;
+  if (dim == 2) {
+    syy = s[3];
+    sxy = s[1];
+    szz = material.planeStrain ? material.poissonRatio * (sxx + syy) : 0.0;
+  } else {
+    syy = s[4];
+    szz = s[8];
+    sxy = s[1];
+    syz = s[5];
+    szx = s[2];
+  }
+  return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                   3.0 * (sxy * sxy + syz * syz + szx * szx));
+}
+
+void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::string& directory) {
+  const DistributedSpace& ds = *p.space;
+  const int dim = ds.dim();
+  const auto& overlap = ds.overlapSpaceNodes();
+  Vector u(ds.overlapDofMap());
+  u.doImport(*r.v, Import(ds.ownedDofMap(), ds.overlapDofMap()), Tpetra::INSERT);
+
+  // Constraint values at the overlap nodes: contact force (-lambda), gap (d - A v), active.
+  const auto contactNodes = contactNodeOrder(ds, p.definition);
+  std::vector<long long> constraintOf(ds.space().numNodes(), -1);
+  for (std::size_t k = 0; k < contactNodes.size(); ++k) constraintOf[contactNodes[k]] = k;
+  std::vector<GlobalOrdinal> wanted;
+  for (long long node : overlap)
+    if (constraintOf[node] >= 0) wanted.push_back(constraintOf[node]);
+  const auto cmap = p.qp.A->getRangeMap();
+  auto wantedMap = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                               Teuchos::ArrayView<const GlobalOrdinal>(wanted), 0, cmap->getComm()));
+  Vector gap(cmap);
+  p.qp.A->apply(*r.v, gap);
+  gap.update(1.0, *p.qp.d, -1.0);
+  const double lambdaScale = r.lambda->getGlobalLength() ? r.lambda->normInf() : 0.0;
+  const double gapScale = gap.getGlobalLength() ? gap.normInf() : 0.0;
+  Import toWanted(cmap, wantedMap);
+  Vector lambdaHere(wantedMap), gapHere(wantedMap);
+  lambdaHere.doImport(*r.lambda, toWanted, Tpetra::INSERT);
+  gapHere.doImport(gap, toWanted, Tpetra::INSERT);
+
+  NodeField displacement{"displacement", dim, {}}, force{"contact force", 1, {}}, gapField{"gap", 1, {}},
+      active{"active", 1, {}};
+  auto ud = u.getData();
+  displacement.values.assign(ud.begin(), ud.end());
+  auto ld = lambdaHere.getData();
+  auto gd = gapHere.getData();
+  std::size_t next = 0;
+  for (long long node : overlap) {
+    if (constraintOf[node] < 0) {
+      force.values.push_back(0.0);
+      gapField.values.push_back(0.0);
+      active.values.push_back(0.0);
+      continue;
+    }
+    const double l = ld[next], g = gd[next];
+    ++next;
+    force.values.push_back(-l);
+    gapField.values.push_back(g);
+    active.values.push_back(lambdaScale > 0 && std::abs(l) * gapScale > std::abs(g) * lambdaScale ? 1.0 : 0.0);
+  }
+
+  CellField rank{"rank", 1, {}}, mises{"von Mises stress", 1, {}};
+  const LagrangeSpace& space = ds.space();
+  const int npc = space.nodesPerCell();
+  std::vector<int> localIndex(space.numNodes(), -1);
+  for (std::size_t i = 0; i < overlap.size(); ++i) localIndex[overlap[i]] = static_cast<int>(i);
+  std::vector<double> coords((dim + 1) * dim), local(dim * npc), sigma(dim * dim);
+  double centroid[3];
+  for (int i = 0; i < dim; ++i) centroid[i] = 1.0 / (dim + 1);
+  for (long long cell : ds.localCells()) {
+    ds.mesh().cellVertexCoordinates(cell, coords.data());
+    const long long* nodes = space.cellNodes(cell);
+    for (int i = 0; i < npc; ++i)
+      for (int c = 0; c < dim; ++c) local[dim * i + c] = ud[dim * localIndex[nodes[i]] + c];
+    cellStress(space.basis(), coords.data(), p.definition.material, local.data(), centroid, sigma.data());
+    mises.values.push_back(vonMises(sigma.data(), dim, p.definition.material));
+    rank.values.push_back(ds.comm()->getRank());
+  }
+  writeVtu(ds, {displacement, force, gapField, active}, {mises, rank}, directory, "solution");
+}
+
+}  // namespace
+
+Teuchos::ParameterList validTopLevelParameters() {
+  Teuchos::ParameterList p("Signorini");
+  p.set("Problem", ProblemDefinition::validParameters(), "The contact problem");
+  p.set("Solver", InteriorPointSolver::validParameters(), "The interior point solver");
+  p.set("Output", outputParameters(), "What the run writes");
+  return p;
+}
+
+Teuchos::ParameterList readParameterFile(const std::string& path, const Comm& comm) {
+  std::string text, error;
+  if (comm.getRank() == 0) {
+    std::ifstream in(path);
+    if (!in) {
+      error = "cannot open parameter file " + path;
+    } else {
+      std::ostringstream s;
+      s << in.rdbuf();
+      text = s.str();
+    }
+  }
+  // Broadcast the error (or the text) so every rank fails, or parses, alike.
+  int sizes[2] = {static_cast<int>(error.size()), static_cast<int>(text.size())};
+  Teuchos::broadcast(comm, 0, 2, sizes);
+  error.resize(sizes[0]);
+  text.resize(sizes[1]);
+  if (sizes[0]) Teuchos::broadcast(comm, 0, sizes[0], error.data());
+  if (!error.empty()) throw InputError(error);
+  if (sizes[1]) Teuchos::broadcast(comm, 0, sizes[1], text.data());
+  try {
+    return *Teuchos::getParametersFromXmlString(text);
+  } catch (const std::exception& e) {
+    throw InputError(path + ": not a valid Teuchos XML parameter list: " + e.what());
+  }
+}
+
+void applyOverride(Teuchos::ParameterList& list, const std::string& assignment,
+                   const Teuchos::ParameterList& valid) {
+  const auto eq = assignment.find('=');
+  if (eq == std::string::npos || eq == 0)
+    throw InputError("--set \"" + assignment + "\": expected \"Sublist/name=value\"");
+  const std::string path = assignment.substr(0, eq), text = assignment.substr(eq + 1);
+  Teuchos::ParameterList* target = &list;
+  const Teuchos::ParameterList* validTarget = &valid;
+  std::size_t start = 0;
+  for (std::size_t slash; (slash = path.find('/', start)) != std::string::npos; start = slash + 1) {
+    const std::string name = path.substr(start, slash - start);
+    target = &target->sublist(name);
+    if (validTarget && validTarget->isSublist(name))
+      validTarget = &validTarget->sublist(name);
+    else if (validTarget && validTarget->isSublist(kAnyNameSublist))
+      validTarget = &validTarget->sublist(kAnyNameSublist);
+    else
+      validTarget = nullptr;
+  }
+  const std::string name = path.substr(start);
+  const Teuchos::ParameterEntry* model = nullptr;
+  if (validTarget && validTarget->isParameter(name)) model = validTarget->getEntryPtr(name);
+  else if (target->isParameter(name)) model = target->getEntryPtr(name);
+  target->setEntry(name, parseLike(model, text, path));
+}
+
+SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, std::ostream& out) {
+  Teuchos::Time total("total");
+  total.start(true);
+  const bool root = comm->getRank() == 0;
+  const Teuchos::ParameterList valid = validTopLevelParameters();
+  Teuchos::ParameterList user = readParameterFile(cl.input, *comm);
+  for (const std::string& assignment : cl.overrides) applyOverride(user, assignment, valid);
+  const Teuchos::ParameterList params = validatedParameters(user, valid, "");
+
+  const std::string baseDirectory = std::filesystem::path(cl.input).parent_path().string();
+  AssembledProblem problem = buildProblem(user.sublist("Problem"), comm, baseDirectory.empty() ? "." : baseDirectory);
+  const ProblemDefinition& def = problem.definition;
+  const long long n = problem.qp.b->getGlobalLength(), m = problem.qp.d->getGlobalLength();
+  if (root)
+    out << "Signorini: problem \"" << def.name << "\": d = " << def.dim << ", P" << def.degree << ", "
+        << problem.mesh->numCells() << " cells, n = " << n << ", m = " << m << ", " << comm->getSize()
+        << " MPI rank(s); setup " << problem.setupSeconds << " s, assembly " << problem.assemblySeconds << " s\n";
+
+  if (!cl.exportQp.empty()) {
+    exportQp(problem, cl.exportQp, *comm);
+    if (root) out << "Exported Q, b, A, d, coords to " << cl.exportQp << "/\n";
+  }
+
+  InteriorPointSolver solver(params.sublist("Solver"));
+  IterationLog log(out, root);
+  Teuchos::Time solveTime("solve");
+  solveTime.start(true);
+  SolveResult result;
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3 solve"));
+    result = solver.solve(problem.qp, nullptr, &log);
+  }
+  solveTime.stop();
+
+  const Teuchos::ParameterList& output = params.sublist("Output");
+  const std::string directory = cl.output.empty() ? output.get<std::string>("directory") : cl.output;
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 4 output"));
+    if (output.get<bool>("write solution")) writeSolution(problem, result, directory);
+    total.stop();
+    RunSummary summary;
+    summary.problem = def.name;
+    summary.method = params.sublist("Solver").get<std::string>("method");
+    summary.dim = def.dim;
+    summary.degree = def.degree;
+    summary.ranks = comm->getSize();
+    summary.nx = def.meshType == "box" ? def.cells[0] : 0;
+    summary.n = n;
+    summary.m = m;
+    summary.result = &result;
+    summary.setupSeconds = problem.setupSeconds;
+    summary.assemblySeconds = problem.assemblySeconds;
+    summary.solveSeconds = maxOverRanks(*comm, solveTime.totalElapsedTime());
+    summary.totalSeconds = maxOverRanks(*comm, total.totalElapsedTime());
+    if (root) {
+      writeSummaryJson(summary, directory + "/summary.json");
+      if (!cl.summary.empty()) writeSummaryJson(summary, cl.summary);
+      if (output.get<bool>("write history")) writeHistoryCsv(result, directory + "/history.csv");
+      out << "Results in " << directory << "/ (summary.json"
+          << (output.get<bool>("write history") ? ", history.csv" : "")
+          << (output.get<bool>("write solution") ? ", solution.pvtu" : "") << ")\n";
+    }
+  }
+  Teuchos::TimeMonitor::summarize(comm.ptr(), out, false, true, false);
+  return result;
+}
+
+}  // namespace signorini

@@ -1,0 +1,50 @@
+#include "signorini/CommandLine.hpp"
+
+#include "signorini/Error.hpp"
+
+namespace signorini {
+
+std::string CommandLine::usage() {
+  return "usage: signorini FILE.xml [--output DIR] [--summary FILE.json] [--export-qp DIR]\n"
+         "                 [--set \"Sublist/name=value\" ...] [--help] [--version]\n"
+         "  FILE.xml      parameter list with the sublists Problem, Solver and Output\n"
+         "                (xml/defaults.xml documents every parameter)\n"
+         "  --output      directory for solution.pvtu, summary.json, history.csv\n"
+         "  --summary     also write the JSON summary to this file\n"
+         "  --export-qp   write Q, b, A, d and the node coordinates in Matrix Market format\n"
+         "  --set         override one parameter, e.g. --set \"Solver/method=primal\"\n";
+}
+
+CommandLine CommandLine::parse(int argc, const char* const* argv) {
+  CommandLine cl;
+  auto value = [&](int& i, const std::string& flag) -> std::string {
+    if (i + 1 >= argc) throw InputError(flag + " needs a value\n" + usage());
+    return argv[++i];
+  };
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--help" || arg == "-h") {
+      cl.help = true;
+    } else if (arg == "--version") {
+      cl.version = true;
+    } else if (arg == "--output") {
+      cl.output = value(i, arg);
+    } else if (arg == "--summary") {
+      cl.summary = value(i, arg);
+    } else if (arg == "--export-qp") {
+      cl.exportQp = value(i, arg);
+    } else if (arg == "--set") {
+      cl.overrides.push_back(value(i, arg));
+    } else if (!arg.empty() && arg[0] == '-') {
+      throw InputError("unknown option " + arg + "\n" + usage());
+    } else if (cl.input.empty()) {
+      cl.input = arg;
+    } else {
+      throw InputError("more than one input file (" + cl.input + ", " + arg + ")\n" + usage());
+    }
+  }
+  if (cl.input.empty() && !cl.help && !cl.version) throw InputError("no input file\n" + usage());
+  return cl;
+}
+
+}  // namespace signorini

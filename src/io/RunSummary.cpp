@@ -1,0 +1,103 @@
+#include "signorini/RunSummary.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "signorini/Error.hpp"
+
+namespace signorini {
+namespace {
+
+std::string number(double x) {
+  if (!std::isfinite(x)) return "null";
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (c == '\n') {
+      out += "\\n";
+      continue;
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+void writeFileAtomically(const std::string& path, const std::string& text) {
+  const std::filesystem::path target(path);
+  if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
+  const std::string temporary = path + ".tmp";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    out << text;
+    out.close();
+    if (!out) throw Error("cannot write " + temporary);
+  }
+  std::error_code ec;
+  std::filesystem::rename(temporary, target, ec);
+  if (ec) throw Error("cannot rename " + temporary + " to " + path + ": " + ec.message());
+}
+
+void writeSummaryJson(const RunSummary& s, const std::string& path) {
+  const SolveResult& r = *s.result;
+  std::ostringstream j;
+  j << "{\n"
+    << "  \"problem\": " << quoted(s.problem) << ",\n"
+    << "  \"d\": " << s.dim << ",\n"
+    << "  \"kappa\": " << s.degree << ",\n"
+    << "  \"nx\": " << s.nx << ",\n"
+    << "  \"n\": " << s.n << ",\n"
+    << "  \"m\": " << s.m << ",\n"
+    << "  \"method\": " << quoted(s.method) << ",\n"
+    << "  \"ranks\": " << s.ranks << ",\n"
+    << "  \"converged\": " << (r.converged() ? "true" : "false") << ",\n"
+    << "  \"status\": " << quoted(toString(r.status)) << ",\n"
+    << "  \"message\": " << quoted(r.message) << ",\n"
+    << "  \"outer_iterations\": " << r.outerIterations << ",\n"
+    << "  \"newton_steps\": " << r.newtonSteps << ",\n"
+    << "  \"gradient_evaluations\": " << r.gradientEvaluations << ",\n"
+    << "  \"function_evaluations\": " << r.functionEvaluations << ",\n"
+    << "  \"krylov_iterations\": " << r.krylovIterations << ",\n"
+    << "  \"max_krylov_per_newton\": " << r.maxKrylovPerNewton << ",\n"
+    << "  \"objective\": " << number(r.objective) << ",\n"
+    << "  \"active_constraints\": " << r.activeConstraints << ",\n"
+    << "  \"kkt\": {\"stationarity\": " << number(r.kkt.stationarity)
+    << ", \"complementarity\": " << number(r.kkt.complementarity)
+    << ", \"primal_feasibility\": " << number(r.kkt.primalFeasibility)
+    << ", \"dual_feasibility\": " << number(r.kkt.dualFeasibility) << "},\n"
+    << "  \"kkt_absolute\": {\"stationarity\": " << number(r.kkt.stationarityAbs)
+    << ", \"complementarity\": " << number(r.kkt.complementarityAbs)
+    << ", \"primal_feasibility\": " << number(r.kkt.primalFeasibilityAbs)
+    << ", \"dual_feasibility\": " << number(r.kkt.dualFeasibilityAbs) << "},\n"
+    << "  \"inner_iterations\": [";
+  for (std::size_t i = 0; i < r.innerIterations.size(); ++i) j << (i ? ", " : "") << r.innerIterations[i];
+  j << "],\n"
+    << "  \"time\": {\"setup\": " << number(s.setupSeconds) << ", \"assembly\": " << number(s.assemblySeconds)
+    << ", \"solve\": " << number(s.solveSeconds) << ", \"total\": " << number(s.totalSeconds) << "}\n"
+    << "}\n";
+  writeFileAtomically(path, j.str());
+}
+
+void writeHistoryCsv(const SolveResult& r, const std::string& path) {
+  std::ostringstream c;
+  c << "main_iteration,inner_iteration,mu,objective,stationarity,complementarity,primal_feasibility,"
+       "dual_feasibility,step,krylov_iterations,time\n";
+  for (const NewtonStepRecord& h : r.history)
+    c << h.outer << ',' << h.inner << ',' << number(h.mu) << ',' << number(h.objective) << ','
+      << number(h.kkt.stationarity) << ',' << number(h.kkt.complementarity) << ','
+      << number(h.kkt.primalFeasibility) << ',' << number(h.kkt.dualFeasibility) << ',' << number(h.step) << ','
+      << h.krylovIterations << ',' << number(h.seconds) << '\n';
+  writeFileAtomically(path, c.str());
+}
+
+}  // namespace signorini

@@ -1,0 +1,47 @@
+#include "support/TestProblems.hpp"
+
+#include <cstdlib>
+
+#include <Teuchos_DefaultSerialComm.hpp>
+#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/KrylovSolver.hpp"
+#include "signorini/MueLuPreconditioner.hpp"
+
+namespace signorini::testing {
+
+std::string sourceDir() {
+  const char* dir = std::getenv("SIGNORINI_SOURCE_DIR");
+  return dir ? dir : SIGNORINI_TEST_SOURCE_DIR;
+}
+
+Teuchos::ParameterList shippedProblem(const std::string& relativePath) {
+  auto list = Teuchos::getParametersFromXmlFile(sourceDir() + "/xml/" + relativePath + ".xml");
+  return list->sublist("Problem");
+}
+
+Teuchos::ParameterList boxProblem(int dim, int cells, int degree) {
+  Teuchos::ParameterList p("Problem");
+  p.set("mesh: dimension", dim);
+  p.set("mesh: cells", Teuchos::Array<int>(1, cells));
+  p.set("element: degree", degree);
+  return p;
+}
+
+int solveLinear(const ContactQP& qp, Vector& x, double tol) {
+  MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nullspace, qp.coordinates);
+  amg.compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
+  KrylovSolver cg;
+  x.putScalar(0.0);
+  KrylovResult r = cg.solve(qp.Q, amg.getOperator(), qp.b, Teuchos::rcpFromRef(x), tol, 2000);
+  return r.converged ? r.iterations : -1;
+}
+
+AssembledProblem buildSerial(const Teuchos::ParameterList& problem) {
+  RCP<const Comm> self = rcp(new Teuchos::SerialComm<int>());
+  return buildProblem(problem, self);
+}
+
+}  // namespace signorini::testing

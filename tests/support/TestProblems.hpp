@@ -1,0 +1,28 @@
+#pragma once
+// Helpers shared by the tests: the shipped XML problems, box problems built in code, and
+// linear solves for checks that need a discrete solution.
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "signorini/ContactQP.hpp"
+#include "signorini/ProblemBuilder.hpp"
+
+namespace signorini::testing {
+
+std::string sourceDir();
+
+// The "Problem" sublist of xml/<relativePath>.
+Teuchos::ParameterList shippedProblem(const std::string& relativePath);
+
+// A box problem: no load, no boundary condition, no contact; the caller adds what it needs.
+Teuchos::ParameterList boxProblem(int dim, int cells, int degree);
+
+// Solves Q x = b by CG + MueLu to a relative residual of tol; returns the iterations.
+int solveLinear(const ContactQP& qp, Vector& x, double tol);
+
+// Assembles on a one-rank communicator (every rank its own copy): the reference for
+// rank-count independence.
+AssembledProblem buildSerial(const Teuchos::ParameterList& problem);
+
+}  // namespace signorini::testing
