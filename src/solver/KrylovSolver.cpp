@@ -1,5 +1,7 @@
 #include "signorini/KrylovSolver.hpp"
 
+#include <limits>
+
 #include <BelosLinearProblem.hpp>
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
@@ -41,15 +43,25 @@ KrylovResult KrylovSolver::solve(const RCP<const Operator>& A, const RCP<const O
   if (!params->isParameter("Explicit Residual Scaling"))
     params->set("Explicit Residual Scaling", "Norm of RHS");
 
+  // CG's check p^T A p > 0 also fires on round-off once the residual is tiny; a truly
+  // indefinite system shows up as non-convergence instead.
+  if (!params->isParameter("Assert Positive Definiteness") && (solver_ == "CG" || solver_ == "PSEUDOBLOCK CG"))
+    params->set("Assert Positive Definiteness", false);
+
   Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
   auto solver = factory.create(solver_, params);
   solver->setProblem(problem);
-  Belos::ReturnType status = solver->solve();
-
   KrylovResult result;
+  try {
+    const Belos::ReturnType status = solver->solve();
+    result.converged = status == Belos::Converged;
+    result.relativeResidual = solver->achievedTol();
+  } catch (const std::exception&) {
+    // Breakdown: report no convergence; the caller decides what to do with x.
+    result.converged = false;
+    result.relativeResidual = std::numeric_limits<double>::infinity();
+  }
   result.iterations = solver->getNumIters();
-  result.converged = status == Belos::Converged;
-  result.relativeResidual = solver->achievedTol();
   return result;
 }
 

@@ -37,6 +37,12 @@ MueLuPreconditioner::MueLuPreconditioner(const Teuchos::ParameterList& params, i
     : params_(defaultParameters(blockSize)),
       nullspace_(std::move(nullspace)),
       coordinates_(std::move(coordinates)) {
+  // Our smoother parameters belong to our smoother choice: a user who picks another
+  // smoother (or coarse solver) gets that package's defaults for it, not ours.
+  for (const char* level : {"smoother", "coarse"}) {
+    const std::string type = std::string(level) + ": type", sub = std::string(level) + ": params";
+    if (params.isParameter(type) && !params.isSublist(sub)) params_.remove(sub);
+  }
   params_.setParameters(params);
 }
 

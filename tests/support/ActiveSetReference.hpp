@@ -1,0 +1,20 @@
+#pragma once
+// An independent solver of min 1/2 v^T Q v - b^T v s.t. A v <= d for the tests: the
+// primal-dual active set method (semismooth Newton) with a direct KLU2 solve of the KKT
+// system of each active set. It shares nothing with the interior point code but the QP.
+// The QP must live on a one-rank communicator (Amesos2 is wrong on more than one here).
+#include "signorini/ContactQP.hpp"
+
+namespace signorini::testing {
+
+struct ReferenceSolution {
+  RCP<Vector> v;
+  double objective = 0;
+  int iterations = 0;
+  long long active = 0;
+  bool converged = false;
+};
+
+ReferenceSolution activeSetSolve(const ContactQP& qp, int maxIterations = 100);
+
+}  // namespace signorini::testing
