@@ -16,6 +16,10 @@ namespace signorini {
 // The top level: sublists "Problem", "Solver" and "Output" with every default and doc.
 Teuchos::ParameterList validTopLevelParameters();
 
+// Every parameter with its default and documentation as an XML parameter list: the text
+// of xml/defaults.xml (signorini --defaults prints it).
+std::string defaultsXml();
+
 // Reads an XML parameter file on rank 0 and broadcasts it; throws InputError on every rank
 // if it cannot be read or parsed.
 Teuchos::ParameterList readParameterFile(const std::string& path, const Comm& comm);

@@ -1,7 +1,7 @@
 #pragma once
 // The command line of the signorini program:
 //   signorini FILE.xml [--output DIR] [--summary FILE.json] [--export-qp DIR]
-//             [--set "Sublist/name=value" ...] [--help] [--version]
+//             [--set "Sublist/name=value" ...] [--help] [--version] [--defaults]
 #include <string>
 #include <vector>
 
@@ -13,7 +13,7 @@ struct CommandLine {
   std::string summary;    // also write summary.json here
   std::string exportQp;   // Matrix Market export directory
   std::vector<std::string> overrides;  // "Path/To/name=value"
-  bool help = false, version = false;
+  bool help = false, version = false, defaults = false;
 
   // Throws InputError with the usage on a malformed command line.
   static CommandLine parse(int argc, const char* const* argv);

@@ -7,6 +7,8 @@
 //   primal feasibility max(0, max_i c_i)                  / max(||v||_inf, ||d||_inf)
 //   dual feasibility   max(0, max_i lambda_i)             / ||lambda||_inf
 // (a zero scale counts as 1).
+#include <cmath>
+
 #include "signorini/ContactQP.hpp"
 
 namespace signorini {
@@ -19,5 +21,19 @@ struct KKTMeasures {
 };
 
 KKTMeasures kktMeasures(const ContactQP& qp, const Vector& v, const Vector& lambda);
+
+// Which constraints are active: the multiplier is large against a force scale
+// (max(||b||_inf, ||lambda||_inf)) compared with the slack against a displacement scale
+// (max(||v||_inf, ||d||_inf)).
+class ActiveSetCriterion {
+ public:
+  ActiveSetCriterion(const ContactQP& qp, const Vector& v, const Vector& lambda);
+  bool isActive(double lambda, double slack) const {
+    return std::abs(lambda) * displacementScale_ > std::abs(slack) * forceScale_;
+  }
+
+ private:
+  double forceScale_ = 1, displacementScale_ = 1;
+};
 
 }  // namespace signorini

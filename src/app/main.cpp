@@ -47,10 +47,11 @@ int main(int argc, char** argv) {
   auto comm = Tpetra::getDefaultComm();
   try {
     const signorini::CommandLine cl = signorini::CommandLine::parse(argc, argv);
-    if (cl.help || cl.version) {
+    if (cl.help || cl.version || cl.defaults) {
       if (comm->getRank() == 0) {
         if (cl.version) std::cout << "signorini " << signorini::kVersion << "\n";
         if (cl.help) std::cout << signorini::CommandLine::usage();
+        if (cl.defaults) std::cout << signorini::defaultsXml();
       }
       return 0;
     }

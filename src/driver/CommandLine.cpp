@@ -6,13 +6,14 @@ namespace signorini {
 
 std::string CommandLine::usage() {
   return "usage: signorini FILE.xml [--output DIR] [--summary FILE.json] [--export-qp DIR]\n"
-         "                 [--set \"Sublist/name=value\" ...] [--help] [--version]\n"
+         "                 [--set \"Sublist/name=value\" ...] [--help] [--version] [--defaults]\n"
          "  FILE.xml      parameter list with the sublists Problem, Solver and Output\n"
          "                (xml/defaults.xml documents every parameter)\n"
          "  --output      directory for solution.pvtu, summary.json, history.csv\n"
          "  --summary     also write the JSON summary to this file\n"
          "  --export-qp   write Q, b, A, d and the node coordinates in Matrix Market format\n"
-         "  --set         override one parameter, e.g. --set \"Solver/method=primal\"\n";
+         "  --set         override one parameter, e.g. --set \"Solver/method=primal\"\n"
+         "  --defaults    print every parameter with its default and documentation (XML)\n";
 }
 
 CommandLine CommandLine::parse(int argc, const char* const* argv) {
@@ -25,6 +26,8 @@ CommandLine CommandLine::parse(int argc, const char* const* argv) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
       cl.help = true;
+    } else if (arg == "--defaults") {
+      cl.defaults = true;
     } else if (arg == "--version") {
       cl.version = true;
     } else if (arg == "--output") {
@@ -43,7 +46,7 @@ CommandLine CommandLine::parse(int argc, const char* const* argv) {
       throw InputError("more than one input file (" + cl.input + ", " + arg + ")\n" + usage());
     }
   }
-  if (cl.input.empty() && !cl.help && !cl.version) throw InputError("no input file\n" + usage());
+  if (cl.input.empty() && !cl.help && !cl.version && !cl.defaults) throw InputError("no input file\n" + usage());
   return cl;
 }
 

@@ -150,14 +150,11 @@ void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, co
   result.v = rcp(new Vector(v, Teuchos::Copy));
   result.lambda = rcp(new Vector(lambda, Teuchos::Copy));
   result.kkt = kktMeasures(qp, v, lambda);
-  // Active: the multiplier is large relative to the slack, both measured on their own scale.
-  const double lambdaScale = lambda.getGlobalLength() ? lambda.normInf() : 0.0;
-  const double slackScale = slack.getGlobalLength() ? slack.normInf() : 0.0;
+  const ActiveSetCriterion criterion(qp, v, lambda);
   long long local = 0;
   auto l = lambda.getData();
   auto s = slack.getData();
-  for (std::size_t i = 0; i < lambda.getLocalLength(); ++i)
-    if (std::abs(l[i]) * slackScale > std::abs(s[i]) * lambdaScale && lambdaScale > 0) ++local;
+  for (std::size_t i = 0; i < lambda.getLocalLength(); ++i) local += criterion.isActive(l[i], s[i]);
   Teuchos::reduceAll(*v.getMap()->getComm(), Teuchos::REDUCE_SUM, 1, &local, &result.activeConstraints);
 }
 

@@ -58,3 +58,15 @@ KKTMeasures kktMeasures(const ContactQP& qp, const Vector& v, const Vector& lamb
 }
 
 }  // namespace signorini
+
+namespace signorini {
+
+ActiveSetCriterion::ActiveSetCriterion(const ContactQP& qp, const Vector& v, const Vector& lambda) {
+  const bool any = lambda.getGlobalLength() > 0;
+  forceScale_ = std::max(qp.b->normInf(), any ? lambda.normInf() : 0.0);
+  displacementScale_ = std::max(v.normInf(), any ? qp.d->normInf() : 0.0);
+  if (!(forceScale_ > 0)) forceScale_ = 1;
+  if (!(displacementScale_ > 0)) displacementScale_ = 1;
+}
+
+}  // namespace signorini

@@ -5,6 +5,7 @@
 // fraction-to-boundary step (28), zeta_{k+1} = delta zeta_k, mu_{k+1} = gamma_{k+1} mu_k and
 // the adaptive gamma of section 4.
 #include <cmath>
+#include <cstdio>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -109,10 +110,13 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
   const ForcingRule forcing = forcingRule(p, 0.1 * tol * bnorm);
 
   Vector s(cmap), y(cmap), lambda(cmap), Adv(cmap), minusAdv(cmap), Qv(vmap), g(vmap), dv(vmap), Qdv(vmap), rhs(vmap);
-  // s = d - A v, y = mu / s, g = Q v - b + A^T y
+  // The slack s = d - A v is computed once and then updated with each step, s <- s - alpha A dv:
+  // recomputing it from v would cancel digits on the nearly active constraints, where
+  // y = mu / s needs them most.
+  qp.A->apply(*v, s);
+  s.update(1.0, *qp.d, -1.0);
+  // y = mu / s, g = Q v - b + A^T y
   auto evaluate = [&]() {
-    qp.A->apply(*v, s);
-    s.update(1.0, *qp.d, -1.0);
     y.reciprocal(s);
     y.scale(mu);
     qp.Q->apply(*v, Qv);
@@ -134,7 +138,17 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
         failed = true;
         break;
       }
-      if ((inner > 0 && gnorm < zeta) || inner == maxInner) break;
+      if (inner > 0 && gnorm < zeta) break;
+      if (inner == maxInner) {
+        result.status = SolveStatus::NumericalBreakdown;
+        char values[96];
+        std::snprintf(values, sizeof values, "%.3e in %d steps at mu = %.3e", zeta, maxInner, mu);
+        result.message = std::string("the inner Newton loop did not reach ||grad psi|| < ") + values +
+                         ": the barrier Hessian is too ill-conditioned for the target; loosen Solver/kkt: "
+                         "tolerance, or use Solver/method = primal-dual";
+        failed = true;
+        break;
+      }
 
       {
         auto sd = s.getData();
@@ -195,7 +209,7 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
       record.mu = mu;
       record.step = alpha;
       record.krylovIterations = krylov;
-      s.update(-alpha, Adv, 1.0);  // slack at the new point, for the multipliers
+      s.update(-alpha, Adv, 1.0);
       lambda.reciprocal(s);
       lambda.scale(-mu);
       record.kkt = kktMeasures(qp, *v, lambda);

@@ -1,51 +1,211 @@
-// Interior point solvers on problems of the benchmark family.
+// The interior point solvers: QPs with known solutions, the whole benchmark family against
+// an independent active-set solve, and independence of the rank count.
 #include <gtest/gtest.h>
 
-#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_Time.hpp>
 #include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/InteriorPointSolver.hpp"
-#include "signorini/ProblemBuilder.hpp"
+#include "support/ActiveSetReference.hpp"
+#include "support/TestProblems.hpp"
 
 namespace {
 
 using namespace signorini;
+using namespace signorini::testing;
 
-std::string sourceDir() {
-  const char* dir = std::getenv("SIGNORINI_SOURCE_DIR");
-  return dir ? dir : ".";
+Teuchos::ParameterList method(const std::string& name) {
+  Teuchos::ParameterList p;
+  p.set("method", name);
+  return p;
 }
 
-Teuchos::ParameterList problemList(const std::string& name) {
-  auto list = Teuchos::getParametersFromXmlFile(sourceDir() + "/xml/paper/" + name + ".xml");
-  return list->sublist("Problem");
-}
+double relativeDifference(double a, double b) { return std::abs(a - b) / std::max(std::abs(b), 1e-300); }
 
-TEST(InteriorPoint, PrimalDualSolvesM) {
+// A QP with a known solution: Q = tridiag(-1, 3, -1) (n = 40, distributed), A = -I on the
+// even unknowns, and (v*, y*) chosen first: constraint i is active where y*_i > 0.
+struct KnownQP {
+  ContactQP qp;
+  RCP<Vector> vStar, lambdaStar;
+};
+
+KnownQP knownQP(const std::string& activePattern) {
   auto comm = Tpetra::getDefaultComm();
-  AssembledProblem p = buildProblem(problemList("M"), comm);
-  Teuchos::ParameterList params;
-  InteriorPointSolver solver(params);
-  IterationLog log(std::cout, comm->getRank() == 0);
-  SolveResult r = solver.solve(p.qp, nullptr, &log);
-  EXPECT_TRUE(r.converged()) << r.message;
-}
-
-TEST(InteriorPoint, PrimalSolvesM) {
-  auto comm = Tpetra::getDefaultComm();
-  AssembledProblem p = buildProblem(problemList("M"), comm);
-  Teuchos::ParameterList params;
-  params.set("method", "primal");
-  if (const char* g = std::getenv("GAMMA")) {
-    params.set("gamma: adaptive", false);
-    params.set("primal: gamma", std::atof(g));
-    params.set("primal: delta", std::atof(g));
+  const long long n = 40, m = 20;
+  auto vmap = rcp(new Map(n, 0, comm));
+  auto cmap = rcp(new Map(m, 0, comm));
+  auto Q = rcp(new CrsMatrix(vmap, 3));
+  for (std::size_t i = 0; i < vmap->getNodeNumElements(); ++i) {
+    const GlobalOrdinal row = vmap->getGlobalElement(i);
+    for (GlobalOrdinal col : {row - 1, row, row + 1})
+      if (col >= 0 && col < n) {
+        const double value = col == row ? 3.0 : -1.0;
+        Q->insertGlobalValues(row, 1, &value, &col);
+      }
   }
-  InteriorPointSolver solver(params);
-  IterationLog log(std::cout, comm->getRank() == 0);
-  SolveResult r = solver.solve(p.qp, nullptr, &log);
-  EXPECT_TRUE(r.converged()) << r.message;
+  Q->fillComplete();
+  auto A = rcp(new CrsMatrix(cmap, 1));
+  for (std::size_t k = 0; k < cmap->getNodeNumElements(); ++k) {
+    const GlobalOrdinal row = cmap->getGlobalElement(k), col = 2 * row;
+    const double value = -1.0;
+    A->insertGlobalValues(row, 1, &value, &col);
+  }
+  A->fillComplete(vmap, cmap);
+
+  KnownQP known;
+  known.vStar = rcp(new Vector(vmap));
+  auto y = rcp(new Vector(cmap));
+  {
+    auto v = known.vStar->getDataNonConst();
+    for (long i = 0; i < v.size(); ++i) v[i] = std::sin(0.3 * vmap->getGlobalElement(i));
+    auto yd = y->getDataNonConst();
+    for (long k = 0; k < yd.size(); ++k) {
+      const GlobalOrdinal row = cmap->getGlobalElement(k);
+      const bool active = activePattern == "all" || (activePattern == "half" && row % 2 == 0);
+      yd[k] = active ? 0.5 + 0.01 * row : 0.0;
+    }
+  }
+  // d: A v* where active, A v* + 0.2 elsewhere; b = Q v* + A^T y*.
+  auto Av = rcp(new Vector(cmap)), d = rcp(new Vector(cmap)), b = rcp(new Vector(vmap));
+  A->apply(*known.vStar, *Av);
+  {
+    auto dd = d->getDataNonConst();
+    auto ad = Av->getData();
+    auto yd = y->getData();
+    for (long k = 0; k < dd.size(); ++k) dd[k] = ad[k] + (yd[k] > 0 ? 0.0 : 0.2);
+  }
+  Q->apply(*known.vStar, *b);
+  A->apply(*y, *b, Teuchos::TRANS, 1.0, 1.0);
+  known.qp.Q = Q;
+  known.qp.A = A;
+  known.qp.b = b;
+  known.qp.d = d;
+  known.lambdaStar = rcp(new Vector(cmap));
+  known.lambdaStar->update(-1.0, *y, 0.0);
+  return known;
+}
+
+TEST(InteriorPoint, KnownSolutionsToRoundOff) {
+  for (const char* pattern : {"none", "half", "all"})
+    for (const char* name : {"primal-dual", "primal"}) {
+      KnownQP known = knownQP(pattern);
+      Teuchos::ParameterList params = method(name);
+      const double tol = 1e-13;
+      params.set("kkt: tolerance", tol);
+      IterationLog log(std::cout, std::getenv("SIGNORINI_TEST_LOG") != nullptr);
+      SolveResult r = InteriorPointSolver(params).solve(known.qp, nullptr, &log);
+      ASSERT_TRUE(r.converged()) << name << " " << pattern << ": " << r.message;
+      Vector dv(*r.v, Teuchos::Copy);
+      dv.update(-1.0, *known.vStar, 1.0);
+      EXPECT_LT(dv.normInf(), 100 * tol * known.vStar->normInf()) << name << " " << pattern;
+      Vector dl(*r.lambda, Teuchos::Copy);
+      dl.update(-1.0, *known.lambdaStar, 1.0);
+      EXPECT_LT(dl.normInf(), 1e4 * tol * known.lambdaStar->normInf() + 1e3 * tol) << name << " " << pattern;
+      const long long expectedActive = std::string(pattern) == "none" ? 0 : std::string(pattern) == "half" ? 10 : 20;
+      EXPECT_EQ(r.activeConstraints, expectedActive) << name << " " << pattern;
+    }
+}
+
+// The active-set reference, computed on rank 0 on a one-rank copy of the problem.
+double referenceObjective(const Teuchos::ParameterList& problem) {
+  auto comm = Tpetra::getDefaultComm();
+  double objective = 0;
+  int converged = 0;
+  if (comm->getRank() == 0) {
+    AssembledProblem serial = buildSerial(problem);
+    Teuchos::Time t("reference");
+    t.start();
+    ReferenceSolution ref = activeSetSolve(serial.qp);
+    if (std::getenv("SIGNORINI_TEST_LOG"))
+      std::cout << "reference: " << ref.iterations << " active-set iterations, " << t.stop() << " s\n";
+    objective = ref.objective;
+    converged = ref.converged;
+  }
+  Teuchos::broadcast(*comm, 0, 1, &objective);
+  Teuchos::broadcast(*comm, 0, 1, &converged);
+  EXPECT_TRUE(converged) << "active-set reference did not converge";
+  return objective;
+}
+
+void expectFamilyMatchesReference(const std::string& name, const std::vector<std::string>& methods) {
+  const Teuchos::ParameterList problem = shippedProblem("paper/" + name);
+  const double reference = referenceObjective(problem);
+  AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+  for (const std::string& m : methods) {
+    SolveResult r = InteriorPointSolver(method(m)).solve(p.qp);
+    if (std::getenv("SIGNORINI_TEST_LOG")) std::cout << name << " " << m << ": " << r.seconds << " s\n";
+    EXPECT_TRUE(r.converged()) << name << " " << m << ": " << r.message;
+    EXPECT_LE(r.kkt.worst(), 1e-8) << name << " " << m;
+    EXPECT_LT(relativeDifference(r.objective, reference), 1e-8)
+        << name << " " << m << ": " << r.objective << " vs reference " << reference;
+  }
+}
+
+// Both methods on the family; the primal method's ~100 Newton steps on the three largest
+// 3D problems (D, F, L) are left to the benchmark to keep the suite short.
+TEST(InteriorPoint, Family2DBothMethodsMatchTheActiveSetReference) {
+  for (const char* name : {"A", "G", "H", "I", "J", "K", "M"}) expectFamilyMatchesReference(name, {"primal-dual", "primal"});
+}
+
+TEST(InteriorPoint, Family3DMatchesTheActiveSetReference) {
+  for (const char* name : {"B", "C", "E"}) expectFamilyMatchesReference(name, {"primal-dual", "primal"});
+  for (const char* name : {"D", "F", "L"}) expectFamilyMatchesReference(name, {"primal-dual"});
+}
+
+// The same problem solved on this communicator and on one rank: same optimal value to
+// 1e-10 relative, main iterations within one.
+TEST(InteriorPoint, ResultsDoNotDependOnTheRankCount) {
+  for (const char* name : {"M", "H", "B"})
+    for (const char* m : {"primal-dual", "primal"}) {
+      const Teuchos::ParameterList problem = shippedProblem(std::string("paper/") + name);
+      SolveResult parallel = InteriorPointSolver(method(m)).solve(buildProblem(problem, Tpetra::getDefaultComm()).qp);
+      SolveResult serial = InteriorPointSolver(method(m)).solve(buildSerial(problem).qp);
+      ASSERT_TRUE(parallel.converged() && serial.converged()) << name << " " << m;
+      EXPECT_LT(relativeDifference(parallel.objective, serial.objective), 1e-10) << name << " " << m;
+      EXPECT_LE(std::abs(parallel.outerIterations - serial.outerIterations), 1) << name << " " << m;
+    }
+}
+
+TEST(InteriorPoint, FixedCenteringWithMeritBacktrackingConverges) {
+  for (const char* name : {"M", "G"}) {
+    Teuchos::ParameterList params = method("primal-dual");
+    params.set("primal-dual: centering", "fixed");
+    const Teuchos::ParameterList problem = shippedProblem(std::string("paper/") + name);
+    SolveResult r = InteriorPointSolver(params).solve(buildProblem(problem, Tpetra::getDefaultComm()).qp);
+    EXPECT_TRUE(r.converged()) << name << ": " << r.message;
+    EXPECT_GT(r.functionEvaluations, 0) << name;
+    EXPECT_LT(relativeDifference(r.objective, referenceObjective(problem)), 1e-8) << name;
+  }
+}
+
+// A user guess far outside the feasible set (every node pushed 0.1 into the obstacle).
+TEST(InteriorPoint, InfeasibleInitialGuessIsAccepted) {
+  const Teuchos::ParameterList problem = shippedProblem("paper/G");
+  AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+  Vector guess(p.qp.Q->getDomainMap());
+  {
+    auto g = guess.getDataNonConst();
+    for (long i = 1; i < g.size(); i += 2) g[i] = -0.1;
+  }
+  const double reference = referenceObjective(problem);
+  for (const char* m : {"primal-dual", "primal"}) {
+    SolveResult r = InteriorPointSolver(method(m)).solve(p.qp, &guess);
+    EXPECT_TRUE(r.converged()) << m << ": " << r.message;
+    EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << m;
+  }
+}
+
+TEST(InteriorPoint, IterationLimitIsReportedWithAHint) {
+  Teuchos::ParameterList params = method("primal-dual");
+  params.set("maximum iterations", 2);
+  SolveResult r = InteriorPointSolver(params).solve(buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp);
+  EXPECT_EQ(r.status, SolveStatus::IterationLimit);
+  EXPECT_NE(r.message.find("maximum iterations"), std::string::npos);
 }
 
 }  // namespace

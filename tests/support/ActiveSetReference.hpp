@@ -1,8 +1,8 @@
 #pragma once
 // An independent solver of min 1/2 v^T Q v - b^T v s.t. A v <= d for the tests: the
-// primal-dual active set method (semismooth Newton) with a direct KLU2 solve of the KKT
-// system of each active set. It shares nothing with the interior point code but the QP.
-// The QP must live on a one-rank communicator (Amesos2 is wrong on more than one here).
+// primal-dual active set method (semismooth Newton), each active set's system solved to
+// round-off. It shares nothing with the interior point code but the QP.
+// The QP must live on a one-rank communicator.
 #include "signorini/ContactQP.hpp"
 
 namespace signorini::testing {

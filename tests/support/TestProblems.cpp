@@ -2,7 +2,7 @@
 
 #include <cstdlib>
 
-#include <Teuchos_DefaultSerialComm.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
@@ -40,7 +40,8 @@ int solveLinear(const ContactQP& qp, Vector& x, double tol) {
 }
 
 AssembledProblem buildSerial(const Teuchos::ParameterList& problem) {
-  RCP<const Comm> self = rcp(new Teuchos::SerialComm<int>());
+  // A one-rank MPI communicator: MueLu assumes an MPI communicator in an MPI build.
+  RCP<const Comm> self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
   return buildProblem(problem, self);
 }
 

@@ -1,0 +1,189 @@
+// The XML-configured application: shipped inputs validate, mistakes get clear messages,
+// --set works, outputs match the solver's counters.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "signorini/Application.hpp"
+#include "signorini/Error.hpp"
+#include "signorini/ParameterValidation.hpp"
+#include "support/TestProblems.hpp"
+
+namespace {
+
+using namespace signorini;
+using signorini::testing::sourceDir;
+
+std::string readFile(const std::string& path) {
+  std::ifstream in(path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The message of the InputError that `f` throws ("" if none).
+template <class F>
+std::string inputErrorOf(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+Teuchos::ParameterList fileList(const std::string& relative) {
+  return readParameterFile(sourceDir() + "/" + relative, *Tpetra::getDefaultComm());
+}
+
+TEST(Application, EveryShippedXmlValidates) {
+  const Teuchos::ParameterList valid = validTopLevelParameters();
+  int count = 0;
+  for (const auto& dir : {"xml", "xml/paper"})
+    for (const auto& entry : std::filesystem::directory_iterator(sourceDir() + "/" + dir)) {
+      if (entry.path().extension() != ".xml") continue;
+      const std::string relative = std::string(dir) + "/" + entry.path().filename().string();
+      EXPECT_EQ(inputErrorOf([&] { validatedParameters(fileList(relative), valid, ""); }), "") << relative;
+      ++count;
+    }
+  EXPECT_GE(count, 15);
+}
+
+TEST(Application, DefaultsXmlIsCurrent) {
+  EXPECT_EQ(readFile(sourceDir() + "/xml/defaults.xml"), defaultsXml())
+      << "regenerate it: build/bin/signorini --defaults > xml/defaults.xml";
+}
+
+TEST(Application, MisspelledNamesGetAHint) {
+  const Teuchos::ParameterList valid = validTopLevelParameters();
+  Teuchos::ParameterList user;
+  user.sublist("Solver").set("methd", "primal");
+  const std::string message = inputErrorOf([&] { validatedParameters(user, valid, ""); });
+  EXPECT_NE(message.find("Solver/methd"), std::string::npos) << message;
+  EXPECT_NE(message.find("did you mean \"method\""), std::string::npos) << message;
+
+  Teuchos::ParameterList nested;
+  nested.sublist("Problem").sublist("Contact").set("gap: valeu", 0.1);
+  const std::string nestedMessage = inputErrorOf([&] { validatedParameters(nested, valid, ""); });
+  EXPECT_NE(nestedMessage.find("Problem/Contact/gap: valeu"), std::string::npos) << nestedMessage;
+  EXPECT_NE(nestedMessage.find("did you mean \"gap: value\""), std::string::npos) << nestedMessage;
+}
+
+TEST(Application, BadValuesNameTheParameterAndTheAcceptedRange) {
+  const Teuchos::ParameterList valid = validTopLevelParameters();
+  struct Case {
+    std::function<void(Teuchos::ParameterList&)> set;
+    std::string path, accepted;
+  };
+  const Case cases[] = {
+      {[](auto& l) { l.sublist("Problem").set("element: degree", 4); }, "Problem/element: degree", "3"},
+      {[](auto& l) { l.sublist("Solver").set("method", "dual"); }, "Solver/method", "primal-dual"},
+      {[](auto& l) { l.sublist("Problem").set("material: poisson ratio", 0.6); }, "Problem/material: poisson ratio",
+       "0.4999"},
+      {[](auto& l) { l.sublist("Solver").set("maximum iterations", "many"); }, "Solver/maximum iterations", "int"},
+  };
+  for (const Case& c : cases) {
+    Teuchos::ParameterList user;
+    c.set(user);
+    const std::string message = inputErrorOf([&] { validatedParameters(user, valid, ""); });
+    EXPECT_NE(message.find(c.path), std::string::npos) << message;
+    EXPECT_NE(message.find(c.accepted), std::string::npos) << message;
+  }
+  // Mistakes found while building the problem name their place too.
+  Teuchos::ParameterList problem = signorini::testing::boxProblem(2, 4, 1);
+  problem.set("body force: y", "-(1 + ");
+  const std::string message = inputErrorOf([&] { buildProblem(problem, Tpetra::getDefaultComm()); });
+  EXPECT_NE(message.find("Problem/body force: y"), std::string::npos) << message;
+  problem.set("body force: y", "0");
+  problem.sublist("Contact").set("boundary", "bottom");
+  const std::string boundary = inputErrorOf([&] { buildProblem(problem, Tpetra::getDefaultComm()); });
+  EXPECT_NE(boundary.find("ymin"), std::string::npos) << boundary;  // lists the known names
+}
+
+TEST(Application, SetOverridesTakeTheTypeOfTheParameter) {
+  const Teuchos::ParameterList valid = validTopLevelParameters();
+  Teuchos::ParameterList user;
+  applyOverride(user, "Solver/kkt: tolerance=1e-6", valid);
+  applyOverride(user, "Problem/element: degree=2", valid);
+  applyOverride(user, "Problem/mesh: cells={4, 8}", valid);
+  applyOverride(user, "Problem/Dirichlet/ymax/displacement: y=-0.1*x", valid);
+  applyOverride(user, "Solver/Preconditioner/MueLu/smoother: sweeps=3", valid);
+  EXPECT_EQ(user.sublist("Solver").get<double>("kkt: tolerance"), 1e-6);
+  EXPECT_EQ(user.sublist("Problem").get<int>("element: degree"), 2);
+  EXPECT_EQ(user.sublist("Problem").get<Teuchos::Array<int>>("mesh: cells"), Teuchos::Array<int>(Teuchos::tuple<int>(4, 8)));
+  EXPECT_EQ(user.sublist("Problem").sublist("Dirichlet").sublist("ymax").get<std::string>("displacement: y"), "-0.1*x");
+  EXPECT_EQ(user.sublist("Solver").sublist("Preconditioner").sublist("MueLu").get<int>("smoother: sweeps"), 3);
+  EXPECT_NO_THROW(validatedParameters(user, valid, ""));
+  EXPECT_NE(inputErrorOf([&] { applyOverride(user, "Problem/element: degree=two", valid); }).find("int"),
+            std::string::npos);
+  EXPECT_NE(inputErrorOf([&] { applyOverride(user, "no equals sign", valid); }), "");
+}
+
+TEST(Application, CommandLineErrorsShowTheUsage) {
+  const char* unknown[] = {"signorini", "in.xml", "--frobnicate"};
+  EXPECT_NE(inputErrorOf([&] { CommandLine::parse(3, unknown); }).find("usage"), std::string::npos);
+  const char* missing[] = {"signorini", "in.xml", "--output"};
+  EXPECT_NE(inputErrorOf([&] { CommandLine::parse(3, missing); }).find("--output needs a value"), std::string::npos);
+  const char* none[] = {"signorini"};
+  EXPECT_NE(inputErrorOf([&] { CommandLine::parse(1, none); }).find("no input file"), std::string::npos);
+  const char* full[] = {"signorini", "a.xml", "--output", "o", "--set", "Solver/method=primal", "--export-qp", "q"};
+  const CommandLine cl = CommandLine::parse(8, full);
+  EXPECT_EQ(cl.input, "a.xml");
+  EXPECT_EQ(cl.output, "o");
+  EXPECT_EQ(cl.exportQp, "q");
+  ASSERT_EQ(cl.overrides.size(), 1u);
+}
+
+TEST(Application, MissingInputFileFailsOnEveryRank) {
+  const std::string message =
+      inputErrorOf([] { readParameterFile("/nonexistent/problem.xml", *Tpetra::getDefaultComm()); });
+  EXPECT_NE(message.find("/nonexistent/problem.xml"), std::string::npos);
+}
+
+// A whole run of problem M: outputs exist and summary.json carries the solver's counters.
+TEST(Application, RunWritesSummaryHistoryAndQp) {
+  auto comm = Tpetra::getDefaultComm();
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  const std::string dir = std::string(binary ? binary : "/tmp") + "/app-test-np" + std::to_string(comm->getSize());
+  CommandLine cl;
+  cl.input = sourceDir() + "/xml/paper/M.xml";
+  cl.output = dir + "/out";
+  cl.summary = dir + "/copy.json";
+  cl.exportQp = dir + "/qp";
+  std::ostringstream log;
+  const SolveResult r = runApplication(cl, comm, log);
+  ASSERT_TRUE(r.converged()) << r.message;
+  comm->barrier();
+  if (comm->getRank() != 0) return;
+  const std::string summary = readFile(dir + "/out/summary.json");
+  EXPECT_EQ(summary, readFile(dir + "/copy.json"));
+  auto has = [&](const std::string& field) { return summary.find(field) != std::string::npos; };
+  EXPECT_TRUE(has("\"outer_iterations\": " + std::to_string(r.outerIterations) + ","));
+  EXPECT_TRUE(has("\"gradient_evaluations\": " + std::to_string(r.gradientEvaluations) + ","));
+  EXPECT_TRUE(has("\"function_evaluations\": " + std::to_string(r.functionEvaluations) + ","));
+  EXPECT_TRUE(has("\"krylov_iterations\": " + std::to_string(r.krylovIterations) + ","));
+  EXPECT_TRUE(has("\"max_krylov_per_newton\": " + std::to_string(r.maxKrylovPerNewton) + ","));
+  EXPECT_TRUE(has("\"n\": 242,"));
+  EXPECT_TRUE(has("\"m\": 11,"));
+  EXPECT_TRUE(has("\"converged\": true"));
+  EXPECT_TRUE(has("\"ranks\": " + std::to_string(comm->getSize()) + ","));
+  EXPECT_TRUE(has("\"time\": {\"setup\": "));
+  // One history row per Newton step record, plus the header.
+  std::ifstream history(dir + "/out/history.csv");
+  int lines = 0;
+  for (std::string line; std::getline(history, line);) ++lines;
+  EXPECT_EQ(lines, static_cast<int>(r.history.size()) + 1);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/out/solution.pvtu"));
+  for (const char* file : {"Q.mtx", "b.mtx", "A.mtx", "d.mtx", "coords.mtx"})
+    EXPECT_TRUE(std::filesystem::exists(dir + "/qp/" + file)) << file;
+  // The log has the table header and the final status line.
+  EXPECT_NE(log.str().find("stat"), std::string::npos);
+  EXPECT_NE(log.str().find("converged after"), std::string::npos);
+}
+
+}  // namespace
