@@ -24,6 +24,7 @@
 #include "signorini/ProblemBuilder.hpp"
 #include "signorini/RunSummary.hpp"
 #include "signorini/VtuWriter.hpp"
+#include "../io/XmlEscape.hpp"
 
 namespace signorini {
 namespace {
@@ -189,20 +190,6 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::s
   writeVtu(ds, {displacement, force, gapField, active}, {mises, rank}, directory, "solution");
 }
 
-std::string xmlEscaped(const std::string& text) {
-  std::string out;
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 std::string shortest(double x) {
   char buffer[32];
   for (int precision = 1; precision <= 17; ++precision) {
@@ -233,7 +220,7 @@ std::string commentText(std::string text) {
 void writeDocumented(const Teuchos::ParameterList& list, const std::string& name, int depth,
                      std::ostringstream& out) {
   const std::string indent(2 * depth, ' ');
-  out << indent << "<ParameterList name=\"" << xmlEscaped(name) << "\">\n";
+  out << indent << "<ParameterList name=\"" << detail::xmlEscaped(name) << "\">\n";
   for (auto it = list.begin(); it != list.end(); ++it) {
     const std::string& key = list.name(it);
     const Teuchos::ParameterEntry& entry = list.entry(it);
@@ -247,8 +234,8 @@ void writeDocumented(const Teuchos::ParameterList& list, const std::string& name
     } else if (entry.isList()) {
       writeDocumented(Teuchos::getValue<Teuchos::ParameterList>(entry), key, depth + 1, out);
     } else {
-      out << indent << "  <Parameter name=\"" << xmlEscaped(key) << "\" type=\"" << entry.getAny(false).typeName()
-          << "\" value=\"" << xmlEscaped(valueText(entry)) << "\"/>\n";
+      out << indent << "  <Parameter name=\"" << detail::xmlEscaped(key) << "\" type=\"" << entry.getAny(false).typeName()
+          << "\" value=\"" << detail::xmlEscaped(valueText(entry)) << "\"/>\n";
     }
   }
   out << indent << "</ParameterList>\n";

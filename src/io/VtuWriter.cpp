@@ -1,5 +1,6 @@
 #include "signorini/VtuWriter.hpp"
 
+
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -11,6 +12,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "XmlEscape.hpp"
 #include "signorini/Error.hpp"
 
 namespace signorini {
@@ -79,21 +81,6 @@ bool littleEndian() {
   return first == 1;
 }
 
-std::string xmlEscape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
 void appendBase64(std::string& out, const std::vector<unsigned char>& bytes) {
   static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   const std::size_t n = bytes.size();
@@ -127,7 +114,7 @@ void appendDataArray(std::string& out, const char* type, const std::string& name
   out += "        <DataArray type=\"";
   out += type;
   out += '"';
-  if (!name.empty()) out += " Name=\"" + xmlEscape(name) + '"';
+  if (!name.empty()) out += " Name=\"" + detail::xmlEscaped(name) + '"';
   out += " NumberOfComponents=\"" + std::to_string(components) + "\" format=\"binary\">\n          ";
   const std::uint64_t numBytes = data.size() * sizeof(T);
   std::vector<unsigned char> bytes(sizeof(numBytes) + numBytes);
@@ -218,17 +205,17 @@ std::string indexText(int numRanks, const std::vector<NodeField>& nodeFields,
   std::string out = fileHeader("PUnstructuredGrid");
   out += "  <PUnstructuredGrid GhostLevel=\"0\">\n    <PPointData>\n";
   for (const NodeField& f : nodeFields)
-    out += "      <PDataArray type=\"Float64\" Name=\"" + xmlEscape(f.name) + "\" NumberOfComponents=\"" +
+    out += "      <PDataArray type=\"Float64\" Name=\"" + detail::xmlEscaped(f.name) + "\" NumberOfComponents=\"" +
            std::to_string(outputComponents(f.components)) + "\"/>\n";
   out += "    </PPointData>\n    <PCellData>\n";
   for (const CellField& f : cellFields)
-    out += "      <PDataArray type=\"Float64\" Name=\"" + xmlEscape(f.name) + "\" NumberOfComponents=\"" +
+    out += "      <PDataArray type=\"Float64\" Name=\"" + detail::xmlEscaped(f.name) + "\" NumberOfComponents=\"" +
            std::to_string(outputComponents(f.components)) + "\"/>\n";
   out += "    </PCellData>\n    <PPoints>\n";
   out += "      <PDataArray type=\"Float64\" Name=\"Points\" NumberOfComponents=\"3\"/>\n";
   out += "    </PPoints>\n";
   for (int r = 0; r < numRanks; ++r)
-    out += "    <Piece Source=\"" + xmlEscape(basename + "_" + std::to_string(r) + ".vtu") + "\"/>\n";
+    out += "    <Piece Source=\"" + detail::xmlEscaped(basename + "_" + std::to_string(r) + ".vtu") + "\"/>\n";
   out += "  </PUnstructuredGrid>\n</VTKFile>\n";
   return out;
 }

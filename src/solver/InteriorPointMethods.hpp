@@ -38,13 +38,25 @@ void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, co
 // Fills v with the initial guess or zero.
 RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
 
-// Absolute Krylov tolerance of a truncated Newton step with right-hand side norm rhsNorm.
+// Absolute Krylov tolerance of a truncated Newton step, ||H dv - rhs|| <= tolerance, for a
+// nonlinear residual of norm ||F|| (||grad psi|| for the primal method, the KKT residual
+// for the primal-dual method, where the solve's error enters F's first block only):
+//   "constant":          eta ||F|| (the inexact Newton condition of the paper's (27));
+//   "adaptive":          min(eta ||rhs||, max(floor, safety * residualScale)), the residual
+//                        scale following the barrier parameter;
+//   "eisenstat-walker":  eta_k ||F|| with Eisenstat and Walker's choice 2,
+//                        eta_k = 0.9 (||F_k|| / ||F_k-1||)^2, safeguarded, at most eta.
 struct ForcingRule {
-  std::string type;     // "adaptive" or "constant"
-  double eta = 0.1;     // constant forcing, or the largest adaptive one
-  double safety = 0.1;  // adaptive: fraction of the current residual scale
-  double floor = 0.0;   // never ask for less than this (absolute)
-  double tolerance(double rhsNorm, double residualScale) const;
+  std::string type;
+  double eta = 0.1;
+  double safety = 0.1;
+  double floor = 0.0;
+  // Eisenstat-Walker state: the previous nonlinear residual norm and forcing term.
+  double previousNorm = -1.0, previousEta = 0.0;
+
+  void restart() { previousNorm = -1.0; }
+  // nonlinearNorm: the norm of the nonlinear residual the Newton step reduces (EW only).
+  double tolerance(double rhsNorm, double residualScale, double nonlinearNorm);
 };
 ForcingRule forcingRule(const Teuchos::ParameterList& params, double floor);
 

@@ -35,9 +35,10 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
   p.set("kkt: tolerance", 1e-8, "Stop when every relative KKT measure is at most this", range(1e-16, 1.0));
   p.set("maximum iterations", 200, "Main iterations allowed", range(1, 100000));
   p.set("forcing: type", "adaptive",
-        "Truncated Newton forcing: \"constant\" (||H dv + g|| <= eta ||g||) or \"adaptive\" (the "
-        "residual allowed follows the barrier parameter, never above eta ||g||)",
-        choices({"adaptive", "constant"}));
+        "Truncated Newton forcing: \"constant\" (||H dv + g|| <= eta ||g||), \"adaptive\" (the "
+        "residual allowed follows the barrier parameter, never above eta ||g||) or "
+        "\"eisenstat-walker\" (choice 2 of Eisenstat and Walker, at most eta)",
+        choices({"adaptive", "constant", "eisenstat-walker"}));
   p.set("forcing: eta", 0.1, "Constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
   p.set("forcing: safety", 0.1, "Adaptive forcing: fraction of the current residual scale", range(1e-6, 1.0));
   p.set("starting point: complementarity", 1.0,
@@ -63,6 +64,11 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
   p.set("primal: fraction to boundary", 0.99, "sigma in (28): first trial step min(1, sigma alpha_bar)",
         range(0.5, 0.999999));
   p.set("primal: maximum inner iterations", 50, "Newton steps allowed per main iteration", range(1, 10000));
+  p.set("primal: starting point", "shift",
+        "How the primal method makes the initial guess strictly feasible: \"shift\" moves it along "
+        "A^T (exact when each constraint acts on its own unknowns, as contact constraints do); "
+        "\"relaxed\" solves over S_varsigma = {A v - d <= varsigma} and drives varsigma to zero with mu",
+        choices({"shift", "relaxed"}));
   p.set("primal: starting margin", 0.1,
         "The initial guess is shifted so that every slack d - A v is at least this times the "
         "displacement scale of the unconstrained solution",
@@ -158,9 +164,22 @@ void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, co
   Teuchos::reduceAll(*v.getMap()->getComm(), Teuchos::REDUCE_SUM, 1, &local, &result.activeConstraints);
 }
 
-double ForcingRule::tolerance(double rhsNorm, double residualScale) const {
-  if (type == "constant") return eta * rhsNorm;
-  return std::min(eta * rhsNorm, std::max(floor, safety * residualScale));
+double ForcingRule::tolerance(double rhsNorm, double residualScale, double nonlinearNorm) {
+  if (type == "constant") return std::max(floor, eta * nonlinearNorm);
+  if (type == "adaptive") return std::min(eta * rhsNorm, std::max(floor, safety * residualScale));
+  double forcing = eta;
+  if (nonlinearNorm == previousNorm) {
+    forcing = previousEta;  // another solve for the same Newton step (Mehrotra's corrector)
+  } else if (previousNorm > 0) {
+    const double ratio = nonlinearNorm / previousNorm;
+    forcing = 0.9 * ratio * ratio;
+    const double safeguard = 0.9 * previousEta * previousEta;  // no sudden drop of eta
+    if (safeguard > 0.1) forcing = std::max(forcing, safeguard);
+    forcing = std::min(forcing, eta);
+  }
+  previousNorm = nonlinearNorm;
+  previousEta = forcing;
+  return std::max(floor, forcing * nonlinearNorm);
 }
 
 ForcingRule forcingRule(const Teuchos::ParameterList& params, double floor) {

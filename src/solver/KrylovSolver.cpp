@@ -34,22 +34,21 @@ KrylovResult KrylovSolver::solve(const RCP<const Operator>& A, const RCP<const O
   if (!M.is_null()) problem->setRightPrec(M);
   problem->setProblem();
 
+  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
+  auto solver = factory.create(solver_, Teuchos::null);
+  const auto valid = solver->getValidParameters();
   auto params = rcp(new Teuchos::ParameterList(belos_));
   params->set("Convergence Tolerance", tol);
   params->set("Maximum Iterations", maxIterations);
-  // The forcing condition is on the true residual relative to the right-hand side.
-  if (!params->isParameter("Implicit Residual Scaling"))
-    params->set("Implicit Residual Scaling", "Norm of RHS");
-  if (!params->isParameter("Explicit Residual Scaling"))
-    params->set("Explicit Residual Scaling", "Norm of RHS");
-
+  // The forcing condition is on the true residual relative to the right-hand side, where
+  // the solver lets us say so (MINRES always measures it that way).
+  for (const char* scaling : {"Implicit Residual Scaling", "Explicit Residual Scaling"})
+    if (valid->isParameter(scaling) && !params->isParameter(scaling)) params->set(scaling, "Norm of RHS");
   // CG's check p^T A p > 0 also fires on round-off once the residual is tiny; a truly
   // indefinite system shows up as non-convergence instead.
-  if (!params->isParameter("Assert Positive Definiteness") && (solver_ == "CG" || solver_ == "PSEUDOBLOCK CG"))
+  if (valid->isParameter("Assert Positive Definiteness") && !params->isParameter("Assert Positive Definiteness"))
     params->set("Assert Positive Definiteness", false);
-
-  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
-  auto solver = factory.create(solver_, params);
+  solver->setParameters(params);
   solver->setProblem(problem);
   KrylovResult result;
   try {

@@ -3,9 +3,11 @@
 //   H = Q + A^T diag(mu / s^2) A,  s = d - A v > 0,
 // with inner truncated Newton loops to ||grad psi|| < zeta_k, Armijo backtracking from the
 // fraction-to-boundary step (28), zeta_{k+1} = delta zeta_k, mu_{k+1} = gamma_{k+1} mu_k and
-// the adaptive gamma of section 4.
+// the adaptive gamma of section 4. The initial guess is made strictly feasible by a shift
+// along A^T ("shift") or by the relaxed set S_varsigma of section 3.2 ("relaxed").
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -28,6 +30,20 @@ double logChange(const Vector& s, double alpha, const Vector& ds) {
   double global = local;
   Teuchos::reduceAll(*s.getMap()->getComm(), Teuchos::REDUCE_SUM, 1, &local, &global);
   return global;
+}
+
+double globalMin(const Vector& x) {
+  double local = std::numeric_limits<double>::infinity();
+  auto xd = x.getData();
+  for (std::size_t i = 0; i < x.getLocalLength(); ++i) local = std::min(local, xd[i]);
+  double global = local;
+  Teuchos::reduceAll(*x.getMap()->getComm(), Teuchos::REDUCE_MIN, 1, &local, &global);
+  return global;
+}
+
+void shiftAll(Vector& x, double shift) {
+  auto xd = x.getDataNonConst();
+  for (std::size_t i = 0; i < x.getLocalLength(); ++i) xd[i] += shift;
 }
 
 // Moves v along A^T so that every slack d - A v is at least `margin`. Exact when the rows of
@@ -91,7 +107,9 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
   newton.setWeights(D);
   const ProblemScales scales = problemScales(qp, newton, *v);
   result.krylovIterations += scales.krylovIterations;
-  shiftIntoInterior(qp, *v, p.get<double>("primal: starting margin") * scales.displacement);
+  const double margin = p.get<double>("primal: starting margin") * scales.displacement;
+  const bool relaxed = p.get<std::string>("primal: starting point") == "relaxed";
+  if (!relaxed) shiftIntoInterior(qp, *v, margin);
 
   const double tol = p.get<double>("kkt: tolerance");
   const int maxIterations = p.get<int>("maximum iterations");
@@ -107,7 +125,7 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
   double mu = p.get<double>("primal: mu0"), zeta = p.get<double>("primal: zeta0"), gamma = p.get<double>("primal: gamma");
   if (mu <= 0) mu = p.get<double>("starting point: complementarity") * scales.energy / std::max(m, 1LL);
   if (zeta <= 0) zeta = bnorm > 0 ? bnorm : 1.0;
-  const ForcingRule forcing = forcingRule(p, 0.1 * tol * bnorm);
+  ForcingRule forcing = forcingRule(p, 0.1 * tol * bnorm);
 
   Vector s(cmap), y(cmap), lambda(cmap), Adv(cmap), minusAdv(cmap), Qv(vmap), g(vmap), dv(vmap), Qdv(vmap), rhs(vmap);
   // The slack s = d - A v is computed once and then updated with each step, s <- s - alpha A dv:
@@ -115,6 +133,13 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
   // y = mu / s needs them most.
   qp.A->apply(*v, s);
   s.update(1.0, *qp.d, -1.0);
+  // The relaxed set S_varsigma = {A v - d <= varsigma} of section 3.2 contains the initial
+  // guess strictly; varsigma is then driven to zero with mu.
+  double varsigma = 0;
+  if (relaxed) {
+    varsigma = std::max(0.0, -globalMin(s)) + margin;
+    shiftAll(s, varsigma);
+  }
   // y = mu / s, g = Q v - b + A^T y
   auto evaluate = [&]() {
     y.reciprocal(s);
@@ -130,6 +155,7 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
   bool failed = false;
   for (int k = 0;; ++k) {
     int inner = 0;
+    forcing.restart();  // a new barrier subproblem
     for (;;) {
       const double gnorm = evaluate();
       if (!std::isfinite(gnorm)) {
@@ -158,7 +184,7 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
       newton.setWeights(D);
       rhs.update(-1.0, g, 0.0);
       const double residualScale = gnorm * std::min(1.0, std::sqrt(gnorm / (bnorm > 0 ? bnorm : 1.0)));
-      double tolAbs = std::min(0.5 * gnorm, forcing.tolerance(gnorm, residualScale));
+      double tolAbs = std::min(0.5 * gnorm, forcing.tolerance(gnorm, residualScale, gnorm));
       KrylovResult kr = newton.solve(rhs, dv, tolAbs);
       ++result.newtonSteps;
       int krylov = kr.iterations;
@@ -246,6 +272,15 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
       }
     }
     mu *= gamma;
+    if (varsigma > 0) {
+      // Shrink the relaxation at the rate of mu, but never by more than 90% of the smallest
+      // slack, so the iterate stays strictly inside.
+      const double floorByIterate = varsigma - 0.9 * globalMin(s);
+      double next = std::max(gamma * varsigma, floorByIterate);
+      if (next < 1e-3 * tol * scales.displacement && floorByIterate <= 0) next = 0;
+      shiftAll(s, next - varsigma);
+      varsigma = next;
+    }
     // Below the stationarity the KKT target asks for, a tighter inner loop buys nothing.
     zeta = std::max(delta * zeta, 0.1 * tol * bnorm);
   }

@@ -60,7 +60,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
   const double tol = p.get<double>("kkt: tolerance");
   const int maxIterations = p.get<int>("maximum iterations");
   const double bnorm = qp.b->norm2();
-  const ForcingRule forcing = forcingRule(p, 0.1 * tol * bnorm);
+  ForcingRule forcing = forcingRule(p, 0.1 * tol * bnorm);
   const double ftb = p.get<double>("primal-dual: fraction to boundary");
   const double muFactor = p.get<double>("primal-dual: mu factor");
   const double armijo = p.get<double>("primal-dual: armijo");
@@ -82,8 +82,11 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     }
     rhs.assign(rd);
     qp.A->apply(u, rhs, Teuchos::TRANS, -1.0, -1.0);
-    const double residualScale = std::max(rd.norm2(), mu0 > 0 ? bnorm * mu / mu0 : 0.0);
-    KrylovResult kr = newton.solve(rhs, dv, forcing.tolerance(rhs.norm2(), residualScale));
+    const double rdNorm = rd.norm2(), rpNorm = rp.norm2();
+    const double residualScale = std::max(rdNorm, mu0 > 0 ? bnorm * mu / mu0 : 0.0);
+    // ||F|| with ||s.y - mu_target|| estimated by sqrt(m) mu
+    const double kktNorm = std::sqrt(rdNorm * rdNorm + rpNorm * rpNorm + static_cast<double>(m) * mu * mu);
+    KrylovResult kr = newton.solve(rhs, dv, forcing.tolerance(rhs.norm2(), residualScale, kktNorm));
     qp.A->apply(dv, Adv);
     ds.update(-1.0, rp, -1.0, Adv, 0.0);
     {
@@ -128,6 +131,14 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     if (kkt.worst() <= tol) {
       result.status = SolveStatus::Converged;
       result.message = "every relative KKT measure is below " + std::to_string(tol);
+      break;
+    }
+    if (mu0 > 0 && mu < 1e-30 * mu0) {
+      // Complementarity far below any need while the rest of the KKT conditions lag: the
+      // Newton systems are solved too loosely for the target, and D = y/s degenerates.
+      result.status = SolveStatus::NumericalBreakdown;
+      result.message = "the barrier parameter vanished before the KKT target was met: the Newton systems are "
+                       "solved too loosely; tighten Solver/forcing: eta or use Solver/forcing: type = adaptive";
       break;
     }
     if (k == maxIterations) {

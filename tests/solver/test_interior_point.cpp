@@ -200,6 +200,42 @@ TEST(InteriorPoint, InfeasibleInitialGuessIsAccepted) {
   }
 }
 
+// The relaxed set S_varsigma (section 3.2) instead of the shift as the primal method's start.
+TEST(InteriorPoint, RelaxedStartingPointConverges) {
+  for (const char* name : {"M", "B"}) {
+    Teuchos::ParameterList params = method("primal");
+    params.set("primal: starting point", "relaxed");
+    const Teuchos::ParameterList problem = shippedProblem(std::string("paper/") + name);
+    SolveResult r = InteriorPointSolver(params).solve(buildProblem(problem, Tpetra::getDefaultComm()).qp);
+    EXPECT_TRUE(r.converged()) << name << ": " << r.message;
+    EXPECT_LE(r.kkt.primalFeasibility, 1e-8) << name;
+    EXPECT_LT(relativeDifference(r.objective, referenceObjective(problem)), 1e-8) << name;
+  }
+}
+
+// Every forcing rule and the selectable Belos solvers reach the same solution.
+TEST(InteriorPoint, ForcingRulesAndKrylovSolversAreSelectable) {
+  const Teuchos::ParameterList problem = shippedProblem("paper/G");
+  AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+  const double reference = referenceObjective(problem);
+  for (const char* forcing : {"constant", "eisenstat-walker"})
+    for (const char* m : {"primal-dual", "primal"}) {
+      Teuchos::ParameterList params = method(m);
+      params.set("forcing: type", forcing);
+      params.set("forcing: eta", 0.01);
+      SolveResult r = InteriorPointSolver(params).solve(p.qp);
+      EXPECT_TRUE(r.converged()) << forcing << " " << m << ": " << r.message;
+      EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << forcing << " " << m;
+    }
+  for (const char* krylov : {"MINRES", "GMRES"}) {
+    Teuchos::ParameterList params = method("primal-dual");
+    params.sublist("Krylov").set("solver", krylov);
+    SolveResult r = InteriorPointSolver(params).solve(p.qp);
+    EXPECT_TRUE(r.converged()) << krylov << ": " << r.message;
+    EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << krylov;
+  }
+}
+
 TEST(InteriorPoint, IterationLimitIsReportedWithAHint) {
   Teuchos::ParameterList params = method("primal-dual");
   params.set("maximum iterations", 2);
