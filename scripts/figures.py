@@ -64,7 +64,7 @@ def figure3(ranks, work, outdir):
             x = mesh.points[:, :2] + scale * mesh.point_data["displacement"][:, :2]
             triangles = np.vstack([c.data[:, :3] for c in mesh.cells])
             ax.triplot(x[:, 0], x[:, 1], triangles, lw=0.3, color="0.4")
-            active = mesh.point_data["active"] > 0.5
+            active = mesh.point_data["active"].reshape(-1) > 0.5
             ax.plot(x[active, 0], x[active, 1], "o", color="crimson", ms=3)
         ax.axhline(0.0, color="k", lw=1.5)
         ax.set_aspect("equal")

@@ -45,6 +45,12 @@ void facetTractionLoad(const LagrangeBasis& basis, const double* vertexCoords, i
 
 // Cauchy stress sigma = lambda tr(eps) I + 2 mu eps at reference point xi, from the cell's local
 // displacement dofs: the full symmetric dim x dim tensor, row-major (in-plane part in 2D).
+// Lumped mass of local facet f (opposite local vertex f) by diagonal scaling (Hinton, Rock
+// and Zienkiewicz): w_a = |facet| M_aa / trace(M), M the facet's consistent mass matrix.
+// Positive on the facet's nodes for every degree (the row sums are not: P2 vertices of a
+// triangle get 0), zero elsewhere; the weights sum to the facet's measure.
+void facetLumpedMass(const LagrangeBasis& basis, const double* vertexCoords, int localFacet, std::vector<double>& w);
+
 void cellStress(const LagrangeBasis& basis, const double* vertexCoords, const IsotropicMaterial& material,
                 const double* localDisplacement, const double* xi, double* sigma);
 

@@ -125,6 +125,34 @@ std::vector<long long> contactNodeOrder(const DistributedSpace& ds, const Proble
   return nodes;
 }
 
+RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefinition& problem,
+                               const RCP<const Map>& constraintMap) {
+  const LagrangeSpace& space = ds.space();
+  const int dim = ds.dim(), npc = space.nodesPerCell();
+  auto weights = rcp(new Vector(constraintMap));
+  if (problem.contactBoundary.empty()) return weights;
+  Vector overlap(ds.overlapNodeMap()), owned(ds.ownedNodeMap());
+  std::vector<double> coords((dim + 1) * dim), w;
+  for (const auto& [cell, facet] : space.boundaryFacets(ds.mesh().tag(problem.contactBoundary))) {
+    if (!ds.isLocalCell(cell)) continue;
+    ds.mesh().cellVertexCoordinates(cell, coords.data());
+    facetLumpedMass(space.basis(), coords.data(), facet, w);
+    const long long* nodes = space.cellNodes(cell);
+    for (int a = 0; a < npc; ++a)
+      if (w[a] != 0.0) overlap.sumIntoGlobalValue(ds.globalNode(nodes[a]), w[a]);
+  }
+  owned.doExport(overlap, Export(ds.overlapNodeMap(), ds.ownedNodeMap()), Tpetra::ADD);
+  // Constraint k belongs to the k-th contact node, owned by the same rank.
+  const std::vector<long long> contactNodes = contactNodeOrder(ds, problem);
+  auto out = weights->getDataNonConst();
+  auto in = owned.getData();
+  for (std::size_t i = 0; i < constraintMap->getNodeNumElements(); ++i) {
+    const long long node = contactNodes[constraintMap->getGlobalElement(i)];
+    out[i] = in[ds.ownedNodeMap()->getLocalElement(ds.globalNode(node))];
+  }
+  return weights;
+}
+
 RCP<MultiVector> rigidBodyModes(const DistributedSpace& ds) {
   const int dim = ds.dim();
   const int numModes = dim == 2 ? 3 : 6;
@@ -166,8 +194,11 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   std::vector<double> vertexCoords((dim + 1) * dim), Ke, Fe, value(n);
   std::vector<char> fixed(n);
   std::vector<GlobalOrdinal> dofs(n);
+  // Expressions are evaluated at every quadrature point of every cell: skip the zero ones.
+  std::vector<char> zeroForce(dim);
+  for (int c = 0; c < dim; ++c) zeroForce[c] = problem.bodyForce[c].isConstantZero();
   const auto force = [&](const double* x, double* f) {
-    for (int c = 0; c < dim; ++c) f[c] = problem.bodyForce[c](x, dim);
+    for (int c = 0; c < dim; ++c) f[c] = zeroForce[c] ? 0.0 : problem.bodyForce[c](x, dim);
   };
   const auto gatherCell = [&](long long cell) {
     mesh.cellVertexCoordinates(cell, vertexCoords.data());

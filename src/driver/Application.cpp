@@ -144,28 +144,35 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::s
   p.qp.A->apply(*r.v, gap);
   gap.update(1.0, *p.qp.d, -1.0);
   const ActiveSetCriterion criterion(p.qp, *r.v, *r.lambda);
+  Vector pressure(cmap);  // -lambda_i / w_i
+  pressure.reciprocal(*contactNodeWeights(ds, p.definition, cmap));
+  pressure.elementWiseMultiply(-1.0, pressure, *r.lambda, 0.0);
   Import toWanted(cmap, wantedMap);
-  Vector lambdaHere(wantedMap), gapHere(wantedMap);
+  Vector lambdaHere(wantedMap), gapHere(wantedMap), pressureHere(wantedMap);
   lambdaHere.doImport(*r.lambda, toWanted, Tpetra::INSERT);
   gapHere.doImport(gap, toWanted, Tpetra::INSERT);
+  pressureHere.doImport(pressure, toWanted, Tpetra::INSERT);
 
-  NodeField displacement{"displacement", dim, {}}, force{"contact force", 1, {}}, gapField{"gap", 1, {}},
-      active{"active", 1, {}};
+  NodeField displacement{"displacement", dim, {}}, force{"contact force", 1, {}}, pressureField{"contact pressure", 1, {}},
+      gapField{"gap", 1, {}}, active{"active", 1, {}};
   auto ud = u.getData();
   displacement.values.assign(ud.begin(), ud.end());
   auto ld = lambdaHere.getData();
   auto gd = gapHere.getData();
+  auto pd = pressureHere.getData();
   std::size_t next = 0;
   for (long long node : overlap) {
     if (constraintOf[node] < 0) {
       force.values.push_back(0.0);
+      pressureField.values.push_back(0.0);
       gapField.values.push_back(0.0);
       active.values.push_back(0.0);
       continue;
     }
-    const double l = ld[next], g = gd[next];
+    const double l = ld[next], g = gd[next], pn = pd[next];
     ++next;
     force.values.push_back(-l);
+    pressureField.values.push_back(pn);
     gapField.values.push_back(g);
     active.values.push_back(criterion.isActive(l, g) ? 1.0 : 0.0);
   }
@@ -187,7 +194,7 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::s
     mises.values.push_back(vonMises(sigma.data(), dim, p.definition.material));
     rank.values.push_back(ds.comm()->getRank());
   }
-  writeVtu(ds, {displacement, force, gapField, active}, {mises, rank}, directory, "solution");
+  writeVtu(ds, {displacement, pressureField, force, gapField, active}, {mises, rank}, directory, "solution");
 }
 
 std::string shortest(double x) {

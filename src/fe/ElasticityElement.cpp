@@ -208,6 +208,29 @@ void integrateLoad(const LagrangeBasis& basis, const AffineMap& map, const LoadT
   }
 }
 
+// Surface measure factor of local facet f: the (d-1)-volume spanned by the facet's edge
+// vectors from its first vertex (length in 2D, twice the area in 3D, matching the reference
+// facet's weights).
+double facetMeasure(int d, const double* vertexCoords, int localFacet) {
+  double edge[2][3] = {};
+  const double* first = nullptr;
+  for (int v = 0, m = 0; v <= d; ++v) {
+    if (v == localFacet) continue;
+    const double* x = vertexCoords + v * d;
+    if (!first) {
+      first = x;
+      continue;
+    }
+    for (int j = 0; j < d; ++j) edge[m][j] = x[j] - first[j];
+    ++m;
+  }
+  if (d == 2) return std::hypot(edge[0][0], edge[0][1]);
+  const double cx = edge[0][1] * edge[1][2] - edge[0][2] * edge[1][1];
+  const double cy = edge[0][2] * edge[1][0] - edge[0][0] * edge[1][2];
+  const double cz = edge[0][0] * edge[1][1] - edge[0][1] * edge[1][0];
+  return std::sqrt(cx * cx + cy * cy + cz * cz);
+}
+
 }  // namespace
 
 double IsotropicMaterial::lame1() const {
@@ -258,29 +281,7 @@ void facetTractionLoad(const LagrangeBasis& basis, const double* vertexCoords, i
   if (localFacet < 0 || localFacet > d)
     throw Error("facet traction: local facet must be 0.." + std::to_string(d) + ", got " + std::to_string(localFacet));
   const AffineMap map(d, vertexCoords);
-  // Surface measure factor: the (d-1)-volume spanned by the facet's edge vectors from its
-  // first vertex (length in 2D, twice the area in 3D, matching the reference facet's weights).
-  double edge[2][3] = {};
-  const double* first = nullptr;
-  for (int v = 0, m = 0; v <= d; ++v) {
-    if (v == localFacet) continue;
-    const double* x = vertexCoords + v * d;
-    if (!first) {
-      first = x;
-      continue;
-    }
-    for (int j = 0; j < d; ++j) edge[m][j] = x[j] - first[j];
-    ++m;
-  }
-  double measure;
-  if (d == 2) {
-    measure = std::hypot(edge[0][0], edge[0][1]);
-  } else {
-    const double cx = edge[0][1] * edge[1][2] - edge[0][2] * edge[1][1];
-    const double cy = edge[0][2] * edge[1][0] - edge[0][0] * edge[1][2];
-    const double cz = edge[0][0] * edge[1][1] - edge[0][1] * edge[1][0];
-    measure = std::sqrt(cx * cx + cy * cy + cz * cz);
-  }
+  const double measure = facetMeasure(d, vertexCoords, localFacet);
   integrateLoad(basis, map, loadTabulation(basis, quadratureDegree, localFacet), measure, traction, Fe);
 }
 
@@ -305,6 +306,23 @@ void cellStress(const LagrangeBasis& basis, const double* vertexCoords, const Is
   for (int c = 0; c < d; ++c)
     for (int e = 0; e < d; ++e)
       sigma[c * d + e] = mu * (gradU[c][e] + gradU[e][c]) + (c == e ? lambda * trace : 0.0);
+}
+
+void facetLumpedMass(const LagrangeBasis& basis, const double* vertexCoords, int localFacet, std::vector<double>& w) {
+  const int d = basis.dim(), n = basis.size();
+  if (localFacet < 0 || localFacet > d)
+    throw Error("facet mass: local facet must be 0.." + std::to_string(d) + ", got " + std::to_string(localFacet));
+  const LoadTabulation& tab = loadTabulation(basis, 2 * basis.degree(), localFacet);
+  const double measure = facetMeasure(d, vertexCoords, localFacet);
+  std::vector<double> diagonal(n, 0.0);
+  double area = 0, trace = 0;
+  for (int q = 0; q < tab.size(); ++q) {
+    area += measure * tab.weights[q];
+    for (int a = 0; a < n; ++a) diagonal[a] += measure * tab.weights[q] * tab.phi[q * n + a] * tab.phi[q * n + a];
+  }
+  for (double m : diagonal) trace += m;
+  w.assign(n, 0.0);
+  for (int a = 0; a < n; ++a) w[a] = area * diagonal[a] / trace;
 }
 
 }  // namespace signorini

@@ -64,6 +64,9 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
   p.set("primal: fraction to boundary", 0.99, "sigma in (28): first trial step min(1, sigma alpha_bar)",
         range(0.5, 0.999999));
   p.set("primal: maximum inner iterations", 50, "Newton steps allowed per main iteration", range(1, 10000));
+  p.set("primal: extrapolation", true,
+        "Start each barrier subproblem with a predictor step along the central path, "
+        "H dv = (mu_k - mu_k+1) A^T (1/s) (not in the paper's Algorithm 3.1)");
   p.set("primal: starting point", "shift",
         "How the primal method makes the initial guess strictly feasible: \"shift\" moves it along "
         "A^T (exact when each constraint acts on its own unknowns, as contact constraints do); "

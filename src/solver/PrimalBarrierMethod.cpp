@@ -4,7 +4,9 @@
 // with inner truncated Newton loops to ||grad psi|| < zeta_k, Armijo backtracking from the
 // fraction-to-boundary step (28), zeta_{k+1} = delta zeta_k, mu_{k+1} = gamma_{k+1} mu_k and
 // the adaptive gamma of section 4. The initial guess is made strictly feasible by a shift
-// along A^T ("shift") or by the relaxed set S_varsigma of section 3.2 ("relaxed").
+// along A^T ("shift") or by the relaxed set S_varsigma of section 3.2 ("relaxed"). Beyond the
+// paper, each new barrier subproblem may start from a predictor step along the central path
+// ("primal: extrapolation", Fiacco and McCormick's extrapolation).
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -109,6 +111,7 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
   result.krylovIterations += scales.krylovIterations;
   const double margin = p.get<double>("primal: starting margin") * scales.displacement;
   const bool relaxed = p.get<std::string>("primal: starting point") == "relaxed";
+  const bool extrapolate = p.get<bool>("primal: extrapolation");
   if (!relaxed) shiftIntoInterior(qp, *v, margin);
 
   const double tol = p.get<double>("kkt: tolerance");
@@ -271,15 +274,46 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
         gamma = std::min(gammaMax, gammaIncrease * gamma);
       }
     }
+    const double previousMu = mu;
     mu *= gamma;
-    if (varsigma > 0) {
-      // Shrink the relaxation at the rate of mu, but never by more than 90% of the smallest
-      // slack, so the iterate stays strictly inside.
-      const double floorByIterate = varsigma - 0.9 * globalMin(s);
-      double next = std::max(gamma * varsigma, floorByIterate);
-      if (next < 1e-3 * tol * scales.displacement && floorByIterate <= 0) next = 0;
+    // The relaxation of S_varsigma shrinks with mu.
+    const double dvarsigma = varsigma * (gamma - 1.0);
+    if (extrapolate) {
+      // Predictor along the central path: differentiating grad psi = 0 with s = d + varsigma - A v,
+      // H dv = -(dmu) A^T (1/s) + mu A^T (dvarsigma / s^2), so the next subproblem starts near
+      // its solution instead of where the old one ended.
+      {
+        auto sd = s.getData();
+        auto dd = D.getDataNonConst();
+        auto wd = y.getDataNonConst();
+        for (std::size_t i = 0; i < s.getLocalLength(); ++i) {
+          dd[i] = previousMu / (sd[i] * sd[i]);
+          wd[i] = (previousMu - mu) / sd[i] + previousMu * dvarsigma / (sd[i] * sd[i]);
+        }
+      }
+      newton.setWeights(D);
+      qp.A->apply(y, rhs, Teuchos::TRANS);
+      const KrylovResult kr = newton.solve(rhs, dv, std::max(forcing.floor, 0.01 * rhs.norm2()));
+      ++result.newtonSteps;
+      result.krylovIterations += kr.iterations;
+      result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, kr.iterations);
+      qp.A->apply(dv, Adv);
+      minusAdv.putScalar(dvarsigma);  // the slack's change: dvarsigma - A dv
+      minusAdv.update(-1.0, Adv, 1.0);
+      const double alpha = std::min(1.0, ftb * maxStepToBoundary(s, minusAdv));
+      v->update(alpha, dv, 1.0);
+      s.update(alpha, minusAdv, 1.0);
+      varsigma += alpha * dvarsigma;
+    } else if (varsigma > 0) {
+      // Without the predictor, shrink the relaxation by at most 90% of the smallest slack,
+      // so the iterate stays strictly inside.
+      const double next = std::max(varsigma + dvarsigma, varsigma - 0.9 * globalMin(s));
       shiftAll(s, next - varsigma);
       varsigma = next;
+    }
+    if (varsigma > 0 && varsigma < 1e-3 * tol * scales.displacement && globalMin(s) > 2 * varsigma) {
+      shiftAll(s, -varsigma);  // close enough: back to the original constraints
+      varsigma = 0;
     }
     // Below the stationarity the KKT target asks for, a tighter inner loop buys nothing.
     zeta = std::max(delta * zeta, 0.1 * tol * bnorm);
