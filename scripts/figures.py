@@ -41,7 +41,7 @@ def figure2(ranks, work, outdir):
         inner = s["inner_iterations"]
         ax.plot(range(1, len(inner) + 1), inner, marker=marker, label=f"{problem} (n = {s['n']})")
     ax.set_xlabel("main iteration")
-    ax.set_ylabel("inner iterations")
+    ax.set_ylabel("inner Newton iterations\n(after the predictor step)")
     ax.set_title("Primal method: Newton steps per barrier subproblem")
     ax.legend()
     ax.grid(alpha=0.3)
@@ -52,7 +52,7 @@ def figure2(ranks, work, outdir):
 
 
 def figure3(ranks, work, outdir):
-    fig, axes = plt.subplots(1, 4, figsize=(16, 4.4))
+    fig, axes = plt.subplots(1, 4, figsize=(16, 4.8))
     for ax, problem in zip(axes, "MGKJ"):
         out = os.path.join(work, problem + "-pd")
         s = run(problem, "primal-dual", ranks, out)
@@ -68,8 +68,8 @@ def figure3(ranks, work, outdir):
             ax.plot(x[active, 0], x[active, 1], "o", color="crimson", ms=3)
         ax.axhline(0.0, color="k", lw=1.5)
         ax.set_aspect("equal")
-        ax.set_title(f"{problem}: nx = {s['nx']}, {s['active_constraints']} active nodes\n"
-                     f"displacement x{scale:.0f}")
+        ax.set_title(f"{problem}: nx = {s['nx']}, {s['active_constraints']} active nodes, u x{scale:.0f}",
+                     fontsize=10)
         ax.set_xlim(-0.05, 1.05)
         ax.axis("off")
     fig.tight_layout()

@@ -242,9 +242,8 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
       lambda.reciprocal(s);
       lambda.scale(-mu);
       record.kkt = kktMeasures(qp, *v, lambda);
-      Vector Qvn(vmap);
-      qp.Q->apply(*v, Qvn);
-      record.objective = objective(qp, *v, Qvn);
+      Qv.update(alpha, Qdv, 1.0);  // Q v at the new point, without another operator application
+      record.objective = objective(qp, *v, Qv);
       record.seconds = timer.totalElapsedTime(true);
       result.history.push_back(record);
       observer.onNewtonStep(record);

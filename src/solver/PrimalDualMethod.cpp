@@ -65,8 +65,8 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
   const double muFactor = p.get<double>("primal-dual: mu factor");
   const double armijo = p.get<double>("primal-dual: armijo");
 
-  Vector Qv(vmap), rd(vmap), rhs(vmap), dv(vmap), t(vmap), lambda(cmap), rp(cmap), rc(cmap), u(cmap), Adv(cmap),
-      ds(cmap), dy(cmap);
+  Vector Qv(vmap), rd(vmap), rhs(vmap), dv(vmap), t(vmap), trial(vmap), lambda(cmap), rp(cmap), rc(cmap), u(cmap),
+      Adv(cmap), ds(cmap), dy(cmap), sAffine(cmap), yAffine(cmap);
   NewtonStepRecord pending;
   bool havePending = false;
   double mu = 0;
@@ -169,10 +169,9 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
       const double ap = std::min(1.0, maxStepToBoundary(s, ds)), ad = std::min(1.0, maxStepToBoundary(y, dy));
       double muAffine = 0;
       if (m > 0) {
-        Vector sa(s, Teuchos::Copy), ya(y, Teuchos::Copy);
-        sa.update(ap, ds, 1.0);
-        ya.update(ad, dy, 1.0);
-        muAffine = sa.dot(ya) / m;
+        sAffine.update(1.0, s, ap, ds, 0.0);
+        yAffine.update(1.0, y, ad, dy, 0.0);
+        muAffine = sAffine.dot(yAffine) / m;
       }
       const double sigma = mu > 0 ? std::pow(muAffine / mu, 3) : 0.0;
       muTarget = sigma * mu;
@@ -210,9 +209,8 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
       qp.Q->apply(dv, t);
       qp.A->apply(dy, t, Teuchos::TRANS, 1.0, 1.0);
       auto phi = [&](double a) {
-        Vector r1(rd, Teuchos::Copy);
-        r1.update(a, t, 1.0);
-        double value = r1.dot(r1) + (1 - a) * (1 - a) * rp.dot(rp);
+        trial.update(1.0, rd, a, t, 0.0);
+        double value = trial.dot(trial) + (1 - a) * (1 - a) * rp.dot(rp);
         double local = 0;
         auto sd = s.getData();
         auto yd = y.getData();
