@@ -3,6 +3,7 @@
 sequences of the benchmark family (issue: Krylov iterations independent of mesh size and mu).
 
     /usr/bin/python3 bench/preconditioners.py [--ranks N] [--sequence 2d|3d|all] [--max-nx N]
+                                              [--max-nx-3d N] [--reuse]
 
 For every (problem, preconditioner) pair it runs build/bin/signorini, reads summary.json and
 history.csv, and writes bench/results/preconditioners.json; then bench/results/
@@ -31,10 +32,9 @@ SEQUENCES = {
 }
 
 
-def run(xml, option, ranks, out):
-    cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"), os.path.join(ROOT, "xml", xml + ".xml"),
-           "--output", out, "--set", "Solver/Preconditioner/type=" + option, "--set", "Output/write solution=false"]
-    subprocess.run(cmd, env=ENV, stdout=subprocess.DEVNULL, check=False)
+def run(xml, option, ranks, out, reuse):
+    if not (reuse and os.path.exists(os.path.join(out, "summary.json"))):
+        run_signorini(xml, option, ranks, out)
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
     with open(os.path.join(out, "history.csv")) as f:
@@ -42,22 +42,30 @@ def run(xml, option, ranks, out):
     return summary, history
 
 
+def run_signorini(xml, option, ranks, out):
+    cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"), os.path.join(ROOT, "xml", xml + ".xml"),
+           "--output", out, "--set", "Solver/Preconditioner/type=" + option, "--set", "Output/write solution=false"]
+    subprocess.run(cmd, env=ENV, stdout=subprocess.DEVNULL, check=False)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--ranks", type=int, default=1)
     parser.add_argument("--sequence", default="all")
     parser.add_argument("--max-nx", type=int, default=10**9)
+    parser.add_argument("--max-nx-3d", type=int, default=10**9)
+    parser.add_argument("--reuse", action="store_true", help="reuse the outputs of earlier runs in the workdir")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "preconditioners"))
     args = parser.parse_args()
     names = ["2d", "3d"] if args.sequence == "all" else [args.sequence]
     records = []
     for name in names:
         for xml, nx in SEQUENCES[name]:
-            if nx > args.max_nx:
+            if nx > (args.max_nx_3d if name == "3d" else args.max_nx):
                 continue
             for option in OPTIONS:
                 out = os.path.join(args.workdir, xml.replace("/", "-") + "-" + option.replace(" ", "-"))
-                summary, history = run(xml, option, args.ranks, out)
+                summary, history = run(xml, option, args.ranks, out, args.reuse)
                 records.append({"sequence": name, "problem": xml, "nx": nx, "preconditioner": option,
                                 "ranks": args.ranks, "summary": summary, "history": history})
                 print(f"{name} nx={nx:4d} {option:9s}: it {summary['outer_iterations']:3d}, "

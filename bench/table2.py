@@ -3,9 +3,10 @@
 results next to the paper's Table 2 (Tanoh, Renard, Noll).
 
     python3 bench/table2.py [--ranks N] [--methods primal-dual,primal] [--problems A,B,...]
+                            [--set "Solver/name=value" ...] [--name table2]
 
-Writes bench/results/table2.json (every summary.json, plus the paper's row) and
-bench/results/table2.md (the Markdown table), and prints the table. The paper's problems
+Writes bench/results/<name>.json (every summary.json, plus the paper's row) and
+bench/results/<name>.md (the Markdown table), and prints the table. The paper's problems
 used loads it does not print, so its optimal values are not comparable to ours; its
 counters and times (Fortran 90, 2003 hardware) are.
 """
@@ -35,13 +36,15 @@ PAPER = {
 }
 
 
-def run(problem, method, ranks, workdir):
+def run(problem, method, ranks, workdir, extra):
     out = os.path.join(workdir, f"{problem}-{method}-np{ranks}")
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
     cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"),
            os.path.join(ROOT, "xml/paper", problem + ".xml"), "--output", out,
            "--set", "Solver/method=" + method, "--set", "Output/write solution=false"]
+    for assignment in extra:
+        cmd += ["--set", assignment]
     subprocess.run(cmd, env=env, stdout=subprocess.DEVNULL, check=False)
     with open(os.path.join(out, "summary.json")) as f:
         return json.load(f)
@@ -56,8 +59,12 @@ def main():
     parser.add_argument("--ranks", type=int, default=1)
     parser.add_argument("--methods", default="primal-dual,primal")
     parser.add_argument("--problems", default=",".join(PAPER))
-    parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "table2"))
+    parser.add_argument("--set", action="append", default=[], dest="extra",
+                        help="extra parameter override for every run, as signorini --set takes it")
+    parser.add_argument("--name", default="table2", help="basename of the files in bench/results")
+    parser.add_argument("--workdir", default=None)
     args = parser.parse_args()
+    workdir = args.workdir or os.path.join(ROOT, "results", args.name)
 
     rows, records = [], []
     header = ("| problem | n | m | method | ngr | nfc | it | Newton | Krylov | optimal value | time [s] "
@@ -67,7 +74,7 @@ def main():
     for problem in args.problems.split(","):
         paper = PAPER[problem]
         for method in args.methods.split(","):
-            s = run(problem, method, args.ranks, args.workdir)
+            s = run(problem, method, args.ranks, workdir, args.extra)
             records.append({"summary": s, "paper": dict(zip(
                 ["n", "m", "ngr", "nfc", "it", "optimal_value", "cpu_seconds"], paper))})
             status = "" if s["converged"] else f" ({s['status']})"
@@ -78,9 +85,9 @@ def main():
                 f"{cell(paper[2])} | {cell(paper[3])} | {cell(paper[4])} | {cell(paper[6])} |")
             print(rows[-1], flush=True)
     os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
-    with open(os.path.join(ROOT, "bench", "results", "table2.json"), "w") as f:
-        json.dump({"ranks": args.ranks, "runs": records}, f, indent=1)
-    with open(os.path.join(ROOT, "bench", "results", "table2.md"), "w") as f:
+    with open(os.path.join(ROOT, "bench", "results", args.name + ".json"), "w") as f:
+        json.dump({"ranks": args.ranks, "overrides": args.extra, "runs": records}, f, indent=1)
+    with open(os.path.join(ROOT, "bench", "results", args.name + ".md"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("\n".join(rows))
 
