@@ -178,7 +178,13 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   int lines = 0;
   for (std::string line; std::getline(history, line);) ++lines;
   EXPECT_EQ(lines, static_cast<int>(r.history.size()) + 1);
-  EXPECT_TRUE(std::filesystem::exists(dir + "/out/solution.pvtu"));
+  // ParaView output: one piece per rank with the named fields (tests/io checks their values).
+  const std::string pvtu = readFile(dir + "/out/solution.pvtu");
+  for (const char* field : {"displacement", "contact pressure", "contact force", "gap", "active", "von Mises stress",
+                            "rank"})
+    EXPECT_NE(pvtu.find(std::string("Name=\"") + field + "\""), std::string::npos) << field;
+  for (int r = 0; r < comm->getSize(); ++r)
+    EXPECT_TRUE(std::filesystem::exists(dir + "/out/solution_" + std::to_string(r) + ".vtu")) << r;
   for (const char* file : {"Q.mtx", "b.mtx", "A.mtx", "d.mtx", "coords.mtx"})
     EXPECT_TRUE(std::filesystem::exists(dir + "/qp/" + file)) << file;
   // The log has the table header and the final status line.

@@ -1,8 +1,8 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Runs problems A-M of the benchmark family with both interior point methods and puts the
 results next to the paper's Table 2 (Tanoh, Renard, Noll).
 
-    python3 bench/table2.py [--ranks N] [--methods primal-dual,primal] [--problems A,B,...]
+    /usr/bin/python3 scripts/table2.py [--ranks N] [--methods primal-dual,primal] [--problems A,B,...]
                             [--set "Solver/name=value" ...] [--name table2]
 
 Writes bench/results/<name>.json (every summary.json, plus the paper's row) and
@@ -16,7 +16,7 @@ import os
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # the repository
 
 # Table 2 of the paper: n, m, ngr, nfc, it, optimal value, cpu seconds (F: not solved).
 PAPER = {
