@@ -14,6 +14,7 @@ struct RunSummary {
   long long nx = 0, n = 0, m = 0;
   const SolveResult* result = nullptr;
   double setupSeconds = 0, assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;  // max over ranks
+  double peakMemoryMiBMaxRank = 0, peakMemoryMiBAllRanks = 0;  // peak resident set size
 };
 
 void writeSummaryJson(const RunSummary& summary, const std::string& path);

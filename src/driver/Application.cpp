@@ -1,5 +1,7 @@
 #include "signorini/Application.hpp"
 
+#include <sys/resource.h>
+
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -374,6 +376,11 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     summary.assemblySeconds = problem.assemblySeconds;
     summary.solveSeconds = maxOverRanks(*comm, solveTime.totalElapsedTime());
     summary.totalSeconds = maxOverRanks(*comm, total.totalElapsedTime());
+    rusage usage;
+    getrusage(RUSAGE_SELF, &usage);
+    const double rss = usage.ru_maxrss / 1024.0;  // Linux reports KiB
+    summary.peakMemoryMiBMaxRank = maxOverRanks(*comm, rss);
+    Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &rss, &summary.peakMemoryMiBAllRanks);
     if (root) {
       writeSummaryJson(summary, directory + "/summary.json");
       if (!cl.summary.empty()) writeSummaryJson(summary, cl.summary);

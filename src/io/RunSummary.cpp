@@ -82,6 +82,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     << "  \"inner_iterations\": [";
   for (std::size_t i = 0; i < r.innerIterations.size(); ++i) j << (i ? ", " : "") << r.innerIterations[i];
   j << "],\n"
+    << "  \"memory_mib\": {\"max_rank\": " << number(s.peakMemoryMiBMaxRank)
+    << ", \"all_ranks\": " << number(s.peakMemoryMiBAllRanks) << "},\n"
     << "  \"time\": {\"setup\": " << number(s.setupSeconds) << ", \"assembly\": " << number(s.assemblySeconds)
     << ", \"solve\": " << number(s.solveSeconds) << ", \"total\": " << number(s.totalSeconds) << "}\n"
     << "}\n";

@@ -173,6 +173,7 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_TRUE(has("\"converged\": true"));
   EXPECT_TRUE(has("\"ranks\": " + std::to_string(comm->getSize()) + ","));
   EXPECT_TRUE(has("\"time\": {\"setup\": "));
+  EXPECT_TRUE(has("\"memory_mib\": {\"max_rank\": "));
   // One history row per Newton step record, plus the header.
   std::ifstream history(dir + "/out/history.csv");
   int lines = 0;
