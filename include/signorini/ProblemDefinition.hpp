@@ -13,7 +13,7 @@
 
 namespace signorini {
 
-// A vector field on a named boundary; absent components are left free.
+// A vector field on a named boundary; absent components are free (Dirichlet) or zero (traction).
 struct BoundaryField {
   std::string boundary;
   std::vector<std::optional<Expression>> components;  // dim entries

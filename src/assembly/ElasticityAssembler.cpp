@@ -225,7 +225,7 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   }
   for (const BoundaryField& bc : problem.traction) {
     const auto traction = [&](const double* x, double* t) {
-      for (int c = 0; c < dim; ++c) t[c] = (*bc.components[c])(x, dim);
+      for (int c = 0; c < dim; ++c) t[c] = bc.components[c] ? (*bc.components[c])(x, dim) : 0.0;
     };
     for (const auto& [cell, facet] : space.boundaryFacets(mesh.tag(bc.boundary))) {
       if (!ds.isLocalCell(cell)) continue;

@@ -31,6 +31,11 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
+std::string kktJson(double stationarity, double complementarity, double primal, double dual) {
+  return "{\"stationarity\": " + number(stationarity) + ", \"complementarity\": " + number(complementarity) +
+         ", \"primal_feasibility\": " + number(primal) + ", \"dual_feasibility\": " + number(dual) + "}";
+}
+
 }  // namespace
 
 void writeFileAtomically(const std::string& path, const std::string& text) {
@@ -71,14 +76,10 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     << "  \"max_krylov_per_newton\": " << r.maxKrylovPerNewton << ",\n"
     << "  \"objective\": " << number(r.objective) << ",\n"
     << "  \"active_constraints\": " << r.activeConstraints << ",\n"
-    << "  \"kkt\": {\"stationarity\": " << number(r.kkt.stationarity)
-    << ", \"complementarity\": " << number(r.kkt.complementarity)
-    << ", \"primal_feasibility\": " << number(r.kkt.primalFeasibility)
-    << ", \"dual_feasibility\": " << number(r.kkt.dualFeasibility) << "},\n"
-    << "  \"kkt_absolute\": {\"stationarity\": " << number(r.kkt.stationarityAbs)
-    << ", \"complementarity\": " << number(r.kkt.complementarityAbs)
-    << ", \"primal_feasibility\": " << number(r.kkt.primalFeasibilityAbs)
-    << ", \"dual_feasibility\": " << number(r.kkt.dualFeasibilityAbs) << "},\n"
+    << "  \"kkt\": " << kktJson(r.kkt.stationarity, r.kkt.complementarity, r.kkt.primalFeasibility,
+                                  r.kkt.dualFeasibility) << ",\n"
+    << "  \"kkt_absolute\": " << kktJson(r.kkt.stationarityAbs, r.kkt.complementarityAbs,
+                                           r.kkt.primalFeasibilityAbs, r.kkt.dualFeasibilityAbs) << ",\n"
     << "  \"inner_iterations\": [";
   for (std::size_t i = 0; i < r.innerIterations.size(); ++i) j << (i ? ", " : "") << r.innerIterations[i];
   j << "],\n"

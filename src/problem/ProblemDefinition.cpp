@@ -38,6 +38,27 @@ std::string formatGap(double g0, const Array<double>& center, double radius, int
   return e.str();
 }
 
+// One BoundaryField per sublist of `group` (named after its boundary), components read from
+// "<prefix>x", "<prefix>y"(, "<prefix>z"); an empty expression leaves the component free.
+std::vector<BoundaryField> boundaryFields(const ParameterList& problem, const std::string& group,
+                                          const std::string& prefix, int dim) {
+  std::vector<BoundaryField> fields;
+  const ParameterList& list = problem.sublist(group);
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const ParameterList& bc = list.sublist(list.name(it));
+    BoundaryField field{list.name(it), {}};
+    for (int i = 0; i < dim; ++i) {
+      const std::string name = prefix + kAxes[i], text = bc.get<std::string>(name);
+      if (text.empty())
+        field.components.emplace_back(std::nullopt);
+      else
+        field.components.emplace_back(Expression(text, "Problem/" + group + "/" + field.boundary + "/" + name));
+    }
+    fields.push_back(std::move(field));
+  }
+  return fields;
+}
+
 }  // namespace
 
 ParameterList ProblemDefinition::validParameters() {
@@ -128,31 +149,8 @@ ProblemDefinition ProblemDefinition::fromParameters(const ParameterList& user, i
   const int q = p.get<int>("load: quadrature degree");
   def.loadQuadratureDegree = q < 0 ? def.degree + 4 : q;
 
-  const ParameterList& dirichlet = p.sublist("Dirichlet");
-  for (auto it = dirichlet.begin(); it != dirichlet.end(); ++it) {
-    const ParameterList& bc = dirichlet.sublist(dirichlet.name(it));
-    BoundaryField field{dirichlet.name(it), {}};
-    for (int i = 0; i < dim; ++i) {
-      std::string name = std::string("displacement: ") + kAxes[i];
-      std::string text = bc.get<std::string>(name);
-      if (text.empty())
-        field.components.emplace_back(std::nullopt);
-      else
-        field.components.emplace_back(Expression(text, "Problem/Dirichlet/" + field.boundary + "/" + name));
-    }
-    def.dirichlet.push_back(std::move(field));
-  }
-  const ParameterList& traction = p.sublist("Traction");
-  for (auto it = traction.begin(); it != traction.end(); ++it) {
-    const ParameterList& bc = traction.sublist(traction.name(it));
-    BoundaryField field{traction.name(it), {}};
-    for (int i = 0; i < dim; ++i) {
-      std::string name = std::string("traction: ") + kAxes[i];
-      field.components.emplace_back(
-          Expression(bc.get<std::string>(name), "Problem/Traction/" + field.boundary + "/" + name));
-    }
-    def.traction.push_back(std::move(field));
-  }
+  def.dirichlet = boundaryFields(p, "Dirichlet", "displacement: ", dim);
+  def.traction = boundaryFields(p, "Traction", "traction: ", dim);
 
   const ParameterList& contact = p.sublist("Contact");
   def.contactBoundary = contact.get<std::string>("boundary");
