@@ -1,14 +1,20 @@
 #!/usr/bin/python3
-"""Krylov iterations per Newton step against mu, for each preconditioner option, on
+"""Krylov iterations per Newton step against mu, for each preconditioner configuration, on
 sequences of the benchmark family (issue: Krylov iterations independent of mesh size and mu).
 
     /usr/bin/python3 bench/preconditioners.py [--ranks N] [--sequence 2d|3d|all] [--max-nx N]
-                                              [--max-nx-3d N] [--reuse]
+        [--max-nx-3d N] [--configs NAME,...] [--forcing adaptive|relative|both] [--reuse]
 
-For every (problem, preconditioner) pair it runs build/bin/signorini, reads summary.json and
-history.csv, and writes bench/results/preconditioners.json; then bench/results/
-preconditioners.png (Krylov iterations per Newton step against mu, one panel per option)
-and a Markdown table of the largest and total Krylov counts per solve.
+For every (problem, configuration, forcing) it runs build/bin/signorini, reads summary.json
+and history.csv, and writes into bench/results: preconditioners.json (every run, with its
+per-step history), preconditioners.md (one row per run, then the issue's three ratios per
+configuration and sequence) and preconditioners.png (Krylov iterations per Newton step
+against mu, one panel per sequence and configuration).
+
+Forcing "adaptive" is the solver's default: the Krylov tolerance follows mu, so the counts
+also measure how much accuracy each step asks for. Forcing "relative" solves every Newton
+system to the same relative residual (1e-8): the same linear problem at every mu, which
+isolates the preconditioner's dependence on mu and on the mesh.
 """
 import argparse
 import csv
@@ -24,7 +30,22 @@ import matplotlib.pyplot as plt  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
-OPTIONS = ["amg of Q", "amg of H"]
+P = "Solver/Preconditioner/"
+CONFIGS = {
+    "amg of Q": {P + "type": "amg of Q", P + "contact correction": "none"},
+    "amg of H": {P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0", P + "contact correction": "none"},
+    "amg of H + additive": {P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0",
+                            P + "contact correction": "additive"},
+    "amg of H + multiplicative": {P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0",
+                                  P + "contact correction": "multiplicative"},
+    "amg of Q + multiplicative": {P + "type": "amg of Q", P + "contact correction": "multiplicative"},
+    "lagged amg of H + multiplicative": {P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0.9",
+                                         P + "contact correction": "multiplicative"},
+}
+FORCING = {
+    "adaptive": {},
+    "relative": {"Solver/forcing: type": "relative", "Solver/forcing: eta": "1e-8"},
+}
 SEQUENCES = {
     "2d": [("paper/M", 10), ("paper/G", 20), ("paper/K", 50), ("paper/J", 100), ("family/2d-p1-nx200", 200),
            ("family/2d-p1-nx400", 400), ("family/2d-p1-nx800", 800)],
@@ -32,9 +53,13 @@ SEQUENCES = {
 }
 
 
-def run(xml, option, ranks, out, reuse):
+def run(xml, settings, ranks, out, reuse):
     if not (reuse and os.path.exists(os.path.join(out, "summary.json"))):
-        run_signorini(xml, option, ranks, out)
+        cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"),
+               os.path.join(ROOT, "xml", xml + ".xml"), "--output", out, "--set", "Output/write solution=false"]
+        for key, value in settings.items():
+            cmd += ["--set", f"{key}={value}"]
+        subprocess.run(cmd, env=ENV, stdout=subprocess.DEVNULL, check=False)
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
     with open(os.path.join(out, "history.csv")) as f:
@@ -42,66 +67,93 @@ def run(xml, option, ranks, out, reuse):
     return summary, history
 
 
-def run_signorini(xml, option, ranks, out):
-    cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"), os.path.join(ROOT, "xml", xml + ".xml"),
-           "--output", out, "--set", "Solver/Preconditioner/type=" + option, "--set", "Output/write solution=false"]
-    subprocess.run(cmd, env=ENV, stdout=subprocess.DEVNULL, check=False)
+def ratios(records):
+    """The issue's measures over one sequence: spread of the largest count per Newton system,
+    spread of the totals, and last over first Newton step (largest over the sequence)."""
+    maxima = [r["summary"]["max_krylov_per_newton"] for r in records]
+    totals = [r["summary"]["krylov_iterations"] for r in records]
+    last_first = [r["history"][-1]["krylov"] / max(r["history"][0]["krylov"], 1) for r in records]
+    return max(maxima) / max(min(maxima), 1), max(totals) / max(min(totals), 1), max(last_first)
 
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("--ranks", type=int, default=1)
+    parser.add_argument("--ranks", type=int, default=2)
     parser.add_argument("--sequence", default="all")
     parser.add_argument("--max-nx", type=int, default=10**9)
     parser.add_argument("--max-nx-3d", type=int, default=10**9)
+    parser.add_argument("--configs", default=",".join(CONFIGS), help="comma-separated names of CONFIGS")
+    parser.add_argument("--forcing", default="both", choices=["adaptive", "relative", "both"])
     parser.add_argument("--reuse", action="store_true", help="reuse the outputs of earlier runs in the workdir")
+    parser.add_argument("--output", default=os.path.join(ROOT, "bench", "results"), help="where results go")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "preconditioners"))
     args = parser.parse_args()
     names = ["2d", "3d"] if args.sequence == "all" else [args.sequence]
+    configs = [c for c in args.configs.split(",") if c]
+    for c in configs:
+        if c not in CONFIGS:
+            parser.error(f"unknown configuration {c!r}; known: {', '.join(CONFIGS)}")
+    forcings = list(FORCING) if args.forcing == "both" else [args.forcing]
     records = []
     for name in names:
         for xml, nx in SEQUENCES[name]:
             if nx > (args.max_nx_3d if name == "3d" else args.max_nx):
                 continue
-            for option in OPTIONS:
-                out = os.path.join(args.workdir, xml.replace("/", "-") + "-" + option.replace(" ", "-"))
-                summary, history = run(xml, option, args.ranks, out, args.reuse)
-                records.append({"sequence": name, "problem": xml, "nx": nx, "preconditioner": option,
-                                "ranks": args.ranks, "summary": summary, "history": history})
-                print(f"{name} nx={nx:4d} {option:9s}: it {summary['outer_iterations']:3d}, "
-                      f"Krylov total {summary['krylov_iterations']:5d}, max/step {summary['max_krylov_per_newton']:4d}, "
-                      f"solve {summary['time']['solve']:.2f} s, {summary['status']}", flush=True)
-    os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
-    with open(os.path.join(ROOT, "bench", "results", "preconditioners.json"), "w") as f:
+            for config in configs:
+                for forcing in forcings:
+                    out = os.path.join(args.workdir, "-".join([xml.replace("/", "-"), config.replace(" ", "-"), forcing]))
+                    summary, history = run(xml, {**CONFIGS[config], **FORCING[forcing]}, args.ranks, out, args.reuse)
+                    records.append({"sequence": name, "problem": xml, "nx": nx, "config": config, "forcing": forcing,
+                                    "ranks": args.ranks, "summary": summary, "history": history})
+                    print(f"{name} nx={nx:4d} {config:33s} {forcing:8s}: it {summary['outer_iterations']:3d}, "
+                          f"Krylov total {summary['krylov_iterations']:5d}, "
+                          f"max/system {summary['max_krylov_per_newton']:4d}, setups {summary['preconditioner_setups']}, "
+                          f"solve {summary['time']['solve']:.2f} s, {summary['status']}", flush=True)
+    os.makedirs(args.output, exist_ok=True)
+    with open(os.path.join(args.output, "preconditioners.json"), "w") as f:
         json.dump(records, f, indent=1)
 
-    rows = ["| sequence | nx | n | preconditioner | it | Krylov total | max Krylov per Newton step | first / last step | solve [s] |",
-            "|---|---|---|---|---|---|---|---|---|"]
+    rows = ["| sequence | nx | n | configuration | forcing | it | Krylov total | max per Newton system | "
+            "first / last Newton step | AMG setups | solve [s] |", "|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in records:
         s, h = r["summary"], r["history"]
-        rows.append(f"| {r['sequence']} | {r['nx']} | {s['n']} | {r['preconditioner']} | {s['outer_iterations']} | "
+        rows.append(f"| {r['sequence']} | {r['nx']} | {s['n']} | {r['config']} | {r['forcing']} | {s['outer_iterations']} | "
                     f"{s['krylov_iterations']} | {s['max_krylov_per_newton']} | {h[0]['krylov']} / {h[-1]['krylov']} | "
-                    f"{s['time']['solve']:.2f} |")
-    with open(os.path.join(ROOT, "bench", "results", "preconditioners.md"), "w") as f:
+                    f"{s['preconditioner_setups']} | {s['time']['solve']:.2f} |")
+    rows += ["", "Ratios over each sequence (issue targets: 1.5, 2, 1.5); a Newton step of the primal-dual "
+             "method solves two systems (predictor and corrector).", "",
+             "| sequence | nx range | configuration | forcing | max per system: max / min | total: max / min | "
+             "last / first step (worst) |", "|---|---|---|---|---|---|---|"]
+    for name in names:
+        for config in configs:
+            for forcing in forcings:
+                group = [r for r in records if r["sequence"] == name and r["config"] == config and r["forcing"] == forcing]
+                if len(group) < 2:
+                    continue
+                a, b, c = ratios(group)
+                rows.append(f"| {name} | {group[0]['nx']}–{group[-1]['nx']} | {config} | {forcing} | {a:.2f} | {b:.2f} | {c:.2f} |")
+    with open(os.path.join(args.output, "preconditioners.md"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("\n".join(rows))
 
-    fig, axes = plt.subplots(len(names), len(OPTIONS), figsize=(6 * len(OPTIONS), 4 * len(names)), squeeze=False)
+    cols = len(configs)
+    fig, axes = plt.subplots(len(names), cols, figsize=(4.5 * cols, 3.8 * len(names)), squeeze=False)
     for i, name in enumerate(names):
-        for j, option in enumerate(OPTIONS):
+        for j, config in enumerate(configs):
             ax = axes[i][j]
             for r in records:
-                if r["sequence"] == name and r["preconditioner"] == option:
-                    ax.loglog([h["mu"] for h in r["history"]], [max(h["krylov"], 1) for h in r["history"]], "o-",
-                              ms=3, label=f"nx = {r['nx']}")
+                if r["sequence"] == name and r["config"] == config:
+                    style = "o-" if r["forcing"] == "adaptive" else "s--"
+                    ax.loglog([h["mu"] for h in r["history"]], [max(h["krylov"], 1) for h in r["history"]], style,
+                              ms=3, label=f"nx = {r['nx']}, {r['forcing']}")
             ax.invert_xaxis()
             ax.set_xlabel("mu (target of the Newton step)")
             ax.set_ylabel("Krylov iterations per Newton step")
-            ax.set_title(f"{name.upper()} P1, {option}")
-            ax.legend(fontsize=8)
+            ax.set_title(f"{name.upper()} P1, {config}", fontsize=9)
+            ax.legend(fontsize=6)
             ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(ROOT, "bench", "results", "preconditioners.png"), dpi=110)
+    fig.savefig(os.path.join(args.output, "preconditioners.png"), dpi=100)
 
 
 if __name__ == "__main__":

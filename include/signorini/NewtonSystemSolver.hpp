@@ -5,13 +5,16 @@
 //   "none";
 //   "amg of Q":  MueLu on Q, set up once and reused for every step;
 //   "amg of H":  MueLu on the assembled Q + A^T D A (assembled for the preconditioner only),
-//                rebuilt each step, with MueLu's "reuse: type" if the MueLu list sets it.
+//                rebuilt each step, with MueLu's "reuse: type" if the MueLu list sets it;
+// and its "contact correction": the AMG combined with an exact solve on the contact DOFs
+// (see SubspaceCorrectedPreconditioner), "none", "additive" or "multiplicative".
 #include <memory>
 
 #include <Teuchos_ParameterList.hpp>
 
 #include "signorini/BarrierHessianOperator.hpp"
 #include "signorini/ContactQP.hpp"
+#include "signorini/ContactSubspaceSolver.hpp"
 #include "signorini/KrylovSolver.hpp"
 #include "signorini/MueLuPreconditioner.hpp"
 
@@ -32,6 +35,8 @@ class NewtonSystemSolver {
 
   const BarrierHessianOperator& hessian() const { return *H_; }
   int maxIterations() const { return maxIterations_; }
+  // Number of AMG hierarchies built so far.
+  int preconditionerSetups() const { return amgBuilds_ + (strategy_ == "amg of Q" ? 1 : 0); }
 
  private:
   RCP<BarrierHessianOperator> H_;
@@ -39,7 +44,12 @@ class NewtonSystemSolver {
   std::string strategy_;
   int maxIterations_;
   std::unique_ptr<MueLuPreconditioner> amg_;
+  std::string correction_ = "none";
+  RCP<ContactSubspaceSolver> subspace_;
   bool reuseHierarchy_ = false;
+  double rebuildTolerance_ = 0.0;
+  RCP<Vector> constraintStiffness_, builtWeights_;  // q_i, and w_i of the last AMG build
+  int amgBuilds_ = 0;
   bool amgReady_ = false;
 };
 

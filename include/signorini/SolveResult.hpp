@@ -40,6 +40,7 @@ struct SolveResult {
   int functionEvaluations = 0;   // the paper's "nfc"
   long long krylovIterations = 0;
   int maxKrylovPerNewton = 0;
+  int preconditionerSetups = 0;  // AMG hierarchies built
   std::vector<int> innerIterations;  // per main iteration (the paper's Figure 2)
   std::vector<NewtonStepRecord> history;
   double seconds = 0;

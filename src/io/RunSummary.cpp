@@ -74,6 +74,7 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     << "  \"function_evaluations\": " << r.functionEvaluations << ",\n"
     << "  \"krylov_iterations\": " << r.krylovIterations << ",\n"
     << "  \"max_krylov_per_newton\": " << r.maxKrylovPerNewton << ",\n"
+    << "  \"preconditioner_setups\": " << r.preconditionerSetups << ",\n"
     << "  \"objective\": " << number(r.objective) << ",\n"
     << "  \"active_constraints\": " << r.activeConstraints << ",\n"
     << "  \"kkt\": " << kktJson(r.kkt.stationarity, r.kkt.complementarity, r.kkt.primalFeasibility,

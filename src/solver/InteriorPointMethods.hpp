@@ -45,7 +45,8 @@ RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
 //   "adaptive":          min(eta ||rhs||, max(floor, safety * residualScale)), the residual
 //                        scale following the barrier parameter;
 //   "eisenstat-walker":  eta_k ||F|| with Eisenstat and Walker's choice 2,
-//                        eta_k = 0.9 (||F_k|| / ||F_k-1||)^2, safeguarded, at most eta.
+//                        eta_k = 0.9 (||F_k|| / ||F_k-1||)^2, safeguarded, at most eta;
+//   "relative":          eta ||rhs||, a fixed residual reduction for every Newton system.
 struct ForcingRule {
   std::string type;
   double eta = 0.1;

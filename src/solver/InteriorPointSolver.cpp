@@ -37,8 +37,10 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
   p.set("forcing: type", "adaptive",
         "Truncated Newton forcing: \"constant\" (||H dv + g|| <= eta ||g||), \"adaptive\" (the "
         "residual allowed follows the barrier parameter, never above eta ||g||) or "
-        "\"eisenstat-walker\" (choice 2 of Eisenstat and Walker, at most eta)",
-        choices({"adaptive", "constant", "eisenstat-walker"}));
+        "\"eisenstat-walker\" (choice 2 of Eisenstat and Walker, at most eta), or \"relative\" "
+        "(every Krylov solve reduces its residual by eta: the same linear problem at every mu, "
+        "for measuring preconditioners)",
+        choices({"adaptive", "constant", "eisenstat-walker", "relative"}));
   p.set("forcing: eta", 0.1, "Constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
   p.set("forcing: safety", 0.1, "Adaptive forcing: fraction of the current residual scale", range(1e-6, 1.0));
   p.set("starting point: complementarity", 1.0,
@@ -169,6 +171,7 @@ void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, co
 
 double ForcingRule::tolerance(double rhsNorm, double residualScale, double nonlinearNorm) {
   if (type == "constant") return std::max(floor, eta * nonlinearNorm);
+  if (type == "relative") return eta * rhsNorm;
   if (type == "adaptive") return std::min(eta * rhsNorm, std::max(floor, safety * residualScale));
   double forcing = eta;
   if (nonlinearNorm == previousNorm) {

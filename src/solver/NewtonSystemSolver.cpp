@@ -1,12 +1,36 @@
 #include "signorini/NewtonSystemSolver.hpp"
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/Error.hpp"
+#include "signorini/SubspaceCorrectedPreconditioner.hpp"
 
 namespace signorini {
+namespace {
+
+// q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i.
+RCP<Vector> constraintStiffness(const CrsMatrix& Q, const CrsMatrix& A) {
+  Vector diagonal(Q.getRowMap());
+  Q.getLocalDiagCopy(diagonal);
+  Vector atColumns(A.getColMap());
+  atColumns.doImport(diagonal, Import(Q.getRowMap(), A.getColMap()), Tpetra::INSERT);
+  auto q = rcp(new Vector(A.getRowMap()));
+  auto qd = q->getDataNonConst();
+  auto cd = atColumns.getData();
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(A.getNodeNumRows()); ++i) {
+    typename CrsMatrix::local_inds_host_view_type cols;
+    typename CrsMatrix::values_host_view_type vals;
+    A.getLocalRowView(i, cols, vals);
+    for (std::size_t k = 0; k < cols.extent(0); ++k) qd[i] += vals(k) * vals(k) * cd[cols(k)];
+  }
+  return q;
+}
+
+}  // namespace
 
 Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   Teuchos::ParameterList p;
@@ -17,8 +41,18 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   Teuchos::ParameterList& prec = p.sublist("Preconditioner", false, "Preconditioner of H");
   prec.set("type", "amg of H",
            "\"none\", \"amg of Q\" (MueLu on Q, built once) or \"amg of H\" (MueLu on the "
-           "assembled Q + A^T D A, rebuilt each Newton step)",
+           "assembled Q + A^T D A, rebuilt as \"amg of H: rebuild tolerance\" says)",
            rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "amg of Q", "amg of H"))));
+  prec.set("amg of H: rebuild tolerance", 0.9,
+           "\"amg of H\" is rebuilt when the relative weight D_i / (D_i + q_i) of some constraint i "
+           "(q_i = a_i^T diag(Q) a_i, its stiffness) moved by more than this since the last build; "
+           "0 rebuilds at every Newton step; the default rebuilds when a constraint switches between "
+           "free and firmly active, and leaves the rest to the contact correction",
+           rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
+  prec.set("contact correction", "multiplicative",
+           "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
+           "\"additive\" or \"multiplicative\" (symmetric: subspace, AMG, subspace)",
+           rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "additive", "multiplicative"))));
   prec.sublist("MueLu", false, "Passed to MueLu unchanged, over Signorini's defaults");
   return p;
 }
@@ -28,12 +62,22 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
       krylov_(params.sublist("Krylov")),
       strategy_(params.sublist("Preconditioner").get<std::string>("type")),
       maxIterations_(params.sublist("Krylov").get<int>("maximum iterations")) {
-  if (strategy_ == "none") return;
+  if (strategy_ == "none") {
+    if (params.sublist("Preconditioner").get<std::string>("contact correction") != "none")
+      throw InputError("Preconditioner/contact correction needs an AMG: set Preconditioner/type to \"amg of Q\" "
+                       "or \"amg of H\"");
+    return;
+  }
   if (qp.Qmatrix().is_null())
     throw InputError("Preconditioner/type \"" + strategy_ + "\" needs Q as an assembled CrsMatrix; "
                      "use \"none\" for a matrix-free Q");
   const Teuchos::ParameterList& muelu = params.sublist("Preconditioner").sublist("MueLu");
   amg_ = std::make_unique<MueLuPreconditioner>(muelu, qp.blockSize, qp.nullspace, qp.coordinates);
+  correction_ = params.sublist("Preconditioner").get<std::string>("contact correction");
+  if (correction_ != "none")
+    subspace_ = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A));
+  rebuildTolerance_ = params.sublist("Preconditioner").get<double>("amg of H: rebuild tolerance");
+  if (strategy_ == "amg of H") constraintStiffness_ = constraintStiffness(*qp.Qmatrix(), *qp.A);
   reuseHierarchy_ = amg_->parameters().get<std::string>("reuse: type") != "none";
   if (strategy_ == "amg of Q") {
     amg_->compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
@@ -43,8 +87,33 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
 
 void NewtonSystemSolver::setWeights(const Vector& D) {
   H_->setWeights(D);
+  if (!subspace_.is_null()) {
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3d contact subspace setup"));
+    subspace_->setWeights(D);
+  }
   if (strategy_ == "amg of H") {
-    amg_->compute(H_->assemble(), reuseHierarchy_ && amgReady_);
+    // The relative weights w_i = D_i / (D_i + q_i) say how much A^T D A changes H.
+    auto weights = rcp(new Vector(D.getMap()));
+    {
+      auto dd = D.getData();
+      auto qd = constraintStiffness_->getData();
+      auto wd = weights->getDataNonConst();
+      for (long i = 0; i < wd.size(); ++i) wd[i] = dd[i] + qd[i] > 0 ? dd[i] / (dd[i] + qd[i]) : 0.0;
+    }
+    if (amgReady_ && rebuildTolerance_ > 0) {
+      Vector change(D.getMap());
+      change.update(1.0, *weights, -1.0, *builtWeights_, 0.0);
+      if (change.normInf() <= rebuildTolerance_) return;
+    }
+    builtWeights_ = weights;
+    ++amgBuilds_;
+    RCP<CrsMatrix> H;
+    {
+      Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3a assemble H"));
+      H = H_->assemble();
+    }
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b AMG setup"));
+    amg_->compute(H, reuseHierarchy_ && amgReady_);
     amgReady_ = true;
   }
 }
@@ -54,8 +123,10 @@ KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absolu
   const double rnorm = r.norm2();
   if (rnorm == 0.0) return KrylovResult{0, true, 0.0};
   RCP<const Operator> M = amg_ ? amg_->getOperator() : Teuchos::null;
+  if (!subspace_.is_null()) M = rcp(new SubspaceCorrectedPreconditioner(H_, M, subspace_, correction_));
   auto rhs = Teuchos::rcpFromRef(r);
   auto sol = Teuchos::rcpFromRef(x);
+  Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3c Krylov"));
   return krylov_.solve(H_, M, rhs, sol, std::min(0.5, absoluteTolerance / rnorm), maxIterations_);
 }
 

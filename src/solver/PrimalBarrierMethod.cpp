@@ -318,6 +318,7 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
     zeta = std::max(delta * zeta, 0.1 * tol * bnorm);
   }
 
+  result.preconditionerSetups = newton.preconditionerSetups();
   finishResult(qp, *v, lambda, s, result);
   result.seconds = timer.totalElapsedTime(true);
   observer.onFinish(result);

@@ -268,6 +268,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
   Vector slack(cmap);
   qp.A->apply(*v, slack);
   slack.update(1.0, *qp.d, -1.0);
+  result.preconditionerSetups = newton.preconditionerSetups();
   finishResult(qp, *v, lambda, slack, result);
   result.seconds = timer.totalElapsedTime(true);
   observer.onFinish(result);

@@ -168,6 +168,7 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_TRUE(has("\"function_evaluations\": " + std::to_string(r.functionEvaluations) + ","));
   EXPECT_TRUE(has("\"krylov_iterations\": " + std::to_string(r.krylovIterations) + ","));
   EXPECT_TRUE(has("\"max_krylov_per_newton\": " + std::to_string(r.maxKrylovPerNewton) + ","));
+  EXPECT_TRUE(has("\"preconditioner_setups\": " + std::to_string(r.preconditionerSetups) + ","));
   EXPECT_TRUE(has("\"n\": 242,"));
   EXPECT_TRUE(has("\"m\": 11,"));
   EXPECT_TRUE(has("\"converged\": true"));

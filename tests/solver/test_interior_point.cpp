@@ -216,11 +216,11 @@ TEST(InteriorPoint, ForcingRulesAndKrylovSolversAreSelectable) {
   const Teuchos::ParameterList problem = shippedProblem("paper/G");
   AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
   const double reference = referenceObjective(problem);
-  for (const char* forcing : {"constant", "eisenstat-walker"})
+  for (const char* forcing : {"constant", "eisenstat-walker", "relative"})
     for (const char* m : {"primal-dual", "primal"}) {
       Teuchos::ParameterList params = method(m);
       params.set("forcing: type", forcing);
-      params.set("forcing: eta", 0.01);
+      params.set("forcing: eta", std::string(forcing) == "relative" ? 1e-10 : 0.01);
       SolveResult r = InteriorPointSolver(params).solve(p.qp);
       EXPECT_TRUE(r.converged()) << forcing << " " << m << ": " << r.message;
       EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << forcing << " " << m;

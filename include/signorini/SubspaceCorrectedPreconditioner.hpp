@@ -1,0 +1,34 @@
+#pragma once
+// A preconditioner B of H (an AMG cycle) combined with an exact subspace solve S =
+// P (P^T H P)^-1 P^T, in the manner of AMG with filtering (Petrides, Hartland, Kolev et al.):
+//   "additive":        M^-1 = B + S;
+//   "multiplicative":  M^-1 r: x = S r, x += B (r - H x), x += S (r - H x)
+//                      (symmetric: S, B, S; symmetric positive definite when B is).
+// The subspace takes over what B cannot see: the large A^T D A entries of the active
+// contact DOFs as the barrier parameter goes to zero.
+#include <string>
+
+#include <Tpetra_Operator.hpp>
+
+#include "signorini/TpetraTypes.hpp"
+
+namespace signorini {
+
+class SubspaceCorrectedPreconditioner : public Operator {
+ public:
+  SubspaceCorrectedPreconditioner(RCP<const Operator> H, RCP<const Operator> B, RCP<const Operator> S,
+                                  const std::string& combination);
+
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
+             Scalar alpha = Teuchos::ScalarTraits<Scalar>::one(),
+             Scalar beta = Teuchos::ScalarTraits<Scalar>::zero()) const override;
+  RCP<const Map> getDomainMap() const override { return H_->getDomainMap(); }
+  RCP<const Map> getRangeMap() const override { return H_->getRangeMap(); }
+  bool hasTransposeApply() const override { return true; }
+
+ private:
+  RCP<const Operator> H_, B_, S_;
+  bool multiplicative_;
+};
+
+}  // namespace signorini

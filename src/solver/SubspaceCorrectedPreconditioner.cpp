@@ -1,0 +1,39 @@
+#include "signorini/SubspaceCorrectedPreconditioner.hpp"
+
+#include <Tpetra_MultiVector.hpp>
+
+#include "signorini/Error.hpp"
+
+namespace signorini {
+
+SubspaceCorrectedPreconditioner::SubspaceCorrectedPreconditioner(RCP<const Operator> H, RCP<const Operator> B,
+                                                                 RCP<const Operator> S,
+                                                                 const std::string& combination)
+    : H_(std::move(H)), B_(std::move(B)), S_(std::move(S)), multiplicative_(combination == "multiplicative") {
+  if (combination != "additive" && combination != "multiplicative")
+    throw InputError("contact correction: \"" + combination + "\" is neither \"additive\" nor \"multiplicative\"");
+}
+
+void SubspaceCorrectedPreconditioner::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, Scalar alpha,
+                                            Scalar beta) const {
+  const std::size_t numVectors = X.getNumVectors();
+  // Corrections go through a scratch vector: not every preconditioner honours beta.
+  MultiVector Z(H_->getDomainMap(), numVectors), correction(H_->getDomainMap(), numVectors);
+  if (!multiplicative_) {
+    B_->apply(X, Z);
+    S_->apply(X, correction);
+    Z.update(1.0, correction, 1.0);
+  } else {
+    MultiVector residual(H_->getRangeMap(), numVectors);
+    S_->apply(X, Z);
+    for (const Operator* M : {B_.get(), S_.get()}) {
+      residual.assign(X);
+      H_->apply(Z, residual, Teuchos::NO_TRANS, -1.0, 1.0);
+      M->apply(residual, correction);
+      Z.update(1.0, correction, 1.0);
+    }
+  }
+  Y.update(alpha, Z, beta);
+}
+
+}  // namespace signorini

@@ -1,0 +1,149 @@
+// The contact-subspace correction: the exact solve on the DOFs of A and its additive and
+// multiplicative combinations with the AMG, on every rank count; and every preconditioner
+// configuration reaching the same solution.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/BarrierHessianOperator.hpp"
+#include "signorini/ContactSubspaceSolver.hpp"
+#include "signorini/Error.hpp"
+#include "signorini/InteriorPointSolver.hpp"
+#include "signorini/MueLuPreconditioner.hpp"
+#include "signorini/SubspaceCorrectedPreconditioner.hpp"
+#include "support/TestProblems.hpp"
+
+namespace {
+
+using namespace signorini;
+using namespace signorini::testing;
+
+// 1 on the DOFs that appear in A, 0 elsewhere.
+Vector contactIndicator(const ContactQP& qp) {
+  Vector ones(qp.A->getRangeMap()), indicator(qp.A->getDomainMap());
+  ones.putScalar(1.0);
+  // |A|^T 1 is nonzero exactly on the columns of A (the family's A has entries -1).
+  qp.A->apply(ones, indicator, Teuchos::TRANS);
+  auto d = indicator.getDataNonConst();
+  for (long i = 0; i < d.size(); ++i) d[i] = d[i] != 0.0 ? 1.0 : 0.0;
+  return indicator;
+}
+
+struct WeightedProblem {
+  AssembledProblem problem;
+  RCP<BarrierHessianOperator> H;
+  RCP<ContactSubspaceSolver> S;
+};
+
+WeightedProblem weightedProblem(const char* name) {
+  WeightedProblem s{buildProblem(shippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm()), {}, {}};
+  const ContactQP& qp = s.problem.qp;
+  s.H = rcp(new BarrierHessianOperator(qp.Q, qp.A));
+  s.S = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A));
+  Vector D(qp.A->getRangeMap());
+  D.randomize(1.0, 1e8);  // from free to firmly active constraints
+  s.H->setWeights(D);
+  s.S->setWeights(D);
+  return s;
+}
+
+// y = S r solves the subspace equations P^T H y = P^T r exactly and vanishes off the subspace.
+TEST(ContactSubspaceSolver, SolvesTheSubspaceEquations) {
+  for (const char* name : {"M", "B", "H"}) {
+    WeightedProblem s = weightedProblem(name);
+    const ContactQP& qp = s.problem.qp;
+    EXPECT_EQ(s.S->dimension(), static_cast<long long>(qp.A->getGlobalNumRows())) << name;
+    const Vector indicator = contactIndicator(qp);
+    Vector r(qp.Q->getDomainMap()), y(qp.Q->getDomainMap()), Hy(qp.Q->getDomainMap()), off(qp.Q->getDomainMap());
+    r.randomize();
+    s.S->apply(r, y);
+    off.assign(y);
+    off.elementWiseMultiply(-1.0, indicator, y, 1.0);  // y off the contact DOFs
+    EXPECT_EQ(off.normInf(), 0.0) << name;
+    s.H->apply(y, Hy);
+    Hy.update(-1.0, r, 1.0);
+    Hy.elementWiseMultiply(1.0, indicator, Hy, 0.0);  // P P^T (H y - r)
+    Vector rc(r.getMap());
+    rc.elementWiseMultiply(1.0, indicator, r, 0.0);
+    EXPECT_LT(Hy.norm2(), 1e-10 * rc.norm2()) << name;
+    EXPECT_GT(y.norm2(), 0.0) << name;
+  }
+}
+
+// Both combinations are symmetric positive definite, and the multiplicative one is exact on
+// the subspace: for x on the contact DOFs, M^-1 H x = x.
+TEST(SubspaceCorrectedPreconditioner, SymmetricPositiveDefiniteAndExactOnTheSubspace) {
+  for (const char* name : {"G", "B"}) {
+    WeightedProblem s = weightedProblem(name);
+    const ContactQP& qp = s.problem.qp;
+    MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nullspace, qp.coordinates);
+    amg.compute(s.H->assemble());
+    for (const char* combination : {"additive", "multiplicative"}) {
+      SubspaceCorrectedPreconditioner M(s.H, amg.getOperator(), s.S, combination);
+      Vector u(qp.Q->getDomainMap()), w(qp.Q->getDomainMap()), Mu(qp.Q->getDomainMap()), Mw(qp.Q->getDomainMap());
+      u.randomize();
+      w.randomize();
+      M.apply(u, Mu);
+      M.apply(w, Mw);
+      const double uMw = u.dot(Mw), wMu = w.dot(Mu);
+      EXPECT_LT(std::abs(uMw - wMu), 1e-8 * std::sqrt(u.dot(Mu) * w.dot(Mw))) << name << " " << combination;
+      EXPECT_GT(u.dot(Mu), 0.0) << name << " " << combination;
+      EXPECT_GT(w.dot(Mw), 0.0) << name << " " << combination;
+      if (std::string(combination) != "multiplicative") continue;
+      Vector x(qp.Q->getDomainMap()), Hx(qp.Q->getDomainMap()), Mx(qp.Q->getDomainMap());
+      x.randomize();
+      x.elementWiseMultiply(1.0, contactIndicator(qp), x, 0.0);
+      s.H->apply(x, Hx);
+      M.apply(Hx, Mx);
+      Mx.update(-1.0, x, 1.0);
+      EXPECT_LT(Mx.norm2(), 1e-10 * x.norm2()) << name;
+    }
+  }
+}
+
+// Every preconditioner configuration converges to the same solution, in no more Krylov
+// iterations per Newton system with the contact correction than without.
+TEST(SubspaceCorrectedPreconditioner, EveryConfigurationReachesTheSameSolution) {
+  const ContactQP qp = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm()).qp;
+  double reference = 0;
+  int withoutCorrection = 0;
+  for (const char* type : {"amg of H", "amg of Q"})
+    for (const char* correction : {"none", "additive", "multiplicative"})
+      for (double rebuild : {0.0, 0.9}) {
+        if (std::string(type) == "amg of Q" && rebuild > 0) continue;
+        Teuchos::ParameterList params;
+        params.sublist("Preconditioner").set("type", type);
+        params.sublist("Preconditioner").set("contact correction", correction);
+        params.sublist("Preconditioner").set("amg of H: rebuild tolerance", rebuild);
+        const SolveResult r = InteriorPointSolver(params).solve(qp);
+        const std::string what = std::string(type) + " / " + correction + " / " + std::to_string(rebuild);
+        ASSERT_TRUE(r.converged()) << what << ": " << r.message;
+        if (reference == 0) reference = r.objective;
+        EXPECT_LT(std::abs(r.objective - reference), 1e-8 * std::abs(reference)) << what;
+        if (std::string(type) == "amg of H" && rebuild == 0.0) {
+          EXPECT_EQ(r.preconditionerSetups, r.outerIterations + 1) << what;  // one per main iteration and the start
+          if (std::string(correction) == "none") withoutCorrection = r.maxKrylovPerNewton;
+          if (std::string(correction) == "multiplicative") {
+            EXPECT_LE(r.maxKrylovPerNewton, withoutCorrection) << what;
+          }
+        }
+        if (rebuild > 0) {
+          EXPECT_LT(r.preconditionerSetups, r.outerIterations) << what;
+        }
+      }
+}
+
+TEST(SubspaceCorrectedPreconditioner, NeedsAnAmg) {
+  const ContactQP qp = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp;
+  Teuchos::ParameterList params;
+  params.sublist("Preconditioner").set("type", "none");
+  params.sublist("Preconditioner").set("contact correction", "multiplicative");
+  EXPECT_THROW(InteriorPointSolver(params).solve(qp), InputError);
+}
+
+}  // namespace
