@@ -1,6 +1,7 @@
 #pragma once
 // Global node numbering of the scalar continuous P_k space on a simplex mesh. The vector
 // valued space used everywhere numbers its degrees of freedom dof = dim * node + component.
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -42,6 +43,12 @@ class LagrangeSpace {
   // Boundary facets with that tag, in mesh facet order, each as (cell, local facet f), f
   // being the cell's local vertex opposite the facet.
   std::vector<std::pair<long long, int>> boundaryFacets(int tag) const;
+
+  // (cell, local facet f) of mesh boundary facet `facet`: every facet is a face of exactly one cell.
+  const std::pair<long long, int>& facetCell(long long facet) const { return facetCells_[facet]; }
+
+  // Heap bytes held by the space's own arrays (their capacities; not the mesh's).
+  std::size_t bytes() const;
 
  private:
   const SimplexMesh* mesh_;

@@ -1,6 +1,7 @@
 #pragma once
 // From a validated "Problem" parameter list to the distributed discrete problem: mesh
-// (box generator or Gmsh file), METIS partition, P_k space and the assembled ContactQP.
+// (box generator or Gmsh file, made on rank 0 only), METIS partition, P_k space and the
+// assembled ContactQP.
 #include <memory>
 #include <string>
 
@@ -14,8 +15,7 @@ namespace signorini {
 
 struct AssembledProblem {
   ProblemDefinition definition;
-  std::shared_ptr<const SimplexMesh> mesh;
-  std::unique_ptr<DistributedSpace> space;
+  std::unique_ptr<DistributedSpace> space;  // this rank's mesh and space, global counts
   ContactQP qp;
   double setupSeconds = 0, assemblySeconds = 0;  // max over ranks
 };

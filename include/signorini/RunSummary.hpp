@@ -15,6 +15,7 @@ struct RunSummary {
   const SolveResult* result = nullptr;
   double setupSeconds = 0, assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;  // max over ranks
   double peakMemoryMiBMaxRank = 0, peakMemoryMiBAllRanks = 0;  // peak resident set size
+  double serialMeshMiB = 0;  // rank 0's global mesh, space and partition before they are scattered
 };
 
 void writeSummaryJson(const RunSummary& summary, const std::string& path);

@@ -187,4 +187,9 @@ std::vector<std::pair<long long, int>> LagrangeSpace::boundaryFacets(int tag) co
   return result;
 }
 
+std::size_t LagrangeSpace::bytes() const {
+  return cellNodes_.capacity() * sizeof(long long) + nodeCoordinates_.capacity() * sizeof(double) +
+         facetCells_.capacity() * sizeof(facetCells_[0]);
+}
+
 }  // namespace signorini

@@ -10,6 +10,7 @@
 #include "signorini/ElasticityAssembler.hpp"
 #include "signorini/Error.hpp"
 #include "signorini/GmshMesh.hpp"
+#include "../core/RootTask.hpp"
 
 namespace signorini {
 namespace {
@@ -29,20 +30,26 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 1 mesh and space"));
     setup.start(true);
-    // The definition is read twice for a Gmsh mesh: the file decides the dimension.
+    // Only rank 0 makes the global mesh, once; DistributedSpace frees it after sending each
+    // rank its part. The definition is read twice for a Gmsh mesh: the file decides the dimension.
     ProblemDefinition def = ProblemDefinition::fromParameters(problem);
     std::shared_ptr<SimplexMesh> mesh;
+    detail::runOnRoot(*comm, [&] {
+      if (def.meshType == "gmsh") {
+        std::filesystem::path file(def.meshFile);
+        if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
+        mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string()));
+      } else {
+        mesh = std::make_shared<SimplexMesh>(makeBoxMesh(def.dim, def.cells, def.lengths));
+      }
+    });
     if (def.meshType == "gmsh") {
-      std::filesystem::path file(def.meshFile);
-      if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
-      mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string()));
-      def = ProblemDefinition::fromParameters(problem, mesh->dim);
-    } else {
-      mesh = std::make_shared<SimplexMesh>(makeBoxMesh(def.dim, def.cells, def.lengths));
+      int dim = mesh ? mesh->dim : 0;
+      Teuchos::broadcast(*comm, 0, 1, &dim);
+      def = ProblemDefinition::fromParameters(problem, dim);
     }
     result.definition = std::move(def);
-    result.mesh = mesh;
-    result.space = std::make_unique<DistributedSpace>(comm, mesh, result.definition.degree);
+    result.space = std::make_unique<DistributedSpace>(comm, std::move(mesh), result.definition.degree);
     setup.stop();
   }
   {

@@ -7,6 +7,7 @@
 
 #include <gmsh.h>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -63,12 +64,15 @@ TEST(GmshProblem, BoundariesAreFoundByPhysicalNames) {
   problem.sublist("Contact").set("boundary", "foundation");
   AssembledProblem p = buildProblem(problem, comm, directory);
 
-  EXPECT_EQ(p.mesh->dim, 2);
-  const int tag = p.mesh->tag("foundation");
-  const long long contactNodes = p.space->space().boundaryNodes(tag).size();
+  const DistributedSpace& ds = *p.space;
+  EXPECT_EQ(p.definition.dim, 2);
+  EXPECT_EQ(ds.dim(), 2);
+  long long ownedContactNodes = 0, contactNodes = 0;
+  for (long long node : ds.boundaryNodes(ds.mesh().tag("foundation"))) ownedContactNodes += ds.ownsNode(node);
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &ownedContactNodes, &contactNodes);
   EXPECT_GT(contactNodes, 20);  // h = 0.1 on a side of length 2, P2: about 41 nodes
   EXPECT_EQ(static_cast<long long>(p.qp.d->getGlobalLength()), contactNodes);
-  EXPECT_EQ(static_cast<long long>(p.qp.b->getGlobalLength()), 2 * p.space->space().numNodes());
+  EXPECT_EQ(static_cast<long long>(p.qp.b->getGlobalLength()), 2 * ds.numGlobalNodes());
 
   // The body sags onto the foundation: it converges, with contact somewhere.
   SolveResult r = InteriorPointSolver().solve(p.qp);
