@@ -22,6 +22,13 @@ class LagrangeSpace {
   LagrangeSpace(const SimplexMesh& mesh, int degree);
   LagrangeSpace(SimplexMesh&&, int) = delete;  // would keep a reference to a temporary
 
+  // The space of a part of a larger mesh, whose nodes past the vertices take the given
+  // coordinates (dim each, in node order) instead of computing them: a face node's sum of
+  // three vertices depends on the cell that meets it first, so only the whole mesh's values
+  // make the part bit-identical to it. Throws InputError if the count does not fit.
+  LagrangeSpace(const SimplexMesh& mesh, int degree, const std::vector<double>& nonVertexCoordinates);
+  LagrangeSpace(SimplexMesh&&, int, const std::vector<double>&) = delete;
+
   const SimplexMesh& mesh() const { return *mesh_; }
   int degree() const { return basis_.degree(); }
   int dim() const { return basis_.dim(); }
@@ -51,6 +58,8 @@ class LagrangeSpace {
   std::size_t bytes() const;
 
  private:
+  void build(const std::vector<double>* nonVertexCoordinates);
+
   const SimplexMesh* mesh_;
   LagrangeBasis basis_;
   long long numNodes_ = 0;

@@ -54,18 +54,22 @@ DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, std::shared_ptr<
   globalMesh.reset();
 
   mesh_ = std::make_shared<const SimplexMesh>(std::move(part.mesh));
-  space_ = std::make_unique<LagrangeSpace>(*mesh_, degree);
+  // Rank 0 numbered the part's nodes as this space does; a mismatch is a bug, not an input error.
+  int consistent = 1, allConsistent = 0;
+  try {
+    space_ = std::make_unique<LagrangeSpace>(*mesh_, degree, part.nodeCoordinates);
+    consistent = space_->numNodes() == static_cast<long long>(part.nodeIds.size());
+  } catch (const Error&) {
+    consistent = 0;
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &consistent, &allConsistent);
+  if (!allConsistent) throw Error("distributed space: a rank's space does not match its part");
   nodeId_ = std::move(part.nodeIds);
   nodeOwner_ = std::move(part.nodeOwners);
   globalCells_ = std::move(part.globalCells);
   boundaryTags_ = std::move(part.boundaryTags);
   boundaryStart_ = std::move(part.boundaryStart);
   boundaryNodes_ = std::move(part.boundaryNodes);
-  // Rank 0 numbered the part's nodes as this space does; a mismatch is a bug, not an input error.
-  const int consistent = space_->numNodes() == static_cast<long long>(nodeId_.size()) ? 1 : 0;
-  int allConsistent = 0;
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &consistent, &allConsistent);
-  if (!allConsistent) throw Error("distributed space: a rank's space does not match its part");
 
   // Owned nodes, then the ghosts, each sorted by renumbered id: the order of the global space.
   const long long numNodes = space_->numNodes();

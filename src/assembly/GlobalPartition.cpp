@@ -101,6 +101,10 @@ MeshPart GlobalPartition::part(int rank) {
     part.nodeIds.push_back(newId_[node]);
     part.nodeOwners.push_back(nodeOwner_[node]);
   }
+  const auto& coordinates = space_.nodeCoordinates();
+  for (std::size_t i = mesh.numVertices(); i < globalNodes.size(); ++i)
+    part.nodeCoordinates.insert(part.nodeCoordinates.end(), coordinates.begin() + d * globalNodes[i],
+                                coordinates.begin() + d * (globalNodes[i] + 1));
 
   part.boundaryTags = tags_;
   part.boundaryStart.push_back(0);

@@ -83,6 +83,7 @@ void sendMeshPart(const Comm& comm, const MeshPart& part, int destination) {
   p.put(part.globalCells);
   p.put(part.nodeIds);
   p.put(part.nodeOwners);
+  p.put(part.nodeCoordinates);
   p.put(part.boundaryTags);
   p.put(part.boundaryStart);
   p.put(part.boundaryNodes);
@@ -120,6 +121,7 @@ MeshPart receiveMeshPart(const Comm& comm, int source) {
   u.get(part.globalCells);
   u.get(part.nodeIds);
   u.get(part.nodeOwners);
+  u.get(part.nodeCoordinates);
   u.get(part.boundaryTags);
   u.get(part.boundaryStart);
   u.get(part.boundaryNodes);

@@ -19,6 +19,8 @@ struct MeshPart {
   // Per node of LagrangeSpace(mesh, degree): renumbered (Tpetra) id and owner rank.
   std::vector<GlobalOrdinal> nodeIds;
   std::vector<int> nodeOwners;
+  // Coordinates of the nodes past the vertices, taken from the global space (see LagrangeSpace).
+  std::vector<double> nodeCoordinates;
   // Nodes of that space on each tagged boundary of the global mesh, sorted, as CSR over
   // boundaryTags: a node of this part may lie on a facet that only another part holds.
   std::vector<int> boundaryTags;

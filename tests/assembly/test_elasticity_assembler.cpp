@@ -1,4 +1,4 @@
-// Assembly of the contact QP on 1, 2 and 3 ranks: sizes of the benchmark family, agreement
+// Assembly of the contact QP on 1 to 4 ranks: sizes of the benchmark family, agreement
 // with a one-rank assembly, rigid body modes, patch test and convergence orders.
 #include <gtest/gtest.h>
 
