@@ -1,6 +1,9 @@
 #include "signorini/DistributedSpace.hpp"
 
 #include <algorithm>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Map.hpp>
@@ -47,11 +50,16 @@ DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, std::shared_ptr<
   if (rank == 0) {
     for (int r = 1; r < size; ++r) detail::sendMeshPart(*comm_, global->part(r), r);
     part = global->part(0);
-    global.reset();  // rank 0 keeps no more of the global problem than any other rank
   } else {
     part = detail::receiveMeshPart(*comm_, 0);
   }
+  // Rank 0 keeps no more of the global problem than any other rank (unless the caller holds
+  // on to the mesh).
+  global.reset();
   globalMesh.reset();
+#if defined(__GLIBC__)
+  if (rank == 0) malloc_trim(0);  // glibc keeps freed heap pages resident: hand them back
+#endif
 
   mesh_ = std::make_shared<const SimplexMesh>(std::move(part.mesh));
   // Rank 0 numbered the part's nodes as this space does; a mismatch is a bug, not an input error.
