@@ -11,6 +11,7 @@
 #include <Tpetra_Core.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "signorini/Error.hpp"
 #include "signorini/InteriorPointSolver.hpp"
 #include "signorini/ProblemBuilder.hpp"
 
@@ -90,6 +91,14 @@ TEST(GmshProblem, BoundariesAreFoundByPhysicalNames) {
   EXPECT_TRUE(r.converged()) << r.message;
   EXPECT_GT(r.activeConstraints, 0);
   EXPECT_LT(r.objective, 0.0);
+}
+
+// Rank 0 alone reads the file, but every rank learns that it is missing.
+TEST(GmshProblem, MissingFileThrowsOnEveryRank) {
+  Teuchos::ParameterList problem("Problem");
+  problem.set("mesh: type", "gmsh");
+  problem.set("mesh: file", "/nonexistent/mesh.msh");
+  EXPECT_THROW(buildProblem(problem, Tpetra::getDefaultComm()), InputError);
 }
 
 }  // namespace
