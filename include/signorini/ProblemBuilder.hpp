@@ -18,6 +18,10 @@ struct AssembledProblem {
   std::unique_ptr<DistributedSpace> space;  // this rank's mesh and space, global counts
   ContactQP qp;
   double setupSeconds = 0, assemblySeconds = 0;  // max over ranks
+  // Rank 0's peak resident set during mesh and space, above its size before them (METIS'
+  // and the hash tables' transient buffers included): the serial phase's real cost when it
+  // is the process' largest allocation so far, as in the application.
+  double serialMeshPeakMiB = 0;
 };
 
 // `baseDirectory` resolves a relative "mesh: file".

@@ -337,7 +337,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   if (root)
     out << "Signorini: problem \"" << def.name << "\": d = " << def.dim << ", P" << def.degree << ", "
         << problem.space->numGlobalCells() << " cells (serial mesh phase on rank 0: " << serialMeshMiB
-        << " MiB), n = " << n << ", m = " << m << ", " << comm->getSize()
+        << " MiB of arrays, peak resident +" << problem.serialMeshPeakMiB << " MiB), n = " << n << ", m = " << m << ", " << comm->getSize()
         << " MPI rank(s); setup " << problem.setupSeconds << " s, assembly " << problem.assemblySeconds << " s\n";
 
   if (!cl.exportQp.empty()) {
@@ -381,6 +381,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     const double rss = usage.ru_maxrss / 1024.0;  // Linux reports KiB
     summary.peakMemoryMiBMaxRank = maxOverRanks(*comm, rss);
     summary.serialMeshMiB = serialMeshMiB;
+    summary.serialMeshPeakMiB = problem.serialMeshPeakMiB;
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &rss, &summary.peakMemoryMiBAllRanks);
     if (root) {
       writeSummaryJson(summary, directory + "/summary.json");

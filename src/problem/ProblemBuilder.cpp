@@ -1,6 +1,11 @@
 #include "signorini/ProblemBuilder.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_Time.hpp>
@@ -21,6 +26,20 @@ double maxOverRanks(const Comm& comm, double value) {
   return result;
 }
 
+// Resident set now (Linux' /proc/self/statm; 0 elsewhere) and its peak so far, in MiB.
+double residentMiB() {
+  std::ifstream statm("/proc/self/statm");
+  double size = 0, resident = 0;
+  if (!(statm >> size >> resident)) return 0.0;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+double peakResidentMiB() {
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // Linux reports KiB
+}
+
 }  // namespace
 
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
@@ -30,6 +49,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 1 mesh and space"));
     setup.start(true);
+    const double residentBefore = residentMiB();
     // Only rank 0 makes the global mesh, once; DistributedSpace frees it after sending each
     // rank its part. The definition is read twice for a Gmsh mesh: the file decides the dimension.
     ProblemDefinition def = ProblemDefinition::fromParameters(problem);
@@ -51,6 +71,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     result.definition = std::move(def);
     result.space = std::make_unique<DistributedSpace>(comm, std::move(mesh), result.definition.degree);
     setup.stop();
+    result.serialMeshPeakMiB = std::max(0.0, peakResidentMiB() - residentBefore);
+    Teuchos::broadcast(*comm, 0, 1, &result.serialMeshPeakMiB);
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 2 assembly"));
