@@ -1,7 +1,8 @@
 // Benchmark: time and memory of building and assembling a problem of the family.
 // Usage: mpirun -np N build/bin/signorini_bench_assembly DIM DEGREE NX [OUTPUT.json]
-// Writes one JSON object: sizes, ranks, seconds of mesh + space (setup) and of assembly
-// (max over ranks), and the peak resident memory per rank (max and sum).
+// Writes one JSON object: sizes, ranks, rank 0's serial mesh phase (arrays and peak
+// resident growth, MiB), seconds of mesh + space (setup) and of assembly (max over ranks),
+// and the peak resident memory per rank (max and sum).
 #include <sys/resource.h>
 
 #include <cstdlib>
@@ -48,6 +49,8 @@ int main(int argc, char** argv) {
   json << "{\"dim\": " << dim << ", \"degree\": " << degree << ", \"nx\": " << nx
        << ", \"n\": " << p.qp.b->getGlobalLength() << ", \"m\": " << p.qp.d->getGlobalLength()
        << ", \"nonzeros\": " << p.qp.Qmatrix()->getGlobalNumEntries() << ", \"ranks\": " << comm->getSize()
+       << ", \"serial_mesh_mib\": " << p.space->serialPhaseBytes() / (1024.0 * 1024.0)
+       << ", \"serial_mesh_peak_rss_mib\": " << p.serialMeshPeakMiB
        << ", \"setup_seconds\": " << p.setupSeconds << ", \"assembly_seconds\": " << p.assemblySeconds
        << ", \"peak_rss_mib_max_rank\": " << maxRss << ", \"peak_rss_mib_all_ranks\": " << sumRss << "}";
   if (comm->getRank() == 0) {

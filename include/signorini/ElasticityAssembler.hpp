@@ -13,8 +13,19 @@ namespace signorini {
 
 ContactQP assembleContactQP(const DistributedSpace& space, const ProblemDefinition& problem);
 
-// Space node ids of the contact nodes in constraint order (row k of A is node k of this list).
-std::vector<long long> contactNodeOrder(const DistributedSpace& space, const ProblemDefinition& problem);
+// The contact nodes this rank owns, as space node ids in constraint order: row first + k of
+// A is node nodes[k]. Constraints follow the renumbered nodes, so each rank owns the
+// contiguous range [first, first + nodes.size()) of the numGlobal constraints. Collective.
+struct OwnedContactNodes {
+  GlobalOrdinal first = 0;
+  long long numGlobal = 0;
+  std::vector<long long> nodes;
+};
+OwnedContactNodes ownedContactNodes(const DistributedSpace& space, const ProblemDefinition& problem);
+
+// The constraint (row of A) of each overlap node, in overlapSpaceNodes() order; -1 for a node
+// off the contact boundary. Ghosts learn theirs from their owners. Collective.
+std::vector<long long> overlapNodeConstraints(const DistributedSpace& space, const ProblemDefinition& problem);
 
 // The contact boundary's measure lumped to its nodes (HRZ lumping, positive for every
 // degree), on A's range map: the contact pressure is -lambda_i / w_i.

@@ -1,6 +1,7 @@
 #pragma once
 // Global node numbering of the scalar continuous P_k space on a simplex mesh. The vector
 // valued space used everywhere numbers its degrees of freedom dof = dim * node + component.
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,13 @@ class LagrangeSpace {
   // twice, shared by two cells or no face of any cell).
   LagrangeSpace(const SimplexMesh& mesh, int degree);
   LagrangeSpace(SimplexMesh&&, int) = delete;  // would keep a reference to a temporary
+
+  // The space of a part of a larger mesh, whose nodes past the vertices take the given
+  // coordinates (dim each, in node order) instead of computing them: a face node's sum of
+  // three vertices depends on the cell that meets it first, so only the whole mesh's values
+  // make the part bit-identical to it. Throws InputError if the count does not fit.
+  LagrangeSpace(const SimplexMesh& mesh, int degree, const std::vector<double>& nonVertexCoordinates);
+  LagrangeSpace(SimplexMesh&&, int, const std::vector<double>&) = delete;
 
   const SimplexMesh& mesh() const { return *mesh_; }
   int degree() const { return basis_.degree(); }
@@ -43,7 +51,15 @@ class LagrangeSpace {
   // being the cell's local vertex opposite the facet.
   std::vector<std::pair<long long, int>> boundaryFacets(int tag) const;
 
+  // (cell, local facet f) of mesh boundary facet `facet`: every facet is a face of exactly one cell.
+  const std::pair<long long, int>& facetCell(long long facet) const { return facetCells_[facet]; }
+
+  // Heap bytes held by the space's own arrays (their capacities; not the mesh's).
+  std::size_t bytes() const;
+
  private:
+  void build(const std::vector<double>* nonVertexCoordinates);
+
   const SimplexMesh* mesh_;
   LagrangeBasis basis_;
   long long numNodes_ = 0;

@@ -1,6 +1,7 @@
 #pragma once
 // From a validated "Problem" parameter list to the distributed discrete problem: mesh
-// (box generator or Gmsh file), METIS partition, P_k space and the assembled ContactQP.
+// (box generator or Gmsh file, made on rank 0 only), METIS partition, P_k space and the
+// assembled ContactQP.
 #include <memory>
 #include <string>
 
@@ -14,10 +15,13 @@ namespace signorini {
 
 struct AssembledProblem {
   ProblemDefinition definition;
-  std::shared_ptr<const SimplexMesh> mesh;
-  std::unique_ptr<DistributedSpace> space;
+  std::unique_ptr<DistributedSpace> space;  // this rank's mesh and space, global counts
   ContactQP qp;
   double setupSeconds = 0, assemblySeconds = 0;  // max over ranks
+  // Rank 0's peak resident set during mesh and space, above its size before them (METIS'
+  // and the hash tables' transient buffers included): the serial phase's real cost when it
+  // is the process' largest allocation so far, as in the application.
+  double serialMeshPeakMiB = 0;
 };
 
 // `baseDirectory` resolves a relative "mesh: file".

@@ -1,6 +1,7 @@
 #pragma once
 // A conforming simplex mesh (triangles in 2D, tetrahedra in 3D) with linear geometry and
 // named boundary parts. Plain arrays, so it can be built, read or partitioned anywhere.
+#include <cstddef>
 #include <map>
 #include <string>
 #include <vector>
@@ -25,6 +26,9 @@ struct SimplexMesh {
   // The cell's (dim + 1) vertices, dim coordinates each, in cell order: the input the
   // element routines expect.
   void cellVertexCoordinates(long long cell, double* coords) const;
+
+  // Heap bytes held by the arrays (their capacities) and the boundary names.
+  std::size_t bytes() const;
 };
 
 }  // namespace signorini

@@ -18,7 +18,8 @@ struct NodeField {
   std::vector<double> values;
 };
 
-// A field given per local cell, in localCells() order.
+// A field given per cell of this rank, in space.mesh() order (space.globalCell() gives their
+// ids in the global mesh).
 struct CellField {
   std::string name;
   int components = 1;
@@ -26,7 +27,7 @@ struct CellField {
 };
 
 // Writes <directory>/<basename>.pvtu (rank 0) and <directory>/<basename>_<rank>.vtu (every
-// rank): the local cells of each rank with the nodes of its overlap, and the fields. 2D points
+// rank): the cells of each rank with the nodes of its overlap, and the fields. 2D points
 // get z = 0 and 2-component fields are padded to 3, so ParaView shows them as vectors. Each
 // file is written under a temporary name in the same directory and then renamed; the
 // directory is created if absent. Collective over space.comm(); every rank passes the same

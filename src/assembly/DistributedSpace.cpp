@@ -1,8 +1,17 @@
 #include "signorini/DistributedSpace.hpp"
 
+#include <algorithm>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Map.hpp>
 
-#include "signorini/MeshPartition.hpp"
+#include "../core/RootTask.hpp"
+#include "GlobalPartition.hpp"
+#include "MeshPart.hpp"
+#include "signorini/Error.hpp"
 
 namespace signorini {
 namespace {
@@ -18,57 +27,83 @@ RCP<const Map> dofMapOf(const std::vector<GlobalOrdinal>& nodes, int dim, const 
 
 }  // namespace
 
-DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> mesh,
+DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> globalMesh,
                                    int degree)
-    : comm_(comm), mesh_(std::move(mesh)), space_(std::make_unique<LagrangeSpace>(*mesh_, degree)) {
+    : comm_(comm) {
   const int rank = comm_->getRank(), size = comm_->getSize();
-  cellPart_ = partitionCells(*mesh_, size);
-  nodeOwner_ = nodeOwners(*space_, cellPart_);
 
-  // Contiguous renumbering: rank r owns [offset_r, offset_{r+1}), nodes kept in space order.
+  // The serial phase: rank 0 partitions the global mesh and sends each rank its part.
+  detail::MeshPart part;
+  long long counts[3] = {0, 0, 0};  // global nodes, global cells, serial phase bytes
+  std::unique_ptr<detail::GlobalPartition> global;
+  detail::runOnRoot(*comm_, [&] {
+    if (!globalMesh) throw InputError("distributed space: rank 0 has no mesh");
+    global = std::make_unique<detail::GlobalPartition>(*globalMesh, degree, size);
+    counts[0] = global->numNodes();
+    counts[1] = global->numCells();
+    counts[2] = static_cast<long long>(globalMesh->bytes() + global->bytes());
+  });
+  Teuchos::broadcast(*comm_, 0, 3, counts);
+  numGlobalNodes_ = counts[0];
+  numGlobalCells_ = counts[1];
+  serialPhaseBytes_ = static_cast<std::size_t>(counts[2]);
+  if (rank == 0) {
+    for (int r = 1; r < size; ++r) detail::sendMeshPart(*comm_, global->part(r), r);
+    part = global->part(0);
+  } else {
+    part = detail::receiveMeshPart(*comm_, 0);
+  }
+  // Rank 0 keeps no more of the global problem than any other rank (unless the caller holds
+  // on to the mesh).
+  global.reset();
+  globalMesh.reset();
+#if defined(__GLIBC__)
+  if (rank == 0) malloc_trim(0);  // glibc keeps freed heap pages resident: hand them back
+#endif
+
+  mesh_ = std::make_shared<const SimplexMesh>(std::move(part.mesh));
+  // Rank 0 numbered the part's nodes as this space does; a mismatch is a bug, not an input error.
+  int consistent = 1, allConsistent = 0;
+  try {
+    space_ = std::make_unique<LagrangeSpace>(*mesh_, degree, part.nodeCoordinates);
+    consistent = space_->numNodes() == static_cast<long long>(part.nodeIds.size());
+  } catch (const Error&) {
+    consistent = 0;
+  }
+  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &consistent, &allConsistent);
+  if (!allConsistent) throw Error("distributed space: a rank's space does not match its part");
+  nodeId_ = std::move(part.nodeIds);
+  nodeOwner_ = std::move(part.nodeOwners);
+  globalCells_ = std::move(part.globalCells);
+  boundaryTags_ = std::move(part.boundaryTags);
+  boundaryStart_ = std::move(part.boundaryStart);
+  boundaryNodes_ = std::move(part.boundaryNodes);
+
+  // Owned nodes, then the ghosts, each sorted by renumbered id: the order of the global space.
   const long long numNodes = space_->numNodes();
-  std::vector<long long> offset(size + 1, 0);
-  for (long long n = 0; n < numNodes; ++n) ++offset[nodeOwner_[n] + 1];
-  for (int r = 0; r < size; ++r) offset[r + 1] += offset[r];
-  newId_.resize(numNodes);
-  std::vector<long long> next(offset.begin(), offset.end() - 1);
-  std::vector<GlobalOrdinal> owned;
-  for (long long n = 0; n < numNodes; ++n) {
-    newId_[n] = next[nodeOwner_[n]]++;
-    if (nodeOwner_[n] == rank) {
-      owned.push_back(newId_[n]);
-      overlapSpaceNodes_.push_back(n);
-    }
-  }
-
-  for (long long c = 0; c < mesh_->numCells(); ++c)
-    if (cellPart_[c] == rank) localCells_.push_back(c);
-
-  // Ghosts: nodes of local cells owned elsewhere, sorted by new id.
-  std::vector<char> seen(numNodes, 0);
-  std::vector<long long> ghosts;
-  const int npc = space_->nodesPerCell();
-  for (long long c : localCells_) {
-    const long long* nodes = space_->cellNodes(c);
-    for (int i = 0; i < npc; ++i)
-      if (nodeOwner_[nodes[i]] != rank && !seen[nodes[i]]) {
-        seen[nodes[i]] = 1;
-        ghosts.push_back(nodes[i]);
-      }
-  }
-  std::sort(ghosts.begin(), ghosts.end(),
-            [&](long long a, long long b) { return newId_[a] < newId_[b]; });
-  std::vector<GlobalOrdinal> overlap = owned;
-  for (long long n : ghosts) {
-    overlap.push_back(newId_[n]);
-    overlapSpaceNodes_.push_back(n);
-  }
+  overlapSpaceNodes_.resize(numNodes);
+  for (long long n = 0; n < numNodes; ++n) overlapSpaceNodes_[n] = n;
+  std::sort(overlapSpaceNodes_.begin(), overlapSpaceNodes_.end(), [&](long long a, long long b) {
+    const bool ownsA = nodeOwner_[a] == rank, ownsB = nodeOwner_[b] == rank;
+    return ownsA != ownsB ? ownsA : nodeId_[a] < nodeId_[b];
+  });
+  std::vector<GlobalOrdinal> overlap(numNodes);
+  for (long long i = 0; i < numNodes; ++i) overlap[i] = nodeId_[overlapSpaceNodes_[i]];
+  const std::size_t numOwned = std::count(nodeOwner_.begin(), nodeOwner_.end(), rank);
+  const std::vector<GlobalOrdinal> owned(overlap.begin(), overlap.begin() + numOwned);
 
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   ownedNodeMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(owned), 0, comm_));
   overlapNodeMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(overlap), 0, comm_));
   ownedDofMap_ = dofMapOf(owned, dim(), comm_);
   overlapDofMap_ = dofMapOf(overlap, dim(), comm_);
+}
+
+std::vector<long long> DistributedSpace::boundaryNodes(int tag) const {
+  const auto it = std::lower_bound(boundaryTags_.begin(), boundaryTags_.end(), tag);
+  if (it == boundaryTags_.end() || *it != tag) return {};
+  const std::size_t i = it - boundaryTags_.begin();
+  return std::vector<long long>(boundaryNodes_.begin() + boundaryStart_[i], boundaryNodes_.begin() + boundaryStart_[i + 1]);
 }
 
 }  // namespace signorini

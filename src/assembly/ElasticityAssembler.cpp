@@ -3,10 +3,12 @@
 #include <algorithm>
 
 #include <Kokkos_DualView.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_FECrsGraph.hpp>
 #include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -33,7 +35,7 @@ DirichletData dirichletData(const DistributedSpace& ds, const ProblemDefinition&
                      std::vector<double>(dim * space.numNodes(), 0.0)};
   for (const BoundaryField& bc : problem.dirichlet) {
     const int tag = ds.mesh().tag(bc.boundary);
-    for (long long node : space.boundaryNodes(tag)) {
+    for (long long node : ds.boundaryNodes(tag)) {  // also the ghosts fixed by other ranks' facets
       const double* x = &space.nodeCoordinates()[dim * node];
       for (int c = 0; c < dim; ++c) {
         if (!bc.components[c]) continue;
@@ -55,13 +57,14 @@ RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
   for (std::size_t i = 0; i < overlap.size(); ++i) localIndex[overlap[i]] = static_cast<int>(i);
 
   // node -> local cells, in CSR form
+  const long long numCells = ds.mesh().numCells();
   std::vector<std::size_t> start(overlap.size() + 1, 0);
-  for (long long c : ds.localCells())
+  for (long long c = 0; c < numCells; ++c)
     for (int i = 0; i < npc; ++i) ++start[localIndex[space.cellNodes(c)[i]] + 1];
   for (std::size_t i = 0; i < overlap.size(); ++i) start[i + 1] += start[i];
   std::vector<long long> cellsOfNode(start.back());
   std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (long long c : ds.localCells())
+  for (long long c = 0; c < numCells; ++c)
     for (int i = 0; i < npc; ++i) cellsOfNode[fill[localIndex[space.cellNodes(c)[i]]]++] = c;
 
   std::vector<std::vector<GlobalOrdinal>> neighbours(overlap.size());
@@ -114,15 +117,35 @@ void eliminatePrescribed(const std::vector<char>& fixed, const std::vector<doubl
 
 }  // namespace
 
-// One constraint per contact node, numbered in the order of the renumbered nodes, so that
-// each rank owns a contiguous range of constraints.
-std::vector<long long> contactNodeOrder(const DistributedSpace& ds, const ProblemDefinition& problem) {
-  std::vector<long long> nodes;
-  if (problem.contactBoundary.empty()) return nodes;
-  nodes = ds.space().boundaryNodes(ds.mesh().tag(problem.contactBoundary));
-  std::sort(nodes.begin(), nodes.end(),
+// One constraint per contact node, numbered in the order of the renumbered nodes. Ranks own
+// contiguous node ranges in rank order, so a rank's constraints start after the contact
+// nodes of the ranks before it.
+OwnedContactNodes ownedContactNodes(const DistributedSpace& ds, const ProblemDefinition& problem) {
+  OwnedContactNodes result;
+  if (!problem.contactBoundary.empty())
+    for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contactBoundary)))
+      if (ds.ownsNode(node)) result.nodes.push_back(node);
+  std::sort(result.nodes.begin(), result.nodes.end(),
             [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
-  return nodes;
+  const long long count = static_cast<long long>(result.nodes.size());
+  long long upTo = 0;
+  Teuchos::scan(*ds.comm(), Teuchos::REDUCE_SUM, 1, &count, &upTo);
+  result.first = upTo - count;
+  Teuchos::reduceAll(*ds.comm(), Teuchos::REDUCE_SUM, 1, &count, &result.numGlobal);
+  return result;
+}
+
+std::vector<long long> overlapNodeConstraints(const DistributedSpace& ds, const ProblemDefinition& problem) {
+  const OwnedContactNodes contact = ownedContactNodes(ds, problem);
+  // Constraint + 1 at owned nodes, 0 elsewhere (ids are exact in a double below 2^53).
+  Vector owned(ds.ownedNodeMap()), overlap(ds.overlapNodeMap());
+  for (std::size_t k = 0; k < contact.nodes.size(); ++k)
+    owned.replaceGlobalValue(ds.globalNode(contact.nodes[k]), static_cast<double>(contact.first + k + 1));
+  overlap.doImport(owned, Import(ds.ownedNodeMap(), ds.overlapNodeMap()), Tpetra::INSERT);
+  auto values = overlap.getData();
+  std::vector<long long> constraint(values.size());
+  for (std::size_t i = 0; i < constraint.size(); ++i) constraint[i] = static_cast<long long>(values[i]) - 1;
+  return constraint;
 }
 
 RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefinition& problem,
@@ -134,7 +157,6 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
   Vector overlap(ds.overlapNodeMap()), owned(ds.ownedNodeMap());
   std::vector<double> coords((dim + 1) * dim), w;
   for (const auto& [cell, facet] : space.boundaryFacets(ds.mesh().tag(problem.contactBoundary))) {
-    if (!ds.isLocalCell(cell)) continue;
     ds.mesh().cellVertexCoordinates(cell, coords.data());
     facetLumpedMass(space.basis(), coords.data(), facet, w);
     const long long* nodes = space.cellNodes(cell);
@@ -142,12 +164,15 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
       if (w[a] != 0.0) overlap.sumIntoGlobalValue(ds.globalNode(nodes[a]), w[a]);
   }
   owned.doExport(overlap, Export(ds.overlapNodeMap(), ds.ownedNodeMap()), Tpetra::ADD);
-  // Constraint k belongs to the k-th contact node, owned by the same rank.
-  const std::vector<long long> contactNodes = contactNodeOrder(ds, problem);
+  // Constraint first + k belongs to the k-th owned contact node.
+  const OwnedContactNodes contact = ownedContactNodes(ds, problem);
   auto out = weights->getDataNonConst();
   auto in = owned.getData();
   for (std::size_t i = 0; i < constraintMap->getNodeNumElements(); ++i) {
-    const long long node = contactNodes[constraintMap->getGlobalElement(i)];
+    const long long k = constraintMap->getGlobalElement(i) - contact.first;
+    if (k < 0 || k >= static_cast<long long>(contact.nodes.size()))
+      throw Error("contact weights: the constraint map is not distributed like the contact nodes");
+    const long long node = contact.nodes[k];
     out[i] = in[ds.ownedNodeMap()->getLocalElement(ds.globalNode(node))];
   }
   return weights;
@@ -213,7 +238,7 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   };
 
   K->beginAssembly();
-  for (long long cell : ds.localCells()) {
+  for (long long cell = 0; cell < mesh.numCells(); ++cell) {
     gatherCell(cell);
     elasticityStiffness(space.basis(), vertexCoords.data(), problem.material, Ke);
     bodyForceLoad(space.basis(), vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
@@ -228,7 +253,6 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
       for (int c = 0; c < dim; ++c) t[c] = bc.components[c] ? (*bc.components[c])(x, dim) : 0.0;
     };
     for (const auto& [cell, facet] : space.boundaryFacets(mesh.tag(bc.boundary))) {
-      if (!ds.isLocalCell(cell)) continue;
       gatherCell(cell);
       facetTractionLoad(space.basis(), vertexCoords.data(), facet, traction,
                         problem.loadQuadratureDegree, Fe);
@@ -257,11 +281,10 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
         if (dirichlet.fixed[dim * overlap[i] + c]) data[dim * i + c] = dirichlet.value[dim * overlap[i] + c];
   }
 
-  const std::vector<long long> contactNodes = contactNodeOrder(ds, problem);
-  std::vector<GlobalOrdinal> ownedConstraints;
-  for (std::size_t k = 0; k < contactNodes.size(); ++k)
-    if (ds.ownsNode(contactNodes[k])) ownedConstraints.push_back(static_cast<GlobalOrdinal>(k));
-  auto constraintMap = rcp(new Map(contactNodes.size(), Teuchos::ArrayView<const GlobalOrdinal>(ownedConstraints),
+  const OwnedContactNodes contact = ownedContactNodes(ds, problem);
+  std::vector<GlobalOrdinal> ownedConstraints(contact.nodes.size());
+  for (std::size_t k = 0; k < ownedConstraints.size(); ++k) ownedConstraints[k] = contact.first + k;
+  auto constraintMap = rcp(new Map(contact.numGlobal, Teuchos::ArrayView<const GlobalOrdinal>(ownedConstraints),
                                    0, ds.comm()));
   auto A = rcp(new CrsMatrix(constraintMap, dim));
   auto d = rcp(new Vector(constraintMap));
@@ -270,7 +293,7 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
     std::vector<GlobalOrdinal> cols(dim);
     std::vector<double> vals(dim);
     for (std::size_t i = 0; i < ownedConstraints.size(); ++i) {
-      const long long node = contactNodes[ownedConstraints[i]];
+      const long long node = contact.nodes[i];
       int count = 0;  // only the nonzero components of -n_o
       for (int c = 0; c < dim; ++c)
         if (problem.obstacleDirection[c] != 0.0) {

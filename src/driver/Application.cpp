@@ -133,12 +133,10 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::s
   u.doImport(*r.v, Import(ds.ownedDofMap(), ds.overlapDofMap()), Tpetra::INSERT);
 
   // Constraint values at the overlap nodes: contact force (-lambda), gap (d - A v), active.
-  const auto contactNodes = contactNodeOrder(ds, p.definition);
-  std::vector<long long> constraintOf(ds.space().numNodes(), -1);
-  for (std::size_t k = 0; k < contactNodes.size(); ++k) constraintOf[contactNodes[k]] = k;
+  const std::vector<long long> constraintOf = overlapNodeConstraints(ds, p.definition);
   std::vector<GlobalOrdinal> wanted;
-  for (long long node : overlap)
-    if (constraintOf[node] >= 0) wanted.push_back(constraintOf[node]);
+  for (long long k : constraintOf)
+    if (k >= 0) wanted.push_back(k);
   const auto cmap = p.qp.A->getRangeMap();
   auto wantedMap = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                                Teuchos::ArrayView<const GlobalOrdinal>(wanted), 0, cmap->getComm()));
@@ -163,8 +161,8 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::s
   auto gd = gapHere.getData();
   auto pd = pressureHere.getData();
   std::size_t next = 0;
-  for (long long node : overlap) {
-    if (constraintOf[node] < 0) {
+  for (long long k : constraintOf) {
+    if (k < 0) {
       force.values.push_back(0.0);
       pressureField.values.push_back(0.0);
       gapField.values.push_back(0.0);
@@ -187,7 +185,7 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::s
   std::vector<double> coords((dim + 1) * dim), local(dim * npc), sigma(dim * dim);
   double centroid[3];
   for (int i = 0; i < dim; ++i) centroid[i] = 1.0 / (dim + 1);
-  for (long long cell : ds.localCells()) {
+  for (long long cell = 0; cell < ds.mesh().numCells(); ++cell) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
     const long long* nodes = space.cellNodes(cell);
     for (int i = 0; i < npc; ++i)
@@ -335,9 +333,11 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   AssembledProblem problem = buildProblem(user.sublist("Problem"), comm, baseDirectory.empty() ? "." : baseDirectory);
   const ProblemDefinition& def = problem.definition;
   const long long n = problem.qp.b->getGlobalLength(), m = problem.qp.d->getGlobalLength();
+  const double serialMeshMiB = problem.space->serialPhaseBytes() / (1024.0 * 1024.0);
   if (root)
     out << "Signorini: problem \"" << def.name << "\": d = " << def.dim << ", P" << def.degree << ", "
-        << problem.mesh->numCells() << " cells, n = " << n << ", m = " << m << ", " << comm->getSize()
+        << problem.space->numGlobalCells() << " cells (serial mesh phase on rank 0: " << serialMeshMiB
+        << " MiB of arrays, peak resident +" << problem.serialMeshPeakMiB << " MiB), n = " << n << ", m = " << m << ", " << comm->getSize()
         << " MPI rank(s); setup " << problem.setupSeconds << " s, assembly " << problem.assemblySeconds << " s\n";
 
   if (!cl.exportQp.empty()) {
@@ -380,6 +380,8 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     getrusage(RUSAGE_SELF, &usage);
     const double rss = usage.ru_maxrss / 1024.0;  // Linux reports KiB
     summary.peakMemoryMiBMaxRank = maxOverRanks(*comm, rss);
+    summary.serialMeshMiB = serialMeshMiB;
+    summary.serialMeshPeakMiB = problem.serialMeshPeakMiB;
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &rss, &summary.peakMemoryMiBAllRanks);
     if (root) {
       writeSummaryJson(summary, directory + "/summary.json");

@@ -88,7 +88,17 @@ Key sortedKey(Key key, int size) {
 }  // namespace
 
 LagrangeSpace::LagrangeSpace(const SimplexMesh& mesh, int degree) : mesh_(&mesh), basis_(mesh.dim, degree) {
-  const int d = mesh.dim;
+  build(nullptr);
+}
+
+LagrangeSpace::LagrangeSpace(const SimplexMesh& mesh, int degree, const std::vector<double>& nonVertexCoordinates)
+    : mesh_(&mesh), basis_(mesh.dim, degree) {
+  build(&nonVertexCoordinates);
+}
+
+void LagrangeSpace::build(const std::vector<double>* nonVertexCoordinates) {
+  const SimplexMesh& mesh = *mesh_;
+  const int d = mesh.dim, degree = basis_.degree();
   const long long numVertices = mesh.numVertices();
   const long long numCells = mesh.numCells();
   const long long numFacets = mesh.numFacets();
@@ -154,12 +164,20 @@ LagrangeSpace::LagrangeSpace(const SimplexMesh& mesh, int degree) : mesh_(&mesh)
       nodes[local] = nodeIndex.findOrInsert(sortedKey(key, size), numNodes_);
       if (nodes[local] != numNodes_) continue;
       ++numNodes_;
+      if (nonVertexCoordinates) continue;
       for (int j = 0; j < d; ++j) {
         double x = 0.0;
         for (int i = 0; i <= d; ++i) x += a[i] * mesh.vertices[d * vertex[i] + j];
         nodeCoordinates_.push_back(x / degree);
       }
     }
+  }
+
+  if (nonVertexCoordinates) {
+    if (nonVertexCoordinates->size() != static_cast<std::size_t>(d * (numNodes_ - numVertices)))
+      throw InputError("P" + std::to_string(degree) + " space: " + std::to_string(nonVertexCoordinates->size()) +
+                       " coordinates given for " + std::to_string(numNodes_ - numVertices) + " nodes past the vertices");
+    nodeCoordinates_.insert(nodeCoordinates_.end(), nonVertexCoordinates->begin(), nonVertexCoordinates->end());
   }
 
   for (long long facet = 0; facet < numFacets; ++facet)
@@ -185,6 +203,11 @@ std::vector<std::pair<long long, int>> LagrangeSpace::boundaryFacets(int tag) co
   for (std::size_t facet = 0; facet < facetCells_.size(); ++facet)
     if (mesh_->facetTags[facet] == tag) result.push_back(facetCells_[facet]);
   return result;
+}
+
+std::size_t LagrangeSpace::bytes() const {
+  return cellNodes_.capacity() * sizeof(long long) + nodeCoordinates_.capacity() * sizeof(double) +
+         facetCells_.capacity() * sizeof(facetCells_[0]);
 }
 
 }  // namespace signorini

@@ -19,4 +19,11 @@ void SimplexMesh::cellVertexCoordinates(long long cell, double* coords) const {
     for (int j = 0; j < dim; ++j) coords[v * dim + j] = vertices[dim * cellVertices[v] + j];
 }
 
+std::size_t SimplexMesh::bytes() const {
+  std::size_t names = 0;
+  for (const auto& [name, value] : boundaryTags) names += sizeof(value) + sizeof(name) + name.capacity() + 32;  // 32: tree node
+  return vertices.capacity() * sizeof(double) + (cells.capacity() + facets.capacity()) * sizeof(long long) +
+         facetTags.capacity() * sizeof(int) + names;
+}
+
 }  // namespace signorini

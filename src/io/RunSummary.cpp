@@ -86,6 +86,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
   j << "],\n"
     << "  \"memory_mib\": {\"max_rank\": " << number(s.peakMemoryMiBMaxRank)
     << ", \"all_ranks\": " << number(s.peakMemoryMiBAllRanks) << "},\n"
+    << "  \"serial_mesh_mib\": " << number(s.serialMeshMiB) << ",\n"
+    << "  \"serial_mesh_peak_rss_mib\": " << number(s.serialMeshPeakMiB) << ",\n"
     << "  \"time\": {\"setup\": " << number(s.setupSeconds) << ", \"assembly\": " << number(s.assemblySeconds)
     << ", \"solve\": " << number(s.solveSeconds) << ", \"total\": " << number(s.totalSeconds) << "}\n"
     << "}\n";

@@ -150,7 +150,7 @@ std::string pieceText(const DistributedSpace& space, const std::vector<NodeField
   const LagrangeSpace& lagrange = space.space();
   const int dim = space.dim(), npc = lagrange.nodesPerCell();
   const std::vector<long long>& nodes = space.overlapSpaceNodes();
-  const std::vector<long long>& cells = space.localCells();
+  const long long numCells = space.mesh().numCells();
 
   std::vector<double> points(3 * nodes.size(), 0.0);
   std::unordered_map<long long, long long> pointOf;
@@ -163,9 +163,9 @@ std::string pieceText(const DistributedSpace& space, const std::vector<NodeField
 
   const std::vector<int> order = vtkNodeOrder(lagrange.basis());
   std::vector<std::int64_t> connectivity, offsets;
-  connectivity.reserve(cells.size() * npc);
-  offsets.reserve(cells.size());
-  for (long long cell : cells) {
+  connectivity.reserve(numCells * npc);
+  offsets.reserve(numCells);
+  for (long long cell = 0; cell < numCells; ++cell) {
     const long long* cellNodes = lagrange.cellNodes(cell);
     for (int position = 0; position < npc; ++position) {
       const auto it = pointOf.find(cellNodes[order[position]]);
@@ -179,11 +179,11 @@ std::string pieceText(const DistributedSpace& space, const std::vector<NodeField
     type = dim == 2 ? kVtkTriangle : kVtkTetra;
   else
     type = dim == 2 ? kVtkLagrangeTriangle : kVtkLagrangeTetrahedron;
-  const std::vector<std::uint8_t> types(cells.size(), type);
+  const std::vector<std::uint8_t> types(numCells, type);
 
   std::string out = fileHeader("UnstructuredGrid");
   out += "  <UnstructuredGrid>\n    <Piece NumberOfPoints=\"" + std::to_string(nodes.size()) +
-         "\" NumberOfCells=\"" + std::to_string(cells.size()) + "\">\n";
+         "\" NumberOfCells=\"" + std::to_string(numCells) + "\">\n";
   out += "      <PointData>\n";
   for (const NodeField& f : nodeFields)
     appendDataArray(out, "Float64", f.name, outputComponents(f.components), padded(f.values, f.components));
@@ -282,7 +282,7 @@ void writeVtu(const DistributedSpace& space, const std::vector<NodeField>& nodeF
   for (const NodeField& f : nodeFields)
     if (error.empty()) error = checkField(f, space.overlapSpaceNodes().size(), "node");
   for (const CellField& f : cellFields)
-    if (error.empty()) error = checkField(f, space.localCells().size(), "cell");
+    if (error.empty()) error = checkField(f, static_cast<std::size_t>(space.mesh().numCells()), "cell");
   throwIfAnyFailed(comm, error);
 
   const fs::path dir(directory);

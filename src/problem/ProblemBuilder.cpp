@@ -1,6 +1,11 @@
 #include "signorini/ProblemBuilder.hpp"
 
+#include <sys/resource.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_Time.hpp>
@@ -10,6 +15,7 @@
 #include "signorini/ElasticityAssembler.hpp"
 #include "signorini/Error.hpp"
 #include "signorini/GmshMesh.hpp"
+#include "../core/RootTask.hpp"
 
 namespace signorini {
 namespace {
@@ -18,6 +24,20 @@ double maxOverRanks(const Comm& comm, double value) {
   double result = value;
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &value, &result);
   return result;
+}
+
+// Resident set now (Linux' /proc/self/statm; 0 elsewhere) and its peak so far, in MiB.
+double residentMiB() {
+  std::ifstream statm("/proc/self/statm");
+  double size = 0, resident = 0;
+  if (!(statm >> size >> resident)) return 0.0;
+  return resident * static_cast<double>(sysconf(_SC_PAGESIZE)) / (1024.0 * 1024.0);
+}
+
+double peakResidentMiB() {
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0;  // Linux reports KiB
 }
 
 }  // namespace
@@ -29,21 +49,30 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 1 mesh and space"));
     setup.start(true);
-    // The definition is read twice for a Gmsh mesh: the file decides the dimension.
+    const double residentBefore = residentMiB();
+    // Only rank 0 makes the global mesh, once; DistributedSpace frees it after sending each
+    // rank its part. The definition is read twice for a Gmsh mesh: the file decides the dimension.
     ProblemDefinition def = ProblemDefinition::fromParameters(problem);
     std::shared_ptr<SimplexMesh> mesh;
+    detail::runOnRoot(*comm, [&] {
+      if (def.meshType == "gmsh") {
+        std::filesystem::path file(def.meshFile);
+        if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
+        mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string()));
+      } else {
+        mesh = std::make_shared<SimplexMesh>(makeBoxMesh(def.dim, def.cells, def.lengths));
+      }
+    });
     if (def.meshType == "gmsh") {
-      std::filesystem::path file(def.meshFile);
-      if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
-      mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string()));
-      def = ProblemDefinition::fromParameters(problem, mesh->dim);
-    } else {
-      mesh = std::make_shared<SimplexMesh>(makeBoxMesh(def.dim, def.cells, def.lengths));
+      int dim = mesh ? mesh->dim : 0;
+      Teuchos::broadcast(*comm, 0, 1, &dim);
+      def = ProblemDefinition::fromParameters(problem, dim);
     }
     result.definition = std::move(def);
-    result.mesh = mesh;
-    result.space = std::make_unique<DistributedSpace>(comm, mesh, result.definition.degree);
+    result.space = std::make_unique<DistributedSpace>(comm, std::move(mesh), result.definition.degree);
     setup.stop();
+    result.serialMeshPeakMiB = std::max(0.0, peakResidentMiB() - residentBefore);
+    Teuchos::broadcast(*comm, 0, 1, &result.serialMeshPeakMiB);
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 2 assembly"));

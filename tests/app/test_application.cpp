@@ -175,6 +175,10 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_TRUE(has("\"ranks\": " + std::to_string(comm->getSize()) + ","));
   EXPECT_TRUE(has("\"time\": {\"setup\": "));
   EXPECT_TRUE(has("\"memory_mib\": {\"max_rank\": "));
+  EXPECT_TRUE(has("\"serial_mesh_mib\": "));
+  EXPECT_TRUE(has("\"serial_mesh_peak_rss_mib\": "));
+  EXPECT_EQ(has("\"serial_mesh_mib\": 0,"), false);  // problem M's mesh is counted
+  EXPECT_NE(log.str().find("serial mesh phase on rank 0: "), std::string::npos);
   // One history row per Newton step record, plus the header.
   std::ifstream history(dir + "/out/history.csv");
   int lines = 0;

@@ -1,5 +1,5 @@
 // A problem on a Gmsh mesh: made in the test by the Gmsh API from a small geometry (a
-// 2 x 1 rectangle with physical groups), read back through the Gmsh SDK, partitioned,
+// 2 x 1 rectangle with physical groups), read back through the Gmsh SDK on rank 0, partitioned,
 // assembled with the boundaries found by their physical group names, and solved.
 #include <gtest/gtest.h>
 
@@ -7,9 +7,11 @@
 
 #include <gmsh.h>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "signorini/Error.hpp"
 #include "signorini/InteriorPointSolver.hpp"
 #include "signorini/ProblemBuilder.hpp"
 
@@ -61,20 +63,42 @@ TEST(GmshProblem, BoundariesAreFoundByPhysicalNames) {
   clamp.set("displacement: y", "0");
   problem.sublist("Traction").sublist("sides").set("traction: x", "-0.1*(x - 1)");
   problem.sublist("Contact").set("boundary", "foundation");
-  AssembledProblem p = buildProblem(problem, comm, directory);
+  // Only rank 0 reads the file: the other ranks get a base directory where it is not.
+  AssembledProblem p = buildProblem(problem, comm, comm->getRank() == 0 ? directory : directory + "/nowhere");
 
-  EXPECT_EQ(p.mesh->dim, 2);
-  const int tag = p.mesh->tag("foundation");
-  const long long contactNodes = p.space->space().boundaryNodes(tag).size();
+  const DistributedSpace& ds = *p.space;
+  EXPECT_EQ(p.definition.dim, 2);
+  EXPECT_EQ(ds.dim(), 2);
+  long long ownedContactNodes = 0, contactNodes = 0;
+  for (long long node : ds.boundaryNodes(ds.mesh().tag("foundation"))) ownedContactNodes += ds.ownsNode(node);
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &ownedContactNodes, &contactNodes);
   EXPECT_GT(contactNodes, 20);  // h = 0.1 on a side of length 2, P2: about 41 nodes
   EXPECT_EQ(static_cast<long long>(p.qp.d->getGlobalLength()), contactNodes);
-  EXPECT_EQ(static_cast<long long>(p.qp.b->getGlobalLength()), 2 * p.space->space().numNodes());
+  EXPECT_EQ(static_cast<long long>(p.qp.b->getGlobalLength()), 2 * ds.numGlobalNodes());
+
+  // Each rank holds its part of the mesh only.
+  long long cells = 0;
+  const long long localCells = ds.mesh().numCells();
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &localCells, &cells);
+  EXPECT_EQ(cells, ds.numGlobalCells());
+  EXPECT_GT(localCells, 0);
+  if (comm->getSize() > 1) {
+    EXPECT_LT(localCells, ds.numGlobalCells());
+  }
 
   // The body sags onto the foundation: it converges, with contact somewhere.
   SolveResult r = InteriorPointSolver().solve(p.qp);
   EXPECT_TRUE(r.converged()) << r.message;
   EXPECT_GT(r.activeConstraints, 0);
   EXPECT_LT(r.objective, 0.0);
+}
+
+// Rank 0 alone reads the file, but every rank learns that it is missing.
+TEST(GmshProblem, MissingFileThrowsOnEveryRank) {
+  Teuchos::ParameterList problem("Problem");
+  problem.set("mesh: type", "gmsh");
+  problem.set("mesh: file", "/nonexistent/mesh.msh");
+  EXPECT_THROW(buildProblem(problem, Tpetra::getDefaultComm()), InputError);
 }
 
 }  // namespace

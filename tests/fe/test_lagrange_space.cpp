@@ -159,5 +159,27 @@ TEST(LagrangeSpace, BoundaryNodesAndFacets) {
     }
 }
 
+// A part's space takes the coordinates of the nodes past the vertices as given, and checks
+// their count; facetCell() names the cell of each boundary facet.
+TEST(LagrangeSpace, GivenNodeCoordinatesAndFacetCells) {
+  const SimplexMesh mesh = makeBoxMesh(3, {2, 1, 1}, {1, 1, 1});
+  const LagrangeSpace computed(mesh, 3);
+  std::vector<double> given(computed.nodeCoordinates().begin() + 3 * mesh.numVertices(),
+                            computed.nodeCoordinates().end());
+  for (double& x : given) x += 1.0;
+  const LagrangeSpace space(mesh, 3, given);
+  ASSERT_EQ(space.numNodes(), computed.numNodes());
+  for (long long i = 0; i < 3 * computed.numNodes(); ++i)
+    EXPECT_EQ(space.nodeCoordinates()[i], computed.nodeCoordinates()[i] + (i < 3 * mesh.numVertices() ? 0.0 : 1.0));
+  given.pop_back();
+  EXPECT_THROW(LagrangeSpace(mesh, 3, given), InputError);
+
+  const std::vector<std::pair<long long, int>> zmin = computed.boundaryFacets(mesh.tag("zmin"));
+  std::vector<std::pair<long long, int>> fromFacets;
+  for (long long f = 0; f < mesh.numFacets(); ++f)
+    if (mesh.facetTags[f] == mesh.tag("zmin")) fromFacets.push_back(computed.facetCell(f));
+  EXPECT_EQ(fromFacets, zmin);
+}
+
 }  // namespace
 }  // namespace signorini

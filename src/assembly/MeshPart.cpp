@@ -1,0 +1,131 @@
+#include "MeshPart.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <string>
+#include <type_traits>
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "signorini/Error.hpp"
+
+namespace signorini::detail {
+namespace {
+
+// Flat byte buffer of length-prefixed arrays of plain values.
+class Packer {
+ public:
+  template <class T>
+  void put(const std::vector<T>& values) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    putBytes(values.size(), values.data(), values.size() * sizeof(T));
+  }
+  void put(const std::string& text) { putBytes(text.size(), text.data(), text.size()); }
+  std::vector<char>& bytes() { return bytes_; }
+
+ private:
+  void putBytes(std::size_t count, const void* data, std::size_t size) {
+    const long long n = static_cast<long long>(count);
+    const std::size_t at = bytes_.size();
+    bytes_.resize(at + sizeof n + size);
+    std::memcpy(&bytes_[at], &n, sizeof n);
+    if (size > 0) std::memcpy(&bytes_[at + sizeof n], data, size);
+  }
+  std::vector<char> bytes_;
+};
+
+class Unpacker {
+ public:
+  explicit Unpacker(const std::vector<char>& bytes) : bytes_(bytes) {}
+  template <class T>
+  void get(std::vector<T>& values) {
+    values.resize(count());
+    getBytes(values.data(), values.size() * sizeof(T));
+  }
+  void get(std::string& text) {
+    text.resize(count());
+    getBytes(&text[0], text.size());
+  }
+
+ private:
+  std::size_t count() {
+    long long n = 0;
+    getBytes(&n, sizeof n);
+    return static_cast<std::size_t>(n);
+  }
+  void getBytes(void* data, std::size_t size) {
+    if (at_ + size > bytes_.size()) throw Error("mesh part: truncated message");
+    if (size > 0) std::memcpy(data, &bytes_[at_], size);
+    at_ += size;
+  }
+  const std::vector<char>& bytes_;
+  std::size_t at_ = 0;
+};
+
+// MPI counts are ints: large buffers go in pieces.
+constexpr long long kChunk = 1 << 30;
+
+}  // namespace
+
+void sendMeshPart(const Comm& comm, const MeshPart& part, int destination) {
+  Packer p;
+  p.put(std::vector<int>{part.mesh.dim});
+  p.put(part.mesh.vertices);
+  p.put(part.mesh.cells);
+  p.put(part.mesh.facets);
+  p.put(part.mesh.facetTags);
+  std::vector<int> tags;
+  for (const auto& [name, tag] : part.mesh.boundaryTags) {
+    p.put(name);
+    tags.push_back(tag);
+  }
+  p.put(tags);
+  p.put(part.globalCells);
+  p.put(part.nodeIds);
+  p.put(part.nodeOwners);
+  p.put(part.nodeCoordinates);
+  p.put(part.boundaryTags);
+  p.put(part.boundaryStart);
+  p.put(part.boundaryNodes);
+  const std::vector<char>& bytes = p.bytes();
+  const long long sizes[2] = {static_cast<long long>(bytes.size()),
+                              static_cast<long long>(part.mesh.boundaryTags.size())};
+  Teuchos::send(comm, 2, sizes, destination);
+  for (long long at = 0; at < sizes[0]; at += kChunk)
+    Teuchos::send(comm, static_cast<int>(std::min(kChunk, sizes[0] - at)), bytes.data() + at, destination);
+}
+
+MeshPart receiveMeshPart(const Comm& comm, int source) {
+  long long sizes[2] = {0, 0};
+  Teuchos::receive(comm, source, 2, sizes);
+  std::vector<char> bytes(sizes[0]);
+  for (long long at = 0; at < sizes[0]; at += kChunk)
+    Teuchos::receive(comm, source, static_cast<int>(std::min(kChunk, sizes[0] - at)), bytes.data() + at);
+
+  MeshPart part;
+  Unpacker u(bytes);
+  std::vector<int> dim;
+  u.get(dim);
+  if (dim.size() != 1) throw Error("mesh part: malformed message");
+  part.mesh.dim = dim[0];
+  u.get(part.mesh.vertices);
+  u.get(part.mesh.cells);
+  u.get(part.mesh.facets);
+  u.get(part.mesh.facetTags);
+  std::vector<std::string> names(sizes[1]);
+  for (std::string& name : names) u.get(name);
+  std::vector<int> tags;
+  u.get(tags);
+  if (tags.size() != names.size()) throw Error("mesh part: malformed message");
+  for (std::size_t i = 0; i < names.size(); ++i) part.mesh.boundaryTags[names[i]] = tags[i];
+  u.get(part.globalCells);
+  u.get(part.nodeIds);
+  u.get(part.nodeOwners);
+  u.get(part.nodeCoordinates);
+  u.get(part.boundaryTags);
+  u.get(part.boundaryStart);
+  u.get(part.boundaryNodes);
+  return part;
+}
+
+}  // namespace signorini::detail

@@ -1,0 +1,15 @@
+#pragma once
+// Private to the library: work only rank 0 does (reading or generating the global mesh, the
+// serial partition), with its errors thrown on every rank so that no rank waits forever.
+#include <functional>
+
+#include "signorini/TpetraTypes.hpp"
+
+namespace signorini::detail {
+
+// Runs `task` on rank 0 only. If it throws, every rank throws the same kind of error with
+// rank 0's message: InputError stays InputError, anything else (Error, bad_alloc...) becomes
+// Error. Collective over comm.
+void runOnRoot(const Comm& comm, const std::function<void()>& task);
+
+}  // namespace signorini::detail
