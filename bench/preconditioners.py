@@ -3,7 +3,8 @@
 sequences of the benchmark family (issue: Krylov iterations independent of mesh size and mu).
 
     /usr/bin/python3 bench/preconditioners.py [--ranks N] [--sequence 2d|3d|all] [--max-nx N]
-        [--max-nx-3d N] [--configs NAME,...] [--forcing adaptive|relative|both] [--reuse]
+        [--max-nx-3d N] [--configs NAME,...] [--full-sequence-configs NAME,...]
+        [--forcing adaptive|relative|both] [--reuse]
 
 For every (problem, configuration, forcing) it runs build/bin/signorini, reads summary.json
 and history.csv, and writes into bench/results: preconditioners.json (every run, with its
@@ -83,13 +84,17 @@ def main():
     parser.add_argument("--max-nx", type=int, default=10**9)
     parser.add_argument("--max-nx-3d", type=int, default=10**9)
     parser.add_argument("--configs", default=",".join(CONFIGS), help="comma-separated names of CONFIGS")
+    parser.add_argument("--full-sequence-configs", default="",
+                        help="configurations run on every member; the others stop at --max-nx / --max-nx-3d")
     parser.add_argument("--forcing", default="both", choices=["adaptive", "relative", "both"])
     parser.add_argument("--reuse", action="store_true", help="reuse the outputs of earlier runs in the workdir")
     parser.add_argument("--output", default=os.path.join(ROOT, "bench", "results"), help="where results go")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "preconditioners"))
     args = parser.parse_args()
     names = ["2d", "3d"] if args.sequence == "all" else [args.sequence]
+    full = [c for c in args.full_sequence_configs.split(",") if c]
     configs = [c for c in args.configs.split(",") if c]
+    configs += [c for c in full if c not in configs]
     for c in configs:
         if c not in CONFIGS:
             parser.error(f"unknown configuration {c!r}; known: {', '.join(CONFIGS)}")
@@ -97,9 +102,10 @@ def main():
     records = []
     for name in names:
         for xml, nx in SEQUENCES[name]:
-            if nx > (args.max_nx_3d if name == "3d" else args.max_nx):
-                continue
+            limited = nx > (args.max_nx_3d if name == "3d" else args.max_nx)
             for config in configs:
+                if limited and config not in full:
+                    continue
                 for forcing in forcings:
                     out = os.path.join(args.workdir, "-".join([xml.replace("/", "-"), config.replace(" ", "-"), forcing]))
                     summary, history = run(xml, {**CONFIGS[config], **FORCING[forcing]}, args.ranks, out, args.reuse)

@@ -1,6 +1,7 @@
 #include "signorini/ElasticityAssembler.hpp"
 
 #include <algorithm>
+#include <limits>
 
 #include <Kokkos_DualView.hpp>
 #include <Teuchos_CommHelpers.hpp>
@@ -184,10 +185,30 @@ RCP<MultiVector> rigidBodyModes(const DistributedSpace& ds) {
   auto modes = rcp(new MultiVector(ds.ownedDofMap(), numModes));
   const auto& coords = ds.space().nodeCoordinates();
   const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
+  // Rotations about a centre c outside the mesh's bounding box in every coordinate, so that
+  // no node lies on a rotation axis: a small aggregate of such nodes would give MueLu's
+  // tentative prolongator a zero nullspace column (seen on 4 ranks with axes through c = 0).
+  double lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0}, centre[3] = {0, 0, 0};
+  for (int c = 0; c < dim; ++c) {
+    lower[c] = std::numeric_limits<double>::max();
+    upper[c] = -std::numeric_limits<double>::max();
+  }
+  for (std::size_t i = 0; i < numOwned; ++i)
+    for (int c = 0; c < dim; ++c) {
+      lower[c] = std::min(lower[c], coords[dim * ds.overlapSpaceNodes()[i] + c]);
+      upper[c] = std::max(upper[c], coords[dim * ds.overlapSpaceNodes()[i] + c]);
+    }
+  {
+    double minimum[3], maximum[3];
+    Teuchos::reduceAll(*ds.comm(), Teuchos::REDUCE_MIN, dim, lower, minimum);
+    Teuchos::reduceAll(*ds.comm(), Teuchos::REDUCE_MAX, dim, upper, maximum);
+    for (int c = 0; c < dim; ++c) centre[c] = minimum[c] - std::max(maximum[c] - minimum[c], 1.0);
+  }
   for (int k = 0; k < numModes; ++k) {
     auto data = modes->getDataNonConst(k);
     for (std::size_t i = 0; i < numOwned; ++i) {
-      const double* x = &coords[dim * ds.overlapSpaceNodes()[i]];
+      double x[3];
+      for (int c = 0; c < dim; ++c) x[c] = coords[dim * ds.overlapSpaceNodes()[i] + c] - centre[c];
       double* u = &data[dim * i];
       if (k < dim) {
         u[k] = 1.0;  // translation
@@ -195,7 +216,7 @@ RCP<MultiVector> rigidBodyModes(const DistributedSpace& ds) {
         u[0] = -x[1];
         u[1] = x[0];
       } else {
-        // rotation about axis a = k - 3: u = e_a x (x - 0)
+        // rotation about the axis through the centre along e_a, a = k - 3: u = e_a x x
         const int a = k - 3, p = (a + 1) % 3, q = (a + 2) % 3;
         u[p] = -x[q];
         u[q] = x[p];
