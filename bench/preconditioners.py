@@ -2,7 +2,8 @@
 """Krylov iterations per Newton step against mu, for each preconditioner configuration, on
 sequences of the benchmark family (issue: Krylov iterations independent of mesh size and mu).
 
-    /usr/bin/python3 bench/preconditioners.py [--ranks N] [--sequence 2d|3d|all] [--max-nx N]
+    /usr/bin/python3 bench/preconditioners.py [--ranks N] [--sequence all|2d,3d,2d-p2,2d-p3,3d-p2]
+        [--max-nx N] [--name BASENAME]
         [--max-nx-3d N] [--configs NAME,...] [--full-sequence-configs NAME,...]
         [--forcing adaptive|relative|both] [--reuse]
 
@@ -51,6 +52,9 @@ SEQUENCES = {
     "2d": [("paper/M", 10), ("paper/G", 20), ("paper/K", 50), ("paper/J", 100), ("family/2d-p1-nx200", 200),
            ("family/2d-p1-nx400", 400), ("family/2d-p1-nx800", 800)],
     "3d": [("paper/E", 10), ("paper/L", 20), ("family/3d-p1-nx40", 40), ("family/3d-p1-nx64", 64)],
+    "2d-p2": [("paper/H", 20), ("family/2d-p2-nx200", 200)],
+    "2d-p3": [("paper/I", 20), ("family/2d-p3-nx100", 100)],
+    "3d-p2": [("paper/C", 4), ("paper/D", 8), ("paper/F", 10), ("family/3d-p2-nx32", 32)],
 }
 
 
@@ -88,10 +92,14 @@ def main():
                         help="configurations run on every member; the others stop at --max-nx / --max-nx-3d")
     parser.add_argument("--forcing", default="both", choices=["adaptive", "relative", "both"])
     parser.add_argument("--reuse", action="store_true", help="reuse the outputs of earlier runs in the workdir")
+    parser.add_argument("--name", default="preconditioners", help="basename of the result files")
     parser.add_argument("--output", default=os.path.join(ROOT, "bench", "results"), help="where results go")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "preconditioners"))
     args = parser.parse_args()
-    names = ["2d", "3d"] if args.sequence == "all" else [args.sequence]
+    names = ["2d", "3d"] if args.sequence == "all" else args.sequence.split(",")
+    for name in names:
+        if name not in SEQUENCES:
+            parser.error(f"unknown sequence {name!r}; known: {', '.join(SEQUENCES)}")
     full = [c for c in args.full_sequence_configs.split(",") if c]
     configs = [c for c in args.configs.split(",") if c]
     configs += [c for c in full if c not in configs]
@@ -102,7 +110,7 @@ def main():
     records = []
     for name in names:
         for xml, nx in SEQUENCES[name]:
-            limited = nx > (args.max_nx_3d if name == "3d" else args.max_nx)
+            limited = nx > (args.max_nx_3d if name.startswith("3d") else args.max_nx)
             for config in configs:
                 if limited and config not in full:
                     continue
@@ -116,7 +124,7 @@ def main():
                           f"max/system {summary['max_krylov_per_newton']:4d}, setups {summary['preconditioner_setups']}, "
                           f"solve {summary['time']['solve']:.2f} s, {summary['status']}", flush=True)
     os.makedirs(args.output, exist_ok=True)
-    with open(os.path.join(args.output, "preconditioners.json"), "w") as f:
+    with open(os.path.join(args.output, args.name + ".json"), "w") as f:
         json.dump(records, f, indent=1)
 
     rows = ["| sequence | nx | n | configuration | forcing | it | Krylov total | max per Newton system | "
@@ -134,11 +142,15 @@ def main():
         for config in configs:
             for forcing in forcings:
                 group = [r for r in records if r["sequence"] == name and r["config"] == config and r["forcing"] == forcing]
-                if len(group) < 2:
-                    continue
-                a, b, c = ratios(group)
-                rows.append(f"| {name} | {group[0]['nx']}–{group[-1]['nx']} | {config} | {forcing} | {a:.2f} | {b:.2f} | {c:.2f} |")
-    with open(os.path.join(args.output, "preconditioners.md"), "w") as f:
+                # Over the members every configuration ran, then over all of this one's.
+                common = [r for r in group if r["nx"] <= (args.max_nx_3d if name.startswith("3d") else args.max_nx)]
+                for members in ([common, group] if len(common) < len(group) else [group]):
+                    if len(members) < 2:
+                        continue
+                    a, b, c = ratios(members)
+                    rows.append(f"| {name} | {members[0]['nx']}–{members[-1]['nx']} | {config} | {forcing} | "
+                                f"{a:.2f} | {b:.2f} | {c:.2f} |")
+    with open(os.path.join(args.output, args.name + ".md"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("\n".join(rows))
 
@@ -155,11 +167,11 @@ def main():
             ax.invert_xaxis()
             ax.set_xlabel("mu (target of the Newton step)")
             ax.set_ylabel("Krylov iterations per Newton step")
-            ax.set_title(f"{name.upper()} P1, {config}", fontsize=9)
+            ax.set_title(f"{name.upper()}{'' if '-p' in name else ' P1'}, {config}", fontsize=9)
             ax.legend(fontsize=6)
             ax.grid(alpha=0.3)
     fig.tight_layout()
-    fig.savefig(os.path.join(args.output, "preconditioners.png"), dpi=100)
+    fig.savefig(os.path.join(args.output, args.name + ".png"), dpi=100)
 
 
 if __name__ == "__main__":
