@@ -5,7 +5,9 @@
 //   "none";
 //   "amg of Q":  MueLu on Q, set up once and reused for every step;
 //   "amg of H":  MueLu on the assembled Q + A^T D A (assembled for the preconditioner only),
-//                rebuilt each step, with MueLu's "reuse: type" if the MueLu list sets it;
+//                rebuilt when some constraint's relative weight D_i / (D_i + q_i) moved by
+//                more than "amg of H: rebuild tolerance" since the last build (0: every
+//                step, 1: never after the first), with MueLu's "reuse: type" if set;
 // and its "contact correction": the AMG combined with an exact solve on the contact DOFs
 // (see SubspaceCorrectedPreconditioner), "none", "additive" or "multiplicative".
 #include <memory>

@@ -1,5 +1,6 @@
 #include "signorini/ContactSubspaceSolver.hpp"
 
+#include <algorithm>
 #include <unordered_map>
 #include <vector>
 

@@ -46,8 +46,9 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   prec.set("amg of H: rebuild tolerance", 0.9,
            "\"amg of H\" is rebuilt when the relative weight D_i / (D_i + q_i) of some constraint i "
            "(q_i = a_i^T diag(Q) a_i, its stiffness) moved by more than this since the last build; "
-           "0 rebuilds at every Newton step; the default rebuilds when a constraint switches between "
-           "free and firmly active, and leaves the rest to the contact correction",
+           "0 rebuilds at every Newton step, 1 never after the first; the default rebuilds when a "
+           "constraint switches between free and firmly active, and leaves the rest to the contact "
+           "correction",
            rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
   prec.set("contact correction", "multiplicative",
            "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
