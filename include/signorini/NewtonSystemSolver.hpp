@@ -33,7 +33,9 @@ class NewtonSystemSolver {
   void setWeights(const Vector& D);
 
   // Solves H x = r from x = 0 until ||r - H x|| <= absoluteTolerance.
-  KrylovResult solve(const Vector& r, Vector& x, double absoluteTolerance);
+  // With `fromGuess`, starts from the x given (e.g. the predictor's step for the corrector,
+  // whose right-hand side differs by the centering terms only) instead of x = 0.
+  KrylovResult solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess = false);
 
   const BarrierHessianOperator& hessian() const { return *H_; }
   int maxIterations() const { return maxIterations_; }

@@ -119,9 +119,9 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
   }
 }
 
-KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absoluteTolerance) {
-  x.putScalar(0.0);
+KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess) {
   const double rnorm = r.norm2();
+  if (!fromGuess || rnorm == 0.0) x.putScalar(0.0);
   if (rnorm == 0.0) return KrylovResult{0, true, 0.0};
   RCP<const Operator> M = amg_ ? amg_->getOperator() : Teuchos::null;
   if (!subspace_.is_null()) M = rcp(new SubspaceCorrectedPreconditioner(H_, M, subspace_, correction_));

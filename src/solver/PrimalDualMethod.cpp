@@ -30,6 +30,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
   Teuchos::Time timer("primal-dual");
   timer.start(true);
   const std::string centering = p.get<std::string>("primal-dual: centering");
+  const bool correctorFromPredictor = p.get<bool>("primal-dual: corrector from predictor");
   const auto vmap = qp.Q->getDomainMap();
   const auto cmap = qp.A->getRangeMap();
   const long long m = cmap->getGlobalNumElements();
@@ -72,7 +73,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
   double mu = 0;
 
   // Direction for a complementarity residual rc; returns the Krylov result.
-  auto direction = [&](const Vector& rcv) {
+  auto direction = [&](const Vector& rcv, bool fromCurrentStep) {
     {
       auto rcd = rcv.getData();
       auto yd = y.getData();
@@ -86,7 +87,8 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     const double residualScale = std::max(rdNorm, mu0 > 0 ? bnorm * mu / mu0 : 0.0);
     // ||F|| with ||s.y - mu_target|| estimated by sqrt(m) mu
     const double kktNorm = std::sqrt(rdNorm * rdNorm + rpNorm * rpNorm + static_cast<double>(m) * mu * mu);
-    KrylovResult kr = newton.solve(rhs, dv, forcing.tolerance(rhs.norm2(), residualScale, kktNorm));
+    KrylovResult kr =
+        newton.solve(rhs, dv, forcing.tolerance(rhs.norm2(), residualScale, kktNorm), fromCurrentStep);
     qp.A->apply(dv, Adv);
     ds.update(-1.0, rp, -1.0, Adv, 0.0);
     {
@@ -158,14 +160,14 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     int krylovThisStep = 0;
     double muTarget = 0;
     bool krylovFailed = false;
-    auto takeDirection = [&](const Vector& rcv) {
-      KrylovResult kr = direction(rcv);
+    auto takeDirection = [&](const Vector& rcv, bool fromCurrentStep) {
+      KrylovResult kr = direction(rcv, fromCurrentStep);
       krylovThisStep += kr.iterations;
       if (!kr.converged && !(kr.relativeResidual < 1.0)) krylovFailed = true;
     };
     if (centering == "mehrotra") {
       rc.elementWiseMultiply(1.0, s, y, 0.0);
-      takeDirection(rc);
+      takeDirection(rc, false);
       const double ap = std::min(1.0, maxStepToBoundary(s, ds)), ad = std::min(1.0, maxStepToBoundary(y, dy));
       double muAffine = 0;
       if (m > 0) {
@@ -183,7 +185,9 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
         auto dyd = dy.getData();
         forEach(rc, [&](std::size_t i) { return sd[i] * yd[i] + dsd[i] * dyd[i] - muTarget; });
       }
-      takeDirection(rc);
+      // The corrector's right-hand side differs from the predictor's by the centering and
+      // second-order terms only: its CG may start from the predictor's step.
+      takeDirection(rc, correctorFromPredictor);
     } else {
       muTarget = muFactor * mu;
       {
@@ -191,7 +195,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
         auto yd = y.getData();
         forEach(rc, [&](std::size_t i) { return sd[i] * yd[i] - muTarget; });
       }
-      takeDirection(rc);
+      takeDirection(rc, false);
     }
     if (krylovFailed) {
       result.status = SolveStatus::KrylovFailure;

@@ -238,6 +238,13 @@ TEST(InteriorPoint, ForcingRulesAndKrylovSolversAreSelectable) {
       EXPECT_TRUE(r.converged()) << forcing << " " << m << ": " << r.message;
       EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << forcing << " " << m;
     }
+  {
+    Teuchos::ParameterList params = method("primal-dual");
+    params.set("primal-dual: corrector from predictor", true);
+    SolveResult r = InteriorPointSolver(params).solve(p.qp);
+    EXPECT_TRUE(r.converged()) << "corrector from predictor: " << r.message;
+    EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << "corrector from predictor";
+  }
   for (const char* krylov : {"MINRES", "GMRES"}) {
     Teuchos::ParameterList params = method("primal-dual");
     params.sublist("Krylov").set("solver", krylov);
