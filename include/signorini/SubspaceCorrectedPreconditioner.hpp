@@ -29,6 +29,8 @@ class SubspaceCorrectedPreconditioner : public Operator {
  private:
   RCP<const Operator> H_, B_, S_;
   bool multiplicative_;
+  // Scratch, allocated once per number of columns: apply() runs in every Krylov iteration.
+  mutable RCP<MultiVector> Z_, correction_, residual_;
 };
 
 }  // namespace signorini

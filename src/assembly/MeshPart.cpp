@@ -65,28 +65,34 @@ class Unpacker {
 // MPI counts are ints: large buffers go in pieces.
 constexpr long long kChunk = 1 << 30;
 
+// The arrays of a part, in message order: one list for sender and receiver.
+template <class Part, class Visit>
+void forEachArray(Part& part, Visit&& visit) {
+  visit(part.mesh.vertices);
+  visit(part.mesh.cells);
+  visit(part.mesh.facets);
+  visit(part.mesh.facetTags);
+  visit(part.globalCells);
+  visit(part.nodeIds);
+  visit(part.nodeOwners);
+  visit(part.nodeCoordinates);
+  visit(part.boundaryTags);
+  visit(part.boundaryStart);
+  visit(part.boundaryNodes);
+}
+
 }  // namespace
 
 void sendMeshPart(const Comm& comm, const MeshPart& part, int destination) {
   Packer p;
   p.put(std::vector<int>{part.mesh.dim});
-  p.put(part.mesh.vertices);
-  p.put(part.mesh.cells);
-  p.put(part.mesh.facets);
-  p.put(part.mesh.facetTags);
   std::vector<int> tags;
   for (const auto& [name, tag] : part.mesh.boundaryTags) {
     p.put(name);
     tags.push_back(tag);
   }
   p.put(tags);
-  p.put(part.globalCells);
-  p.put(part.nodeIds);
-  p.put(part.nodeOwners);
-  p.put(part.nodeCoordinates);
-  p.put(part.boundaryTags);
-  p.put(part.boundaryStart);
-  p.put(part.boundaryNodes);
+  forEachArray(part, [&](const auto& values) { p.put(values); });
   const std::vector<char>& bytes = p.bytes();
   const long long sizes[2] = {static_cast<long long>(bytes.size()),
                               static_cast<long long>(part.mesh.boundaryTags.size())};
@@ -108,23 +114,13 @@ MeshPart receiveMeshPart(const Comm& comm, int source) {
   u.get(dim);
   if (dim.size() != 1) throw Error("mesh part: malformed message");
   part.mesh.dim = dim[0];
-  u.get(part.mesh.vertices);
-  u.get(part.mesh.cells);
-  u.get(part.mesh.facets);
-  u.get(part.mesh.facetTags);
   std::vector<std::string> names(sizes[1]);
   for (std::string& name : names) u.get(name);
   std::vector<int> tags;
   u.get(tags);
   if (tags.size() != names.size()) throw Error("mesh part: malformed message");
   for (std::size_t i = 0; i < names.size(); ++i) part.mesh.boundaryTags[names[i]] = tags[i];
-  u.get(part.globalCells);
-  u.get(part.nodeIds);
-  u.get(part.nodeOwners);
-  u.get(part.nodeCoordinates);
-  u.get(part.boundaryTags);
-  u.get(part.boundaryStart);
-  u.get(part.boundaryNodes);
+  forEachArray(part, [&](auto& values) { u.get(values); });
   return part;
 }
 

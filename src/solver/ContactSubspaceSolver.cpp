@@ -31,6 +31,9 @@ struct ContactSubspaceSolver::Impl {
   RCP<const Map> localDofs, localConstraints;
   RCP<BarrierHessianOperator> hessian;
   RCP<DirectSolver> solver;
+  // Scratch of apply(), which runs in every Krylov iteration; sized for `numVectors` columns.
+  std::size_t numVectors = 0;
+  RCP<MultiVector> rootX, rootY, localB, localX, correction;
 };
 
 namespace {
@@ -143,20 +146,28 @@ void ContactSubspaceSolver::setWeights(const Vector& D) {
 
 void ContactSubspaceSolver::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, Scalar alpha,
                                   Scalar beta) const {
-  const Impl& s = *impl_;
+  Impl& s = *impl_;
   const std::size_t numVectors = X.getNumVectors();
-  MultiVector rootX(s.rootDofs, numVectors), rootY(s.rootDofs, numVectors);
-  rootX.doImport(X, *s.toRootDofs, Tpetra::INSERT);
+  if (s.numVectors != numVectors) {
+    s.numVectors = numVectors;
+    s.rootX = rcp(new MultiVector(s.rootDofs, numVectors));
+    s.rootY = rcp(new MultiVector(s.rootDofs, numVectors));
+    s.correction = rcp(new MultiVector(s.dofMap, numVectors));
+    if (s.onRoot) {
+      s.localB = rcp(new MultiVector(s.localDofs, numVectors));
+      s.localX = rcp(new MultiVector(s.localDofs, numVectors));
+    }
+  }
+  s.rootX->doImport(X, *s.toRootDofs, Tpetra::INSERT);
   if (s.onRoot && s.localDofs->getNodeNumElements() > 0) {
     if (s.solver.is_null()) throw Error("ContactSubspaceSolver::apply called before setWeights()");
-    auto b = rcp(new MultiVector(s.localDofs, numVectors)), x = rcp(new MultiVector(s.localDofs, numVectors));
-    copyLocalRows(rootX, *b);
-    s.solver->solve(x.ptr(), b.ptr());
-    copyLocalRows(*x, rootY);
+    copyLocalRows(*s.rootX, *s.localB);
+    s.solver->solve(s.localX.ptr(), s.localB.ptr());
+    copyLocalRows(*s.localX, *s.rootY);
   }
-  MultiVector correction(s.dofMap, numVectors);
-  correction.doExport(rootY, *s.toRootDofs, Tpetra::INSERT);
-  Y.update(alpha, correction, beta);
+  s.correction->putScalar(0.0);  // the export writes the contact DOFs only
+  s.correction->doExport(*s.rootY, *s.toRootDofs, Tpetra::INSERT);
+  Y.update(alpha, *s.correction, beta);
 }
 
 RCP<const Map> ContactSubspaceSolver::getDomainMap() const { return impl_->dofMap; }

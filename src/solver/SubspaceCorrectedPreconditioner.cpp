@@ -17,14 +17,18 @@ SubspaceCorrectedPreconditioner::SubspaceCorrectedPreconditioner(RCP<const Opera
 void SubspaceCorrectedPreconditioner::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, Scalar alpha,
                                             Scalar beta) const {
   const std::size_t numVectors = X.getNumVectors();
+  if (Z_.is_null() || Z_->getNumVectors() != numVectors) {
+    Z_ = rcp(new MultiVector(H_->getDomainMap(), numVectors));
+    correction_ = rcp(new MultiVector(H_->getDomainMap(), numVectors));
+    residual_ = rcp(new MultiVector(H_->getRangeMap(), numVectors));
+  }
+  MultiVector &Z = *Z_, &correction = *correction_, &residual = *residual_;
   // Corrections go through a scratch vector: not every preconditioner honours beta.
-  MultiVector Z(H_->getDomainMap(), numVectors), correction(H_->getDomainMap(), numVectors);
   if (!multiplicative_) {
     B_->apply(X, Z);
     S_->apply(X, correction);
     Z.update(1.0, correction, 1.0);
   } else {
-    MultiVector residual(H_->getRangeMap(), numVectors);
     S_->apply(X, Z);
     for (const Operator* M : {B_.get(), S_.get()}) {
       residual.assign(X);
