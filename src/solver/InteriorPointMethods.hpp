@@ -1,5 +1,7 @@
 #pragma once
 // Private to src/solver: the two interior point methods and what they share.
+#include <string>
+
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_Time.hpp>
 
@@ -35,6 +37,10 @@ ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, con
 void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, const Vector& slack,
                   SolveResult& result);
 
+// The status message of a converged solve, with the KKT tolerance written in full (1e-08,
+// not std::to_string's 0.000000).
+std::string convergedMessage(double kktTolerance);
+
 // Fills v with the initial guess or zero.
 RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
 
@@ -50,7 +56,7 @@ RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
 struct ForcingRule {
   std::string type;
   double eta = 0.1;
-  double safety = 0.1;
+  double safety = 0.3;
   double floor = 0.0;
   // Eisenstat-Walker state: the previous nonlinear residual norm and forcing term.
   double previousNorm = -1.0, previousEta = 0.0;

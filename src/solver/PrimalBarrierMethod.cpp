@@ -255,7 +255,7 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
     lambda.update(-1.0, y, 0.0);
     if (kktMeasures(qp, *v, lambda).worst() <= tol) {
       result.status = SolveStatus::Converged;
-      result.message = "every relative KKT measure is below " + std::to_string(tol);
+      result.message = convergedMessage(tol);
       break;
     }
     if (k + 1 == maxIterations) {

@@ -132,7 +132,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     }
     if (kkt.worst() <= tol) {
       result.status = SolveStatus::Converged;
-      result.message = "every relative KKT measure is below " + std::to_string(tol);
+      result.message = convergedMessage(tol);
       break;
     }
     if (mu0 > 0 && mu < 1e-30 * mu0) {
