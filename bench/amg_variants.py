@@ -1,0 +1,92 @@
+#!/usr/bin/python3
+"""MueLu variants for the elasticity part of the Newton systems: Krylov iterations of the
+first main iteration (predictor and corrector) solved to a fixed relative residual of 1e-8,
+across the 2D and 3D P1 sequences, with the AMG's operator complexity and times.
+
+    /usr/bin/python3 bench/amg_variants.py [--ranks N] [--variants NAME,...] [--problems XML,...]
+
+Writes bench/results/amg-variants.{json,md}. The first Newton systems have D close to zero,
+so their counts measure the AMG of the elasticity operator itself, which is where the
+mesh dependence of the default configuration comes from (bench/results/preconditioners.md).
+"""
+import argparse
+import json
+import os
+import re
+import subprocess
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
+MUELU = "Solver/Preconditioner/MueLu/"
+VARIANTS = {
+    "default": {},
+    "W-cycle": {"cycle type": "W"},
+    "Chebyshev degree 3": {"smoother: params/chebyshev: degree": "3"},
+    "drop tol 0.02": {"aggregation: drop tol": "0.02"},
+    "drop tol 0.1": {"aggregation: drop tol": "0.1"},
+    "W + Chebyshev 3 + drop tol 0.02": {"cycle type": "W", "smoother: params/chebyshev: degree": "3",
+                                        "aggregation: drop tol": "0.02"},
+    "unsmoothed aggregation + W": {"multigrid algorithm": "unsmoothed", "cycle type": "W"},
+}
+PROBLEMS = ["paper/M", "paper/J", "family/2d-p1-nx400", "family/2d-p1-nx800", "paper/E", "paper/L",
+            "family/3d-p1-nx40"]
+TIMERS = {"amg_setup": "Signorini: 3b AMG setup", "krylov": "Signorini: 3c Krylov"}
+
+
+def run(problem, settings, ranks, out):
+    cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"),
+           os.path.join(ROOT, "xml", problem + ".xml"), "--output", out, "--set", "Output/write solution=false",
+           "--set", "Solver/forcing: type=relative", "--set", "Solver/forcing: eta=1e-8",
+           "--set", "Solver/maximum iterations=1", "--set", MUELU + "verbosity=medium"]
+    for key, value in settings.items():
+        cmd += ["--set", f"{MUELU}{key}={value}"]
+    log = subprocess.run(cmd, env=ENV, capture_output=True, text=True, check=False).stdout
+    with open(os.path.join(out, "summary.json")) as f:
+        summary = json.load(f)
+    complexity = re.search(r"Operator complexity\s*=\s*([0-9.]+)", log)
+    levels = re.search(r"Number of levels\s*=\s*([0-9]+)", log)
+    timers = {}
+    for key, name in TIMERS.items():
+        m = re.search(re.escape(name) + r"\s+([0-9.eE+-]+)", log)  # first column: rank 0's time
+        timers[key] = float(m.group(1)) if m else None
+    return {"problem": problem, "n": summary["n"], "krylov_first_iteration": summary["krylov_iterations"],
+            "max_per_system": summary["max_krylov_per_newton"], "status": summary["status"],
+            "operator_complexity": float(complexity.group(1)) if complexity else None,
+            "levels": int(levels.group(1)) if levels else None, "solve_seconds": summary["time"]["solve"],
+            **{k + "_seconds": v for k, v in timers.items()}}
+
+
+def main():
+    parser = argparse.ArgumentParser()
+    parser.add_argument("--ranks", type=int, default=2)
+    parser.add_argument("--variants", default=",".join(VARIANTS))
+    parser.add_argument("--problems", default=",".join(PROBLEMS))
+    parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "amg-variants"))
+    args = parser.parse_args()
+    records = []
+    for variant in args.variants.split(","):
+        for problem in args.problems.split(","):
+            out = os.path.join(args.workdir, variant.replace(" ", "-").replace("+", "") + "-" + problem.replace("/", "-"))
+            r = {"variant": variant, "settings": VARIANTS[variant], "ranks": args.ranks,
+                 **run(problem, VARIANTS[variant], args.ranks, out)}
+            records.append(r)
+            print(f"{variant:32s} {problem:22s} max/system {r['max_per_system']:3d} complexity "
+                  f"{r['operator_complexity']} setup {r['amg_setup_seconds']} s, Krylov {r['krylov_seconds']} s",
+                  flush=True)
+    os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
+    with open(os.path.join(ROOT, "bench", "results", "amg-variants.json"), "w") as f:
+        json.dump(records, f, indent=1)
+    rows = ["| variant | problem | n | levels | operator complexity | CG iterations to the end of the first main iteration | "
+            "max per system | AMG setup [s] | Krylov [s] |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in records:
+        rows.append(f"| {r['variant']} | {r['problem']} | {r['n']} | {r['levels']} | {r['operator_complexity']} | "
+                    f"{r['krylov_first_iteration']} | {r['max_per_system']} | {r['amg_setup_seconds']} | "
+                    f"{r['krylov_seconds']} |")
+    with open(os.path.join(ROOT, "bench", "results", "amg-variants.md"), "w") as f:
+        f.write("\n".join(rows) + "\n")
+    print("\n".join(rows))
+
+
+if __name__ == "__main__":
+    main()
