@@ -262,4 +262,16 @@ TEST(InteriorPoint, IterationLimitIsReportedWithAHint) {
   EXPECT_NE(r.message.find("maximum iterations"), std::string::npos);
 }
 
+// The message names the tolerance met (std::to_string printed 1e-7 as 0.000000).
+TEST(InteriorPoint, ConvergedMessageNamesTheTolerance) {
+  AssembledProblem p = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm());
+  for (const char* m : {"primal-dual", "primal"}) {
+    Teuchos::ParameterList params = method(m);
+    params.set("kkt: tolerance", 1e-7);
+    SolveResult r = InteriorPointSolver(params).solve(p.qp);
+    EXPECT_TRUE(r.converged()) << m << ": " << r.message;
+    EXPECT_EQ(r.message, "every relative KKT measure is below 1e-07") << m;
+  }
+}
+
 }  // namespace
