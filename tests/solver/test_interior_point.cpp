@@ -11,6 +11,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "signorini/Error.hpp"
 #include "signorini/InteriorPointSolver.hpp"
 #include "support/ActiveSetReference.hpp"
 #include "support/TestProblems.hpp"
@@ -260,6 +261,15 @@ TEST(InteriorPoint, IterationLimitIsReportedWithAHint) {
   SolveResult r = InteriorPointSolver(params).solve(buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp);
   EXPECT_EQ(r.status, SolveStatus::IterationLimit);
   EXPECT_NE(r.message.find("maximum iterations"), std::string::npos);
+}
+
+// The forcing safety stays below 1: at 1 a step need not reduce the dual residual.
+TEST(InteriorPoint, ForcingSafetyIsLimitedBelowOne) {
+  Teuchos::ParameterList params = method("primal-dual");
+  params.set("forcing: safety", 0.9);
+  EXPECT_NO_THROW(InteriorPointSolver{params});
+  params.set("forcing: safety", 1.0);
+  EXPECT_THROW(InteriorPointSolver{params}, InputError);
 }
 
 // The message names the tolerance met (std::to_string printed 1e-7 as 0.000000).
