@@ -38,10 +38,13 @@ MueLuPreconditioner::MueLuPreconditioner(const Teuchos::ParameterList& params, i
       nullspace_(std::move(nullspace)),
       coordinates_(std::move(coordinates)) {
   // Our smoother parameters belong to our smoother choice: a user who picks another
-  // smoother (or coarse solver) gets that package's defaults for it, not ours.
+  // smoother (or coarse solver) gets that package's defaults for it, plus whatever params
+  // the user gives, never ours (Chebyshev's degree is an error for a relaxation).
   for (const char* level : {"smoother", "coarse"}) {
     const std::string type = std::string(level) + ": type", sub = std::string(level) + ": params";
-    if (params.isParameter(type) && !params.isSublist(sub)) params_.remove(sub);
+    if (params.isType<std::string>(type) &&
+        params.get<std::string>(type) != params_.get<std::string>(type))
+      params_.remove(sub);
   }
   params_.setParameters(params);
 }

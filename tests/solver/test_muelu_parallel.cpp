@@ -92,4 +92,25 @@ TEST(MueLuParallel, Elasticity3DDefaultsConvergeFast) {
   EXPECT_LE(r.iterations, 40);
 }
 
+// A smoother other than ours starts from the package's defaults plus the user's params,
+// with or without a params sublist; the same smoother merges the user's params into ours.
+TEST(MueLuParallel, UserSmootherTypeDropsOurSmootherParams) {
+  Teuchos::ParameterList user;
+  user.set("smoother: type", "RELAXATION");
+  user.sublist("smoother: params").set("relaxation: type", "Symmetric Gauss-Seidel");
+  MueLuPreconditioner other(user, 2, Teuchos::null, Teuchos::null);
+  const auto& sp = other.parameters().sublist("smoother: params");
+  EXPECT_FALSE(sp.isParameter("chebyshev: degree"));
+  EXPECT_EQ(sp.get<std::string>("relaxation: type"), "Symmetric Gauss-Seidel");
+  EXPECT_TRUE(other.parameters().sublist("coarse: params").isParameter("chebyshev: degree"));
+
+  Teuchos::ParameterList same;
+  same.set("smoother: type", "CHEBYSHEV");
+  same.sublist("smoother: params").set("chebyshev: degree", 3);
+  MueLuPreconditioner merged(same, 2, Teuchos::null, Teuchos::null);
+  const auto& mp = merged.parameters().sublist("smoother: params");
+  EXPECT_EQ(mp.get<int>("chebyshev: degree"), 3);
+  EXPECT_DOUBLE_EQ(mp.get<double>("chebyshev: ratio eigenvalue"), 7.0);
+}
+
 }  // namespace
