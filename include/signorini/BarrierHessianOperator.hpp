@@ -4,6 +4,8 @@
 // never formed into Q.
 #include <Tpetra_Operator.hpp>
 
+#include <vector>
+
 #include "signorini/TpetraTypes.hpp"
 
 namespace signorini {
@@ -25,7 +27,9 @@ class BarrierHessianOperator : public Operator {
   bool hasTransposeApply() const override { return true; }
 
   // Q + A^T D A as an assembled matrix (needs Q to be a CrsMatrix): for preconditioners
-  // and tests, never for applying H.
+  // and tests, never for applying H. When every entry of A^T D A falls on an entry of Q's
+  // graph in a row this rank owns (contact constraints couple the DOFs of one node), the
+  // result shares Q's graph and costs a copy of Q's values; otherwise it is a general sum.
   RCP<CrsMatrix> assemble() const;
 
  private:
@@ -33,6 +37,15 @@ class BarrierHessianOperator : public Operator {
   RCP<const CrsMatrix> A_;
   RCP<Vector> D_;
   mutable RCP<MultiVector> AX_;  // scratch, resized to the number of columns of X
+
+  // Where A^T D A adds into Q's local values array: entry e adds D[constraint[e]] *
+  // coefficient[e] at position[e]. Found on the first assemble(); `inQPattern_` is -1 until
+  // then, and 0 if some entry is missing from Q's graph on some rank.
+  mutable int inQPattern_ = -1;
+  mutable std::vector<std::size_t> position_;
+  mutable std::vector<int> constraint_;
+  mutable std::vector<double> coefficient_;
+  bool findPositionsInQPattern(const CrsMatrix& Q) const;
 };
 
 }  // namespace signorini

@@ -3,6 +3,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_Vector.hpp>
+#include <Teuchos_CommHelpers.hpp>
 
 #include "signorini/Error.hpp"
 
@@ -27,9 +28,56 @@ void BarrierHessianOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos
   A_->apply(*AX_, Y, Teuchos::TRANS, alpha, 1.0);
 }
 
+bool BarrierHessianOperator::findPositionsInQPattern(const CrsMatrix& Q) const {
+  position_.clear();
+  constraint_.clear();
+  coefficient_.clear();
+  bool found = A_->getRowMap()->isSameAs(*A_->getRangeMap()) && Q.isFillComplete();
+  if (found) {
+    const auto q = Q.getLocalMatrixHost();
+    const auto a = A_->getLocalMatrixHost();
+    const auto& aCols = *A_->getColMap();
+    const auto& qRows = *Q.getRowMap();
+    const auto& qCols = *Q.getColMap();
+    const auto invalid = Teuchos::OrdinalTraits<LocalOrdinal>::invalid();
+    for (LocalOrdinal r = 0; found && r < static_cast<LocalOrdinal>(a.numRows()); ++r) {
+      for (auto i = a.graph.row_map(r); found && i < a.graph.row_map(r + 1); ++i) {
+        const LocalOrdinal row = qRows.getLocalElement(aCols.getGlobalElement(a.graph.entries(i)));
+        if (row == invalid) { found = false; break; }
+        for (auto k = a.graph.row_map(r); k < a.graph.row_map(r + 1); ++k) {
+          const LocalOrdinal col = qCols.getLocalElement(aCols.getGlobalElement(a.graph.entries(k)));
+          const auto begin = q.graph.row_map(row), end = q.graph.row_map(row + 1);
+          auto e = begin;
+          while (e < end && q.graph.entries(e) != col) ++e;  // rows are short: a scan will do
+          if (col == invalid || e == end) { found = false; break; }
+          position_.push_back(e);
+          constraint_.push_back(r);
+          coefficient_.push_back(a.values(i) * a.values(k));
+        }
+      }
+    }
+  }
+  int local = found ? 1 : 0, global = 0;
+  Teuchos::reduceAll(*Q.getComm(), Teuchos::REDUCE_MIN, local, Teuchos::outArg(global));
+  return global == 1;
+}
+
 RCP<CrsMatrix> BarrierHessianOperator::assemble() const {
   auto Q = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Q_);
   if (Q.is_null()) throw Error("BarrierHessianOperator::assemble needs Q as a CrsMatrix");
+  if (inQPattern_ < 0) inQPattern_ = findPositionsInQPattern(*Q) ? 1 : 0;
+  if (inQPattern_ == 1) {
+    using Values = typename CrsMatrix::local_matrix_device_type::values_type;
+    const auto qValues = Q->getLocalMatrixHost().values;
+    Values values(Kokkos::view_alloc(Kokkos::WithoutInitializing, "H values"), qValues.extent(0));
+    Kokkos::deep_copy(values, qValues);
+    const auto d = D_->getData(0);
+    for (std::size_t e = 0; e < position_.size(); ++e)
+      values(position_[e]) += d[constraint_[e]] * coefficient_[e];
+    auto H = rcp(new CrsMatrix(Q->getCrsGraph(), values));
+    H->fillComplete(Q->getDomainMap(), Q->getRangeMap());
+    return H;
+  }
   CrsMatrix DA(*A_, Teuchos::Copy);
   DA.leftScale(*D_);
   auto AtDA = rcp(new CrsMatrix(A_->getDomainMap(), 0));

@@ -47,6 +47,61 @@ TEST(BarrierHessianOperator, MatchesTheAssembledMatrix) {
   }
 }
 
+// Contact constraints couple the DOFs of one node, so H shares Q's graph and every
+// assembly after the first reuses the positions found by the first.
+TEST(BarrierHessianOperator, AssemblySharesQsGraphAndFollowsNewWeights) {
+  AssembledProblem p = buildProblem(shippedProblem("paper/H"), Tpetra::getDefaultComm());
+  BarrierHessianOperator H(p.qp.Q, p.qp.A);
+  Vector D(p.qp.A->getRangeMap());
+  for (int round = 0; round < 3; ++round) {
+    D.randomize(1.0, 1e6);
+    H.setWeights(D);
+    const RCP<CrsMatrix> assembled = H.assemble();
+    EXPECT_EQ(assembled->getCrsGraph().get(),
+              Teuchos::rcp_dynamic_cast<const CrsMatrix>(p.qp.Q, true)->getCrsGraph().get());
+    Vector X(H.getDomainMap()), Y(H.getRangeMap()), Z(H.getRangeMap());
+    X.randomize();
+    H.apply(X, Y);
+    assembled->apply(X, Z);
+    Z.update(-1.0, Y, 1.0);
+    EXPECT_LT(Z.normInf(), 1e-13 * Y.normInf()) << "round " << round;
+  }
+}
+
+// A constraint that couples DOFs far apart (as a mortar or multi-point constraint would)
+// falls outside Q's graph: the assembly must still be exact.
+TEST(BarrierHessianOperator, AssemblesConstraintsOutsideQsPattern) {
+  AssembledProblem p = buildProblem(shippedProblem("paper/G"), Tpetra::getDefaultComm());
+  const auto& A0 = *p.qp.A;
+  const GlobalOrdinal n = static_cast<GlobalOrdinal>(A0.getDomainMap()->getGlobalNumElements());
+  auto A = rcp(new CrsMatrix(A0.getRowMap(), 4));
+  for (LocalOrdinal r = 0; r < static_cast<LocalOrdinal>(A0.getNodeNumRows()); ++r) {
+    const GlobalOrdinal row = A0.getRowMap()->getGlobalElement(r);
+    std::size_t count = A0.getNumEntriesInGlobalRow(row);
+    Teuchos::Array<GlobalOrdinal> cols(count);
+    Teuchos::Array<double> vals(count);
+    A0.getGlobalRowCopy(row, cols(), vals(), count);
+    cols.push_back((cols[0] + n / 2) % n);  // a DOF on the far side of the body
+    vals.push_back(0.5);
+    A->insertGlobalValues(row, cols(), vals());
+  }
+  A->fillComplete(A0.getDomainMap(), A0.getRangeMap());
+
+  BarrierHessianOperator H(p.qp.Q, A);
+  Vector D(A->getRangeMap());
+  D.randomize(1.0, 1e6);
+  H.setWeights(D);
+  const RCP<CrsMatrix> assembled = H.assemble();
+  EXPECT_NE(assembled->getCrsGraph().get(),
+            Teuchos::rcp_dynamic_cast<const CrsMatrix>(p.qp.Q, true)->getCrsGraph().get());
+  Vector X(H.getDomainMap()), Y(H.getRangeMap()), Z(H.getRangeMap());
+  X.randomize();
+  H.apply(X, Y);
+  assembled->apply(X, Z);
+  Z.update(-1.0, Y, 1.0);
+  EXPECT_LT(Z.normInf(), 1e-13 * Y.normInf());
+}
+
 TEST(BarrierHessianOperator, ZeroWeightsGiveQ) {
   AssembledProblem p = buildProblem(shippedProblem("paper/G"), Tpetra::getDefaultComm());
   BarrierHessianOperator H(p.qp.Q, p.qp.A);
