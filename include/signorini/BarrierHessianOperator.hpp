@@ -18,7 +18,8 @@ class BarrierHessianOperator : public Operator {
   void setWeights(const Vector& D);
   const Vector& weights() const { return *D_; }
 
-  // Y = alpha * H X + beta * Y (H is symmetric, so every mode applies H). X and Y must not alias.
+  // Y = alpha * op(H) X + beta * Y. X and Y must not alias. H is symmetric when Q is; the
+  // transpose is applied as such for the column slice below.
   void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
              Scalar alpha = Teuchos::ScalarTraits<Scalar>::one(),
              Scalar beta = Teuchos::ScalarTraits<Scalar>::zero()) const override;
@@ -31,6 +32,12 @@ class BarrierHessianOperator : public Operator {
   // graph in a row this rank owns (contact constraints couple the DOFs of one node), the
   // result shares Q's graph and costs a copy of Q's values; otherwise it is a general sum.
   RCP<CrsMatrix> assemble() const;
+
+  // H P P^T, with P the restriction to the contact DOFs (those in A): Q's columns on the
+  // contact DOFs plus A^T D A, with a copy of the current D. It applies H to vectors that
+  // vanish off the contact DOFs, and its transpose P P^T H gives H's contact rows, for a
+  // fraction of the cost of H (needs Q to be a CrsMatrix).
+  RCP<BarrierHessianOperator> onContactColumns() const;
 
  private:
   RCP<const Operator> Q_;

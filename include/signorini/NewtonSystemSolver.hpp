@@ -44,6 +44,7 @@ class NewtonSystemSolver {
 
  private:
   RCP<BarrierHessianOperator> H_;
+  RCP<BarrierHessianOperator> contactColumns_;  // H P P^T, for the multiplicative correction
   KrylovSolver krylov_;
   std::string strategy_;
   int maxIterations_;

@@ -6,6 +6,10 @@
 //                      (symmetric: S, B, S; symmetric positive definite when B is).
 // The subspace takes over what B cannot see: the large A^T D A entries of the active
 // contact DOFs as the barrier parameter goes to zero.
+// Given HP = H P P^T (BarrierHessianOperator::onContactColumns), the multiplicative form
+// takes both residuals from it instead of H: the first x = S r lies on the subspace, so
+// H x = HP x; the second residual is read by S on the subspace only, so P^T H x = (HP)^T x.
+// This saves two applications of H per application of M^-1, with the same result.
 #include <string>
 
 #include <Tpetra_Operator.hpp>
@@ -16,8 +20,9 @@ namespace signorini {
 
 class SubspaceCorrectedPreconditioner : public Operator {
  public:
+  // S must vanish off the subspace and read only the subspace entries of its input.
   SubspaceCorrectedPreconditioner(RCP<const Operator> H, RCP<const Operator> B, RCP<const Operator> S,
-                                  const std::string& combination);
+                                  const std::string& combination, RCP<const Operator> HP = Teuchos::null);
 
   void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
              Scalar alpha = Teuchos::ScalarTraits<Scalar>::one(),
@@ -27,7 +32,7 @@ class SubspaceCorrectedPreconditioner : public Operator {
   bool hasTransposeApply() const override { return true; }
 
  private:
-  RCP<const Operator> H_, B_, S_;
+  RCP<const Operator> H_, B_, S_, HP_;
   bool multiplicative_;
   // Scratch, allocated once per number of columns: apply() runs in every Krylov iteration.
   mutable RCP<MultiVector> Z_, correction_, residual_;

@@ -4,6 +4,7 @@
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_RCP.hpp>
 #include <Tpetra_CrsMatrix_fwd.hpp>
+#include <Tpetra_Export_fwd.hpp>
 #include <Tpetra_Import_fwd.hpp>
 #include <Tpetra_Map_fwd.hpp>
 #include <Tpetra_MultiVector_fwd.hpp>
@@ -20,6 +21,7 @@ using Node = Tpetra::Details::DefaultTypes::node_type;
 
 using Map = Tpetra::Map<LocalOrdinal, GlobalOrdinal, Node>;
 using Import = Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>;
+using Export = Tpetra::Export<LocalOrdinal, GlobalOrdinal, Node>;
 using Operator = Tpetra::Operator<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
 using CrsMatrix = Tpetra::CrsMatrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
 using MultiVector = Tpetra::MultiVector<Scalar, LocalOrdinal, GlobalOrdinal, Node>;

@@ -1,6 +1,8 @@
 #include "signorini/BarrierHessianOperator.hpp"
 
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 #include <Teuchos_CommHelpers.hpp>
@@ -17,14 +19,14 @@ BarrierHessianOperator::BarrierHessianOperator(RCP<const Operator> Q, RCP<const 
 
 void BarrierHessianOperator::setWeights(const Vector& D) { D_->assign(D); }
 
-void BarrierHessianOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp,
+void BarrierHessianOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode,
                                    Scalar alpha, Scalar beta) const {
   const std::size_t numVectors = X.getNumVectors();
   if (AX_.is_null() || AX_->getNumVectors() != numVectors)
     AX_ = rcp(new MultiVector(A_->getRangeMap(), numVectors));
   A_->apply(X, *AX_);
   AX_->elementWiseMultiply(1.0, *D_, *AX_, 0.0);
-  Q_->apply(X, Y, Teuchos::NO_TRANS, alpha, beta);
+  Q_->apply(X, Y, mode, alpha, beta);
   A_->apply(*AX_, Y, Teuchos::TRANS, alpha, 1.0);
 }
 
@@ -83,6 +85,48 @@ RCP<CrsMatrix> BarrierHessianOperator::assemble() const {
   auto AtDA = rcp(new CrsMatrix(A_->getDomainMap(), 0));
   Tpetra::MatrixMatrix::Multiply(*A_, true, DA, false, *AtDA);
   return Tpetra::MatrixMatrix::add(1.0, false, *Q, 1.0, false, *AtDA);
+}
+
+RCP<BarrierHessianOperator> BarrierHessianOperator::onContactColumns() const {
+  auto Q = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Q_);
+  if (Q.is_null()) throw Error("BarrierHessianOperator::onContactColumns needs Q as a CrsMatrix");
+  // 1 on the DOFs that appear in A, seen from Q's column map.
+  Vector onDomain(A_->getDomainMap());
+  {
+    Vector onColumns(A_->getColMap());
+    const auto a = A_->getLocalMatrixHost();
+    auto c = onColumns.getDataNonConst();
+    for (std::size_t e = 0; e < a.graph.entries.extent(0); ++e) c[a.graph.entries(e)] = 1.0;
+    onDomain.doExport(onColumns, Export(A_->getColMap(), A_->getDomainMap()), Tpetra::ADD);
+  }
+  Vector onQColumns(Q->getColMap());
+  onQColumns.doImport(onDomain, Import(Q->getDomainMap(), Q->getColMap()), Tpetra::INSERT);
+  const auto contact = onQColumns.getData();
+
+  const auto q = Q->getLocalMatrixHost();
+  const LocalOrdinal rows = static_cast<LocalOrdinal>(q.numRows());
+  Teuchos::Array<std::size_t> counts(rows, 0);
+  for (LocalOrdinal r = 0; r < rows; ++r)
+    for (auto e = q.graph.row_map(r); e < q.graph.row_map(r + 1); ++e)
+      if (contact[q.graph.entries(e)] != 0.0) ++counts[r];
+  auto Qc = rcp(new CrsMatrix(Q->getRowMap(), Q->getColMap(), counts()));
+  Teuchos::Array<LocalOrdinal> cols;
+  Teuchos::Array<Scalar> vals;
+  for (LocalOrdinal r = 0; r < rows; ++r) {
+    if (counts[r] == 0) continue;
+    cols.clear();
+    vals.clear();
+    for (auto e = q.graph.row_map(r); e < q.graph.row_map(r + 1); ++e)
+      if (contact[q.graph.entries(e)] != 0.0) {
+        cols.push_back(q.graph.entries(e));
+        vals.push_back(q.values(e));
+      }
+    Qc->insertLocalValues(r, cols(), vals());
+  }
+  Qc->fillComplete(Q->getDomainMap(), Q->getRangeMap());
+  auto sliced = rcp(new BarrierHessianOperator(Qc, A_));
+  sliced->setWeights(*D_);
+  return sliced;
 }
 
 }  // namespace signorini

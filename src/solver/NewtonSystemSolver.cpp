@@ -77,6 +77,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   correction_ = params.sublist("Preconditioner").get<std::string>("contact correction");
   if (correction_ != "none")
     subspace_ = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A));
+  if (correction_ == "multiplicative") contactColumns_ = H_->onContactColumns();
   rebuildTolerance_ = params.sublist("Preconditioner").get<double>("amg of H: rebuild tolerance");
   if (strategy_ == "amg of H") constraintStiffness_ = constraintStiffness(*qp.Qmatrix(), *qp.A);
   reuseHierarchy_ = amg_->parameters().get<std::string>("reuse: type") != "none";
@@ -88,6 +89,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
 
 void NewtonSystemSolver::setWeights(const Vector& D) {
   H_->setWeights(D);
+  if (!contactColumns_.is_null()) contactColumns_->setWeights(D);
   if (!subspace_.is_null()) {
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3d contact subspace setup"));
     subspace_->setWeights(D);
@@ -124,7 +126,7 @@ KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absolu
   if (!fromGuess || rnorm == 0.0) x.putScalar(0.0);
   if (rnorm == 0.0) return KrylovResult{0, true, 0.0};
   RCP<const Operator> M = amg_ ? amg_->getOperator() : Teuchos::null;
-  if (!subspace_.is_null()) M = rcp(new SubspaceCorrectedPreconditioner(H_, M, subspace_, correction_));
+  if (!subspace_.is_null()) M = rcp(new SubspaceCorrectedPreconditioner(H_, M, subspace_, correction_, contactColumns_));
   auto rhs = Teuchos::rcpFromRef(r);
   auto sol = Teuchos::rcpFromRef(x);
   Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3c Krylov"));

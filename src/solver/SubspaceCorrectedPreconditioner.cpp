@@ -8,8 +8,13 @@ namespace signorini {
 
 SubspaceCorrectedPreconditioner::SubspaceCorrectedPreconditioner(RCP<const Operator> H, RCP<const Operator> B,
                                                                  RCP<const Operator> S,
-                                                                 const std::string& combination)
-    : H_(std::move(H)), B_(std::move(B)), S_(std::move(S)), multiplicative_(combination == "multiplicative") {
+                                                                 const std::string& combination,
+                                                                 RCP<const Operator> HP)
+    : H_(std::move(H)),
+      B_(std::move(B)),
+      S_(std::move(S)),
+      HP_(std::move(HP)),
+      multiplicative_(combination == "multiplicative") {
   if (combination != "additive" && combination != "multiplicative")
     throw InputError("contact correction: \"" + combination + "\" is neither \"additive\" nor \"multiplicative\"");
 }
@@ -32,7 +37,10 @@ void SubspaceCorrectedPreconditioner::apply(const MultiVector& X, MultiVector& Y
     S_->apply(X, Z);
     for (const Operator* M : {B_.get(), S_.get()}) {
       residual.assign(X);
-      H_->apply(Z, residual, Teuchos::NO_TRANS, -1.0, 1.0);
+      if (HP_.is_null())
+        H_->apply(Z, residual, Teuchos::NO_TRANS, -1.0, 1.0);
+      else  // H Z with Z on the subspace, then H Z on the subspace rows (all S reads)
+        HP_->apply(Z, residual, M == B_.get() ? Teuchos::NO_TRANS : Teuchos::TRANS, -1.0, 1.0);
       M->apply(residual, correction);
       Z.update(1.0, correction, 1.0);
     }
