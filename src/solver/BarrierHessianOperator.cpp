@@ -26,7 +26,9 @@ void BarrierHessianOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos
     AX_ = rcp(new MultiVector(A_->getRangeMap(), numVectors));
   A_->apply(X, *AX_);
   AX_->elementWiseMultiply(1.0, *D_, *AX_, 0.0);
-  Q_->apply(X, Y, mode, alpha, beta);
+  // Q is symmetric, its column slice (onContactColumns) is not; a matrix-free Q need not
+  // offer a transpose at all.
+  Q_->apply(X, Y, Q_->hasTransposeApply() ? mode : Teuchos::NO_TRANS, alpha, beta);
   A_->apply(*AX_, Y, Teuchos::TRANS, alpha, 1.0);
 }
 
