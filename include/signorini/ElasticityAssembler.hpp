@@ -32,7 +32,4 @@ std::vector<long long> overlapNodeConstraints(const DistributedSpace& space, con
 RCP<Vector> contactNodeWeights(const DistributedSpace& space, const ProblemDefinition& problem,
                                const RCP<const Map>& constraintMap);
 
-// Rigid body modes (3 in 2D, 6 in 3D) of the space on its owned DOF map.
-RCP<MultiVector> rigidBodyModes(const DistributedSpace& space);
-
 }  // namespace signorini

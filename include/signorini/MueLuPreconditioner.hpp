@@ -3,11 +3,12 @@
 // parameter list that is passed through unchanged, with the rigid body modes as nullspace.
 #include <Teuchos_ParameterList.hpp>
 
+#include "signorini/MultilevelPreconditioner.hpp"
 #include "signorini/TpetraTypes.hpp"
 
 namespace signorini {
 
-class MueLuPreconditioner {
+class MueLuPreconditioner : public MultilevelPreconditioner {
  public:
   // Defaults for vector problems with `blockSize` unknowns per node. They are correct on
   // any rank count with Debian's Trilinos 13.2, whose Amesos2 coarse solvers give wrong
@@ -22,9 +23,9 @@ class MueLuPreconditioner {
 
   // Builds the hierarchy for A. With `reuse`, a hierarchy built before for a matrix of the
   // same pattern is refreshed according to the list's "reuse: type" instead of rebuilt.
-  void compute(const RCP<CrsMatrix>& A, bool reuse = false);
+  void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
 
-  RCP<Operator> getOperator() const;
+  RCP<Operator> getOperator() const override;
   const Teuchos::ParameterList& parameters() const { return params_; }
 
  private:

@@ -9,7 +9,9 @@
 //                more than "amg of H: rebuild tolerance" since the last build (0: every
 //                step, 1: never after the first), with MueLu's "reuse: type" if set;
 // and its "contact correction": the AMG combined with an exact solve on the contact DOFs
-// (see SubspaceCorrectedPreconditioner), "none", "additive" or "multiplicative".
+// (see SubspaceCorrectedPreconditioner), "none", "additive" or "multiplicative". The
+// multigrid's levels are MueLu's (MueLuPreconditioner) or, on a box mesh, geometric ones
+// above MueLu's (GeometricMultigridPreconditioner): "hierarchy".
 #include <memory>
 
 #include <Teuchos_ParameterList.hpp>
@@ -18,7 +20,7 @@
 #include "signorini/ContactQP.hpp"
 #include "signorini/ContactSubspaceSolver.hpp"
 #include "signorini/KrylovSolver.hpp"
-#include "signorini/MueLuPreconditioner.hpp"
+#include "signorini/MultilevelPreconditioner.hpp"
 
 namespace signorini {
 
@@ -48,7 +50,7 @@ class NewtonSystemSolver {
   KrylovSolver krylov_;
   std::string strategy_;
   int maxIterations_;
-  std::unique_ptr<MueLuPreconditioner> amg_;
+  std::unique_ptr<MultilevelPreconditioner> amg_;
   std::string correction_ = "none";
   RCP<ContactSubspaceSolver> subspace_;
   bool reuseHierarchy_ = false;

@@ -15,6 +15,7 @@
 
 #include "signorini/ElasticityElement.hpp"
 #include "signorini/Error.hpp"
+#include "signorini/RigidBodyModes.hpp"
 
 namespace signorini {
 namespace {
@@ -179,53 +180,6 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
   return weights;
 }
 
-RCP<MultiVector> rigidBodyModes(const DistributedSpace& ds) {
-  const int dim = ds.dim();
-  const int numModes = dim == 2 ? 3 : 6;
-  auto modes = rcp(new MultiVector(ds.ownedDofMap(), numModes));
-  const auto& coords = ds.space().nodeCoordinates();
-  const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
-  // Rotations about a centre c outside the mesh's bounding box in every coordinate, so that
-  // no node lies on a rotation axis: a small aggregate of such nodes would give MueLu's
-  // tentative prolongator a zero nullspace column (seen on 4 ranks with axes through c = 0).
-  double lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0}, centre[3] = {0, 0, 0};
-  for (int c = 0; c < dim; ++c) {
-    lower[c] = std::numeric_limits<double>::max();
-    upper[c] = -std::numeric_limits<double>::max();
-  }
-  for (std::size_t i = 0; i < numOwned; ++i)
-    for (int c = 0; c < dim; ++c) {
-      lower[c] = std::min(lower[c], coords[dim * ds.overlapSpaceNodes()[i] + c]);
-      upper[c] = std::max(upper[c], coords[dim * ds.overlapSpaceNodes()[i] + c]);
-    }
-  {
-    double minimum[3], maximum[3];
-    Teuchos::reduceAll(*ds.comm(), Teuchos::REDUCE_MIN, dim, lower, minimum);
-    Teuchos::reduceAll(*ds.comm(), Teuchos::REDUCE_MAX, dim, upper, maximum);
-    for (int c = 0; c < dim; ++c) centre[c] = minimum[c] - std::max(maximum[c] - minimum[c], 1.0);
-  }
-  for (int k = 0; k < numModes; ++k) {
-    auto data = modes->getDataNonConst(k);
-    for (std::size_t i = 0; i < numOwned; ++i) {
-      double x[3];
-      for (int c = 0; c < dim; ++c) x[c] = coords[dim * ds.overlapSpaceNodes()[i] + c] - centre[c];
-      double* u = &data[dim * i];
-      if (k < dim) {
-        u[k] = 1.0;  // translation
-      } else if (dim == 2) {
-        u[0] = -x[1];
-        u[1] = x[0];
-      } else {
-        // rotation about the axis through the centre along e_a, a = k - 3: u = e_a x x
-        const int a = k - 3, p = (a + 1) % 3, q = (a + 2) % 3;
-        u[p] = -x[q];
-        u[q] = x[p];
-      }
-    }
-  }
-  return modes;
-}
-
 ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition& problem) {
   const LagrangeSpace& space = ds.space();
   const SimplexMesh& mesh = ds.mesh();
@@ -338,7 +292,7 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   qp.b = b;
   qp.A = A;
   qp.d = d;
-  qp.nullspace = rigidBodyModes(ds);
+  qp.nullspace = rigidBodyModes(ds.ownedDofMap(), *coordinates);
   qp.coordinates = coordinates;
   qp.blockSize = dim;
   return qp;

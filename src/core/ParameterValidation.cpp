@@ -11,7 +11,7 @@
 namespace signorini {
 namespace {
 
-bool isPassThrough(const std::string& name) { return name == "MueLu" || name == "Belos"; }
+bool isPassThrough(const std::string& name) { return name == "MueLu" || name == "Belos" || name == "Ifpack2"; }
 
 std::size_t editDistance(const std::string& a, const std::string& b) {
   std::vector<std::size_t> row(b.size() + 1);

@@ -4,6 +4,7 @@
 #include <utility>
 #include <vector>
 
+#include "signorini/BoxGrid.hpp"
 #include "signorini/Error.hpp"
 
 namespace signorini {
@@ -12,12 +13,6 @@ namespace {
 // A simplex of the box subdivision, as box corners: corner bit a (x), 2b (y), 4c (z) is the
 // vertex v_abc = (i+a, j+b, k+c) of problem-set.md.
 using CornerSimplex = std::array<int, 4>;
-
-const std::vector<CornerSimplex> squareTriangles = {{0, 1, 3, 0}, {0, 3, 2, 0}};  // (a,b,e), (a,e,c)
-const std::vector<CornerSimplex> evenCubeTets = {
-    {0, 1, 2, 4}, {3, 1, 2, 7}, {5, 1, 4, 7}, {6, 2, 4, 7}, {1, 2, 4, 7}};
-const std::vector<CornerSimplex> oddCubeTets = {
-    {1, 0, 3, 5}, {2, 0, 3, 6}, {4, 0, 5, 6}, {7, 3, 5, 6}, {0, 3, 5, 6}};
 
 int cornerOffset(int corner, int axis) { return (corner >> axis) & 1; }
 
@@ -72,8 +67,7 @@ SimplexMesh makeBoxMesh(int dim, const std::array<long long, 3>& cellsPerDirecti
       }
 
   const std::vector<CornerSimplex> templates[2] = {
-      positivelyOriented(dim, dim == 2 ? squareTriangles : evenCubeTets),
-      positivelyOriented(dim, dim == 2 ? squareTriangles : oddCubeTets)};
+      positivelyOriented(dim, boxSimplexCorners(dim, 0)), positivelyOriented(dim, boxSimplexCorners(dim, 1))};
   long long cornerId[8];
   for (int corner = 0; corner < 8; ++corner)
     cornerId[corner] = cornerOffset(corner, 0) * stride[0] + cornerOffset(corner, 1) * stride[1] +

@@ -78,6 +78,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 2 assembly"));
     assembly.start(true);
     result.qp = assembleContactQP(*result.space, result.definition);
+    if (result.definition.meshType == "box")
+      result.qp.grid = BoxGrid{result.definition.dim, result.definition.cells, result.definition.lengths};
     assembly.stop();
   }
   result.setupSeconds = maxOverRanks(*comm, setup.totalElapsedTime());

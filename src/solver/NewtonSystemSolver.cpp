@@ -1,5 +1,7 @@
 #include "signorini/NewtonSystemSolver.hpp"
 
+#include <limits>
+
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -7,6 +9,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/Error.hpp"
+#include "signorini/GeometricMultigridPreconditioner.hpp"
 #include "signorini/SubspaceCorrectedPreconditioner.hpp"
 
 namespace signorini {
@@ -54,6 +57,19 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
            "\"additive\" or \"multiplicative\" (symmetric: subspace, AMG, subspace)",
            rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "additive", "multiplicative"))));
+  prec.set("hierarchy", "auto",
+           "How the multigrid levels are made: \"geometric\" (box meshes): box grids with half the cells "
+           "(P_k goes to P1 first), P1 interpolation, Galerkin coarse matrices and Chebyshev smoothing, down "
+           "to \"geometric: coarsest size\" unknowns, then MueLu; \"algebraic\": MueLu's smoothed "
+           "aggregation alone; \"auto\": geometric on a box mesh, algebraic otherwise",
+           rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("auto", "algebraic", "geometric"))));
+  prec.set("geometric: coarsest size", 200,
+           "The geometric levels stop before a grid with fewer unknowns than this, or at one that cannot "
+           "be halved; MueLu takes over there",
+           rcp(new Teuchos::EnhancedNumberValidator<int>(1, std::numeric_limits<int>::max())));
+  prec.sublist("Ifpack2", false,
+               "Passed unchanged to Ifpack2's Chebyshev smoother of the geometric levels, over Signorini's "
+               "defaults (chebyshev: degree 2, chebyshev: ratio eigenvalue 7)");
   prec.sublist("MueLu", false, "Passed to MueLu unchanged, over Signorini's defaults");
   return p;
 }
@@ -72,15 +88,26 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   if (qp.Qmatrix().is_null())
     throw InputError("Preconditioner/type \"" + strategy_ + "\" needs Q as an assembled CrsMatrix; "
                      "use \"none\" for a matrix-free Q");
-  const Teuchos::ParameterList& muelu = params.sublist("Preconditioner").sublist("MueLu");
-  amg_ = std::make_unique<MueLuPreconditioner>(muelu, qp.blockSize, qp.nullspace, qp.coordinates);
+  const Teuchos::ParameterList& prec = params.sublist("Preconditioner");
+  const Teuchos::ParameterList& muelu = prec.sublist("MueLu");
+  const std::string hierarchy = prec.get<std::string>("hierarchy");
+  const bool haveGrid = qp.grid && !qp.coordinates.is_null();
+  if (hierarchy == "geometric" || (hierarchy == "auto" && haveGrid)) {
+    if (!haveGrid)
+      throw InputError("Preconditioner/hierarchy \"geometric\" needs a box mesh (Problem/mesh: type \"box\")");
+    amg_ = std::make_unique<GeometricMultigridPreconditioner>(*qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize,
+                                                              prec.get<int>("geometric: coarsest size"),
+                                                              prec.sublist("Ifpack2"), muelu);
+  } else {
+    amg_ = std::make_unique<MueLuPreconditioner>(muelu, qp.blockSize, qp.nullspace, qp.coordinates);
+  }
   correction_ = params.sublist("Preconditioner").get<std::string>("contact correction");
   if (correction_ != "none")
     subspace_ = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A));
   if (correction_ == "multiplicative") contactColumns_ = H_->onContactColumns();
   rebuildTolerance_ = params.sublist("Preconditioner").get<double>("amg of H: rebuild tolerance");
   if (strategy_ == "amg of H") constraintStiffness_ = constraintStiffness(*qp.Qmatrix(), *qp.A);
-  reuseHierarchy_ = amg_->parameters().get<std::string>("reuse: type") != "none";
+  reuseHierarchy_ = muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none";
   if (strategy_ == "amg of Q") {
     amg_->compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
     amgReady_ = true;

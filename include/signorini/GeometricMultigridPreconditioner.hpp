@@ -1,0 +1,63 @@
+#pragma once
+// Geometric multigrid for a space on a box mesh (makeBoxMesh): below the fine space lies a
+// sequence of box grids with half the cells of the one above (a P_k space, k > 1, first goes
+// to P1 on its own mesh), each a P1 space on the subdivision of problem-set.md, joined by
+// P1 interpolation P. The coarse matrices are Galerkin products P^T A P, the smoother is
+// Ifpack2's Chebyshev, and once a grid has fewer unknowns than "coarsest size" or cannot
+// be halved, MueLu's algebraic multigrid, with the grid's rigid body modes, takes over.
+// The cycle is a V-cycle, symmetric positive definite for CG.
+//
+// Why: smoothed aggregation on these meshes needs more CG iterations as the mesh is refined
+// (bench/results/amg-variants.md); interpolation between nested grids does not lose
+// accuracy with the mesh size. In 2D each grid's triangles are unions of the finer grid's,
+// so P is the exact embedding; the 3D pattern alternates with the box parity and the grids
+// are not nested, which interpolation handles all the same.
+//
+// Dirichlet DOFs (rows of the fine matrix with a diagonal entry only, as symmetric
+// elimination leaves them) stay out of the coarse spaces: a coarse DOF at a Dirichlet DOF
+// is injected into it alone, and the interpolation to other DOFs skips it.
+#include <memory>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "signorini/BoxGrid.hpp"
+#include "signorini/MueLuPreconditioner.hpp"
+#include "signorini/MultilevelPreconditioner.hpp"
+#include "signorini/TpetraTypes.hpp"
+
+namespace signorini {
+
+class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
+ public:
+  // The Ifpack2 Chebyshev parameters used where the user's "smoother" list is silent.
+  static Teuchos::ParameterList defaultSmootherParameters();
+
+  // `grid`: the box the fine space's mesh subdivides; `Q`: the fine matrix (its pattern and
+  // Dirichlet rows are those of every matrix given to compute()); `coordinates`: the owned
+  // fine nodes, on a node map with Q's DOF = blockSize * node + component. Collective.
+  // Throws InputError when the nodes do not contain the coarse grid's vertices.
+  GeometricMultigridPreconditioner(const BoxGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates,
+                                   int blockSize, long long coarsestSize, const Teuchos::ParameterList& smoother,
+                                   const Teuchos::ParameterList& muelu);
+  ~GeometricMultigridPreconditioner() override;
+
+  void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
+  RCP<Operator> getOperator() const override;
+
+  // Grids below the fine level (0: MueLu alone), and their global unknowns, finest first.
+  int geometricLevels() const { return static_cast<int>(levels_.size()) - 1; }
+  std::vector<long long> levelSizes() const;
+  // The interpolation from level l + 1 to level l (l = 0: to the fine space). Coarse DOF
+  // blockSize * v + c is component c at vertex v of that level's grid (BoxGrid numbering).
+  RCP<const CrsMatrix> prolongator(int level) const;
+
+ private:
+  struct Level;
+  std::vector<std::shared_ptr<Level>> levels_;  // levels_[0] is the fine space
+  Teuchos::ParameterList smoother_;
+  std::unique_ptr<MueLuPreconditioner> coarse_;
+  RCP<Operator> cycle_;
+};
+
+}  // namespace signorini

@@ -1,0 +1,347 @@
+#include "signorini/GeometricMultigridPreconditioner.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Ifpack2_Chebyshev.hpp>
+#include <TpetraExt_TripleMatrixMultiply.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_RowMatrixTransposer.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/Error.hpp"
+#include "signorini/RigidBodyModes.hpp"
+
+namespace signorini {
+
+using RowMatrix = Tpetra::RowMatrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
+using Chebyshev = Ifpack2::Chebyshev<RowMatrix>;
+
+struct GeometricMultigridPreconditioner::Level {
+  RCP<const Map> dofMap;
+  std::vector<double> coordinates;  // dim per owned node, in DOF map order
+  std::vector<char> dirichlet;      // per owned DOF
+  RCP<CrsMatrix> A;
+  RCP<Chebyshev> smoother;
+  RCP<CrsMatrix> P, R;  // from the next coarser level to this one, and its transpose
+};
+
+namespace {
+
+// P1 interpolation from the grid `coarse` to the owned fine nodes; fills the coarse level's
+// DOF map (the coarse vertices at this rank's fine nodes), coordinates and Dirichlet flags.
+// Collective.
+RCP<CrsMatrix> interpolation(const BoxGrid& coarse, int blockSize, const RCP<const Map>& fineMap,
+                                 const std::vector<double>& fineCoordinates, const std::vector<char>& fineDirichlet,
+                                 RCP<const Map>& coarseMap, std::vector<double>& coarseCoordinates,
+                                 std::vector<char>& coarseDirichlet) {
+  const int dim = coarse.dim;
+  const std::size_t numFine = fineCoordinates.size() / dim;
+  const auto comm = fineMap->getComm();
+  // The coarse vertices this rank owns: those at one of its fine nodes.
+  std::vector<std::pair<long long, std::size_t>> owned;  // (coarse vertex, fine node)
+  std::vector<long long> atVertex(numFine, -1);
+  for (std::size_t i = 0; i < numFine; ++i) {
+    atVertex[i] = coarse.vertexAt(&fineCoordinates[dim * i]);
+    if (atVertex[i] >= 0) owned.emplace_back(atVertex[i], i);
+  }
+  std::sort(owned.begin(), owned.end());
+  std::vector<GlobalOrdinal> dofs;
+  dofs.reserve(blockSize * owned.size());
+  coarseCoordinates.assign(dim * owned.size(), 0.0);
+  coarseDirichlet.assign(blockSize * owned.size(), 0);
+  for (std::size_t k = 0; k < owned.size(); ++k) {
+    coarse.vertexCoordinates(owned[k].first, &coarseCoordinates[dim * k]);
+    for (int c = 0; c < blockSize; ++c) {
+      dofs.push_back(blockSize * owned[k].first + c);
+      coarseDirichlet[blockSize * k + c] = fineDirichlet[blockSize * owned[k].second + c];
+    }
+  }
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  coarseMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(dofs), 0, comm));
+  if (coarseMap->getGlobalNumElements() != static_cast<Tpetra::global_size_t>(blockSize * coarse.numVertices()))
+    throw InputError("geometric multigrid: the mesh's nodes are not the vertices of a refinement of a " +
+                     std::to_string(coarse.cells[0]) + "-cell box grid; use Preconditioner/hierarchy "
+                     "\"algebraic\"");
+
+  // Every fine node's simplex and weights; the Dirichlet flags of the coarse DOFs they use.
+  std::vector<long long> vertices(numFine * (dim + 1));
+  std::vector<double> weights(numFine * (dim + 1));
+  std::vector<GlobalOrdinal> used;
+  for (std::size_t i = 0; i < numFine; ++i) {
+    coarse.interpolation(&fineCoordinates[dim * i], &vertices[(dim + 1) * i], &weights[(dim + 1) * i]);
+    for (int k = 0; k <= dim; ++k)
+      for (int c = 0; c < blockSize; ++c) used.push_back(blockSize * vertices[(dim + 1) * i + k] + c);
+  }
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  auto usedMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(used), 0, comm));
+  Vector flags(coarseMap), usedFlags(usedMap);
+  {
+    auto f = flags.getDataNonConst();
+    for (std::size_t k = 0; k < coarseDirichlet.size(); ++k) f[k] = coarseDirichlet[k];
+  }
+  usedFlags.doImport(flags, Import(coarseMap, usedMap), Tpetra::INSERT);
+  auto usedData = usedFlags.getData();
+
+  const std::size_t numFineDofs = fineMap->getNodeNumElements();
+  auto P = rcp(new CrsMatrix(fineMap, dim + 1));
+  std::vector<GlobalOrdinal> cols;
+  std::vector<Scalar> vals;
+  for (std::size_t row = 0; row < numFineDofs; ++row) {
+    const std::size_t i = row / blockSize;
+    const int c = static_cast<int>(row % blockSize);
+    cols.clear();
+    vals.clear();
+    if (fineDirichlet[row]) {
+      if (atVertex[i] >= 0) {  // the coarse DOF here is Dirichlet too: injection
+        cols.push_back(blockSize * atVertex[i] + c);
+        vals.push_back(1.0);
+      }
+    } else {
+      for (int k = 0; k <= dim; ++k) {
+        const double w = weights[(dim + 1) * i + k];
+        const GlobalOrdinal col = blockSize * vertices[(dim + 1) * i + k] + c;
+        if (w > 1e-12 && usedData[usedMap->getLocalElement(col)] == 0.0) {
+          cols.push_back(col);
+          vals.push_back(w);
+        }
+      }
+    }
+    if (!cols.empty())
+      P->insertGlobalValues(fineMap->getGlobalElement(row), Teuchos::ArrayView<const GlobalOrdinal>(cols),
+                            Teuchos::ArrayView<const Scalar>(vals));
+  }
+  P->fillComplete(coarseMap, fineMap);
+  return P;
+}
+
+}  // namespace
+
+namespace {
+
+// The largest eigenvalue of D^-1 A (D = diag A) by the power method from a start vector that
+// depends on the global DOF ids only: Ifpack2's own estimate starts from a random vector
+// seeded from std::rand's state, so the smoothers, and the truncated Newton steps with them,
+// changed from run to run and with the rank count.
+double largestEigenvalueEstimate(const CrsMatrix& A, int iterations) {
+  Vector diagonal(A.getRowMap()), inverseDiagonal(A.getRowMap()), x(A.getRowMap()), Ax(A.getRowMap()),
+      Dx(A.getRowMap());
+  A.getLocalDiagCopy(diagonal);
+  inverseDiagonal.reciprocal(diagonal);
+  {
+    auto xd = x.getDataNonConst();
+    for (long i = 0; i < xd.size(); ++i) {
+      const double t = std::sin(12.9898 * static_cast<double>(A.getRowMap()->getGlobalElement(i)) + 0.5) * 43758.5453;
+      xd[i] = t - std::floor(t) - 0.5;
+    }
+  }
+  double lambda = 0.0;
+  for (int k = 0; k < iterations; ++k) {
+    x.scale(1.0 / x.norm2());
+    A.apply(x, Ax);
+    Dx.elementWiseMultiply(1.0, diagonal, x, 0.0);
+    lambda = x.dot(Ax) / x.dot(Dx);  // Rayleigh quotient of the pencil (A, D)
+    x.elementWiseMultiply(1.0, inverseDiagonal, Ax, 0.0);
+  }
+  return lambda;
+}
+
+}  // namespace
+
+Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParameters() {
+  Teuchos::ParameterList p("smoother");
+  p.set("chebyshev: degree", 2);
+  p.set("chebyshev: ratio eigenvalue", 7.0);
+  // Power iterations for the largest eigenvalue of D^-1 A; Ifpack2's default of 10
+  // underestimates it in 3D, and the CG count per Newton system then grows with the mesh
+  // (16 -> 21 from 3D nx = 40 to 64; 15 -> 15 with 30).
+  p.set("chebyshev: eigenvalue max iterations", 30);
+  p.set("chebyshev: boost factor", 1.1);  // Ifpack2's, applied here to our estimate
+  return p;
+}
+
+GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
+    const BoxGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates, int blockSize, long long coarsestSize,
+    const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu)
+    : smoother_(defaultSmootherParameters()) {
+  smoother_.setParameters(smoother);
+  const int dim = grid.dim;
+  if (static_cast<int>(coordinates.getNumVectors()) != dim || blockSize < 1 ||
+      Q.getRowMap()->getNodeNumElements() != blockSize * coordinates.getLocalLength())
+    throw Error("GeometricMultigridPreconditioner: coordinates, block size and Q do not match");
+
+  auto fine = std::make_shared<Level>();
+  fine->dofMap = Q.getRowMap();
+  fine->coordinates.resize(dim * coordinates.getLocalLength());
+  for (int c = 0; c < dim; ++c) {
+    auto x = coordinates.getData(c);
+    for (std::size_t i = 0; i < coordinates.getLocalLength(); ++i) fine->coordinates[dim * i + c] = x[i];
+  }
+  fine->dirichlet.assign(Q.getNodeNumRows(), 0);
+  for (std::size_t row = 0; row < Q.getNodeNumRows(); ++row) {
+    typename CrsMatrix::local_inds_host_view_type cols;
+    typename CrsMatrix::values_host_view_type vals;
+    Q.getLocalRowView(static_cast<LocalOrdinal>(row), cols, vals);
+    const GlobalOrdinal gid = Q.getRowMap()->getGlobalElement(row);
+    bool coupled = false;
+    for (std::size_t k = 0; k < cols.extent(0); ++k)
+      if (Q.getColMap()->getGlobalElement(cols(k)) != gid && vals(k) != 0.0) coupled = true;
+    fine->dirichlet[row] = !coupled;
+  }
+  levels_.push_back(fine);
+
+  // A P_k space (more nodes than the grid's vertices) goes to P1 on its own mesh first.
+  BoxGrid current = grid;
+  const bool isP1 = Q.getGlobalNumRows() == static_cast<Tpetra::global_size_t>(blockSize * grid.numVertices());
+  bool first = true;
+  while (true) {
+    BoxGrid next = current;
+    if (!(first && !isP1)) {
+      if (!current.halvable()) break;
+      next = current.halved();
+    }
+    if (blockSize * next.numVertices() < coarsestSize) break;
+    auto coarse = std::make_shared<Level>();
+    const Level& above = *levels_.back();
+    levels_.back()->P = interpolation(next, blockSize, above.dofMap, above.coordinates, above.dirichlet,
+                                          coarse->dofMap, coarse->coordinates, coarse->dirichlet);
+    Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node> transposer(levels_.back()->P);
+    levels_.back()->R = transposer.createTranspose();
+    levels_.push_back(coarse);
+    current = next;
+    first = false;
+  }
+
+  // The coarsest level's rigid body modes and coordinates for MueLu.
+  const Level& coarsest = *levels_.back();
+  RCP<const MultiVector> nullspace, coarseCoordinates;
+  if (levels_.size() == 1) {
+    coarseCoordinates = Teuchos::rcpFromRef(coordinates);
+  } else {
+    std::vector<GlobalOrdinal> nodes;
+    for (std::size_t k = 0; k < coarsest.dofMap->getNodeNumElements(); k += blockSize)
+      nodes.push_back(coarsest.dofMap->getGlobalElement(k) / blockSize);
+    const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+    auto nodeMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(nodes), 0, coarsest.dofMap->getComm()));
+    auto x = rcp(new MultiVector(nodeMap, dim));
+    for (int c = 0; c < dim; ++c) {
+      auto data = x->getDataNonConst(c);
+      for (std::size_t i = 0; i < nodes.size(); ++i) data[i] = coarsest.coordinates[dim * i + c];
+    }
+    coarseCoordinates = x;
+  }
+  if (blockSize == dim) nullspace = rigidBodyModes(coarsest.dofMap, *coarseCoordinates);
+  coarse_ = std::make_unique<MueLuPreconditioner>(muelu, blockSize, nullspace, coarseCoordinates);
+}
+
+GeometricMultigridPreconditioner::~GeometricMultigridPreconditioner() = default;
+
+std::vector<long long> GeometricMultigridPreconditioner::levelSizes() const {
+  std::vector<long long> sizes;
+  for (const auto& level : levels_) sizes.push_back(static_cast<long long>(level->dofMap->getGlobalNumElements()));
+  return sizes;
+}
+
+RCP<const CrsMatrix> GeometricMultigridPreconditioner::prolongator(int level) const {
+  if (level < 0 || level >= geometricLevels())
+    throw Error("GeometricMultigridPreconditioner::prolongator: no level " + std::to_string(level));
+  return levels_[level]->P;
+}
+
+namespace {
+
+// One V-cycle over the levels: Chebyshev before and after each coarse correction, the
+// coarse operator (MueLu) at the bottom.
+class VCycle : public Operator {
+ public:
+  VCycle(std::vector<RCP<CrsMatrix>> A, std::vector<RCP<Chebyshev>> S, std::vector<RCP<CrsMatrix>> P,
+         std::vector<RCP<CrsMatrix>> R, RCP<const Operator> coarse)
+      : A_(std::move(A)), S_(std::move(S)), P_(std::move(P)), R_(std::move(R)), coarse_(std::move(coarse)) {}
+
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, Scalar alpha, Scalar beta) const override {
+    const std::size_t numVectors = X.getNumVectors();
+    if (work_.empty() || work_[0].x->getNumVectors() != numVectors) {
+      work_.clear();
+      for (std::size_t l = 0; l < A_.size(); ++l)
+        work_.push_back({rcp(new MultiVector(A_[l]->getRowMap(), numVectors)),
+                         rcp(new MultiVector(A_[l]->getRowMap(), numVectors)),
+                         rcp(new MultiVector(A_[l]->getRowMap(), numVectors))});
+    }
+    work_[0].b->assign(X);
+    cycle(0);
+    Y.update(alpha, *work_[0].x, beta);
+  }
+  RCP<const Map> getDomainMap() const override { return A_[0]->getDomainMap(); }
+  RCP<const Map> getRangeMap() const override { return A_[0]->getRangeMap(); }
+
+ private:
+  struct Work {
+    RCP<MultiVector> b, x, r;
+  };
+
+  void cycle(std::size_t l) const {
+    Work& w = work_[l];
+    if (l + 1 == A_.size()) {
+      coarse_->apply(*w.b, *w.x);
+      return;
+    }
+    S_[l]->apply(*w.b, *w.x);
+    residual(l);
+    R_[l]->apply(*w.r, *work_[l + 1].b);
+    cycle(l + 1);
+    P_[l]->apply(*work_[l + 1].x, *w.x, Teuchos::NO_TRANS, 1.0, 1.0);
+    residual(l);
+    S_[l]->apply(*w.r, *w.x, Teuchos::NO_TRANS, 1.0, 1.0);
+  }
+
+  void residual(std::size_t l) const {
+    Work& w = work_[l];
+    A_[l]->apply(*w.x, *w.r);
+    w.r->update(1.0, *w.b, -1.0);
+  }
+
+  std::vector<RCP<CrsMatrix>> A_;
+  std::vector<RCP<Chebyshev>> S_;
+  std::vector<RCP<CrsMatrix>> P_, R_;
+  RCP<const Operator> coarse_;
+  mutable std::vector<Work> work_;
+};
+
+}  // namespace
+
+void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reuse) {
+  levels_[0]->A = A;
+  std::vector<RCP<CrsMatrix>> matrices{A}, prolongators, restrictions;
+  std::vector<RCP<Chebyshev>> smoothers;
+  for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
+    Level& level = *levels_[l];
+    auto coarseA = rcp(new CrsMatrix(level.P->getDomainMap(), 0));
+    Tpetra::TripleMatrixMultiply::MultiplyRAP(*level.P, true, *level.A, false, *level.P, false, *coarseA);
+    levels_[l + 1]->A = coarseA;
+    level.smoother = rcp(new Chebyshev(level.A));
+    Teuchos::ParameterList smoother = smoother_;
+    if (!smoother.isParameter("chebyshev: max eigenvalue"))
+      smoother.set("chebyshev: max eigenvalue",
+                   smoother.get<double>("chebyshev: boost factor") *
+                       largestEigenvalueEstimate(*level.A, smoother.get<int>("chebyshev: eigenvalue max iterations")));
+    level.smoother->setParameters(smoother);
+    level.smoother->initialize();
+    level.smoother->compute();
+    matrices.push_back(coarseA);
+    prolongators.push_back(level.P);
+    restrictions.push_back(level.R);
+    smoothers.push_back(level.smoother);
+  }
+  coarse_->compute(levels_.back()->A, reuse && !cycle_.is_null());
+  cycle_ = rcp(new VCycle(matrices, smoothers, prolongators, restrictions, coarse_->getOperator()));
+}
+
+RCP<Operator> GeometricMultigridPreconditioner::getOperator() const {
+  if (cycle_.is_null()) throw Error("GeometricMultigridPreconditioner::getOperator called before compute()");
+  return cycle_;
+}
+
+}  // namespace signorini

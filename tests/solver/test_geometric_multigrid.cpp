@@ -1,0 +1,181 @@
+// The geometric multigrid of box meshes: its levels, its interpolation (exact for linear
+// fields that satisfy the Dirichlet conditions), and CG counts that do not grow with the
+// mesh, on every rank count.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/Error.hpp"
+#include "signorini/GeometricMultigridPreconditioner.hpp"
+#include "signorini/InteriorPointSolver.hpp"
+#include "signorini/KrylovSolver.hpp"
+#include "signorini/MueLuPreconditioner.hpp"
+#include "support/TestProblems.hpp"
+
+namespace {
+
+using namespace signorini;
+using namespace signorini::testing;
+
+// Linear elasticity on the unit box, clamped on its top face (or free), no contact.
+AssembledProblem box(int dim, int cells, int degree, bool clamped = true) {
+  Teuchos::ParameterList p = boxProblem(dim, cells, degree);
+  if (clamped) {
+    Teuchos::ParameterList& top = p.sublist("Dirichlet").sublist(dim == 2 ? "ymax" : "zmax");
+    for (const char* c : {"x", "y", "z"})
+      if (c[0] != 'z' || dim == 3) top.set(std::string("displacement: ") + c, "0");
+  }
+  return buildProblem(p, Tpetra::getDefaultComm());
+}
+
+GeometricMultigridPreconditioner multigrid(const ContactQP& qp, long long coarsestSize = 200) {
+  return GeometricMultigridPreconditioner(*qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize, coarsestSize,
+                                          Teuchos::ParameterList(), Teuchos::ParameterList());
+}
+
+TEST(GeometricMultigrid, LevelsFollowTheGrids) {
+  // 2D P1, 16 cells: grids of 16, 8, 4 cells; the 2-cell grid (18 unknowns) is below 50.
+  EXPECT_EQ(multigrid(box(2, 16, 1).qp, 50).levelSizes(), (std::vector<long long>{578, 162, 50}));
+  // P2 goes to P1 on its own mesh first.
+  EXPECT_EQ(multigrid(box(2, 4, 2).qp, 20).levelSizes(), (std::vector<long long>{162, 50}));
+  EXPECT_EQ(multigrid(box(3, 4, 1).qp, 20).levelSizes(), (std::vector<long long>{375, 81, 24}));
+  // An odd count cannot be halved: MueLu alone.
+  EXPECT_EQ(multigrid(box(2, 5, 1).qp, 1).geometricLevels(), 0);
+}
+
+// P u_c = u at every fine DOF for a linear field u that vanishes on the clamped face (and
+// for every linear field on a free box): the coarse spaces hold the fields they should.
+TEST(GeometricMultigrid, InterpolationIsExactForLinearFields) {
+  struct Case {
+    int dim, cells, degree;
+    bool clamped;
+  };
+  for (const Case& c : {Case{2, 8, 1, true}, Case{2, 4, 2, true}, Case{2, 4, 3, false}, Case{3, 4, 1, true},
+                        Case{3, 4, 2, false}}) {
+    const AssembledProblem problem = box(c.dim, c.cells, c.degree, c.clamped);
+    const ContactQP& qp = problem.qp;
+    const GeometricMultigridPreconditioner gmg = multigrid(qp, 1);
+    ASSERT_GE(gmg.geometricLevels(), 1);
+    // The field: u_a(x) = (1 - x_top) (a + 1 + x_0 - 2 x_1) when clamped, (a + 1 + x_0 - 2 x_1 + 3 x_top) when free.
+    auto field = [&](const double* x, int a) {
+      const double top = x[c.dim - 1], linear = a + 1 + x[0] - 2 * x[1];
+      return c.clamped ? (1.0 - top) * (a + 1) : linear + 3 * top;
+    };
+    RCP<const CrsMatrix> P = gmg.prolongator(0);
+    BoxGrid coarse = *qp.grid;
+    if (c.degree == 1) coarse = coarse.halved();
+    Vector uc(P->getDomainMap()), u(P->getRangeMap());
+    {
+      auto d = uc.getDataNonConst();
+      for (std::size_t k = 0; k < uc.getLocalLength(); ++k) {
+        const GlobalOrdinal dof = P->getDomainMap()->getGlobalElement(k);
+        double x[3];
+        coarse.vertexCoordinates(dof / qp.blockSize, x);
+        d[k] = field(x, static_cast<int>(dof % qp.blockSize));
+      }
+    }
+    P->apply(uc, u);
+    auto ud = u.getData();
+    double worst = 0.0;
+    for (std::size_t i = 0; i < qp.coordinates->getLocalLength(); ++i) {
+      double x[3];
+      for (int a = 0; a < c.dim; ++a) x[a] = qp.coordinates->getData(a)[i];
+      for (int a = 0; a < c.dim; ++a) worst = std::max(worst, std::abs(ud[c.dim * i + a] - field(x, a)));
+    }
+    EXPECT_LT(worst, 1e-12) << c.dim << "D P" << c.degree << " nx " << c.cells;
+  }
+}
+
+// CG preconditioned by one V-cycle on a random right-hand side to 1e-8.
+KrylovResult solve(const ContactQP& qp, const MultilevelPreconditioner& M) {
+  auto b = rcp(new Vector(qp.Q->getRangeMap()));
+  b->randomize();
+  auto x = rcp(new Vector(qp.Q->getDomainMap()));
+  const KrylovResult r = KrylovSolver().solve(qp.Q, M.getOperator(), b, x, 1e-8, 200);
+  Vector residual(*b, Teuchos::Copy);
+  qp.Q->apply(*x, residual, Teuchos::NO_TRANS, -1.0, 1.0);
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(residual.norm2(), 1.0001e-8 * b->norm2()) << "the residual Belos reported is not the true one";
+  return r;
+}
+
+// The counts stay put as the mesh is refined (14-15 in 2D, 10 in 3D on 1-3 ranks), where
+// smoothed aggregation alone needs more on the finest mesh.
+TEST(GeometricMultigrid, CgCountsDoNotGrowWithTheMesh) {
+  struct Case {
+    int dim, cells, degree, levels, maxIterations;
+  };
+  for (const Case& c : {Case{2, 32, 1, 1, 16}, Case{2, 64, 1, 2, 16}, Case{2, 16, 2, 1, 16}, Case{3, 8, 1, 1, 11},
+                        Case{3, 16, 1, 2, 11}}) {
+    const AssembledProblem problem = box(c.dim, c.cells, c.degree);
+    GeometricMultigridPreconditioner gmg = multigrid(problem.qp);
+    gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
+    EXPECT_EQ(gmg.geometricLevels(), c.levels);
+    const KrylovResult r = solve(problem.qp, gmg);
+    EXPECT_LE(r.iterations, c.maxIterations) << c.dim << "D P" << c.degree << " nx " << c.cells;
+    if (c.dim == 2 && c.cells == 64) {
+      MueLuPreconditioner amg(Teuchos::ParameterList(), problem.qp.blockSize, problem.qp.nullspace,
+                              problem.qp.coordinates);
+      amg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
+      EXPECT_GT(solve(problem.qp, amg).iterations, r.iterations + 2) << "smoothed aggregation alone";
+    }
+  }
+}
+
+// x^T M y = y^T M x: CG needs a symmetric preconditioner.
+TEST(GeometricMultigrid, CycleIsSymmetric) {
+  const AssembledProblem problem = box(3, 8, 1);
+  GeometricMultigridPreconditioner gmg = multigrid(problem.qp, 50);
+  gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
+  ASSERT_EQ(gmg.geometricLevels(), 2);
+  Vector x(problem.qp.Q->getDomainMap()), y(x.getMap()), Mx(x.getMap()), My(x.getMap());
+  x.randomize();
+  y.randomize();
+  gmg.getOperator()->apply(x, Mx);
+  gmg.getOperator()->apply(y, My);
+  EXPECT_NEAR(y.dot(Mx), x.dot(My), 1e-11 * std::abs(y.dot(Mx)));
+  EXPECT_GT(x.dot(Mx), 0.0);
+}
+
+// A grid that the mesh does not refine is an input error, not a wrong preconditioner.
+TEST(GeometricMultigrid, RejectsAGridTheMeshDoesNotRefine) {
+  const AssembledProblem problem = box(2, 8, 1);
+  BoxGrid wrong = *problem.qp.grid;
+  wrong.cells = {6, 6, 1};  // halved: vertices at thirds, which the 8-cell mesh lacks
+  EXPECT_THROW(GeometricMultigridPreconditioner(wrong, *problem.qp.Qmatrix(), *problem.qp.coordinates, 2, 1,
+                                                Teuchos::ParameterList(), Teuchos::ParameterList()),
+               InputError);
+}
+
+// The interior point solve reaches the same solution with either hierarchy.
+TEST(GeometricMultigrid, InteriorPointSolutionAgreesWithTheAlgebraicHierarchy) {
+  const ContactQP qp = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm()).qp;
+  double objective[2];
+  int i = 0;
+  for (const char* hierarchy : {"algebraic", "geometric"}) {
+    Teuchos::ParameterList params;
+    params.sublist("Preconditioner").set("hierarchy", hierarchy);
+    const SolveResult r = InteriorPointSolver(params).solve(qp);
+    ASSERT_TRUE(r.converged()) << hierarchy << ": " << r.message;
+    objective[i++] = r.objective;
+  }
+  EXPECT_LT(std::abs(objective[1] - objective[0]), 1e-8 * std::abs(objective[0]));
+}
+
+TEST(GeometricMultigrid, NeedsABoxMesh) {
+  ContactQP qp = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp;
+  qp.grid.reset();
+  Teuchos::ParameterList params;
+  params.sublist("Preconditioner").set("hierarchy", "geometric");
+  EXPECT_THROW(InteriorPointSolver(params).solve(qp), InputError);
+  params.sublist("Preconditioner").set("hierarchy", "auto");  // falls back to MueLu alone
+  EXPECT_TRUE(InteriorPointSolver(params).solve(qp).converged());
+}
+
+}  // namespace
