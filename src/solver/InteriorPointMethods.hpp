@@ -49,7 +49,8 @@ RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
 // for the primal-dual method, where the solve's error enters F's first block only):
 //   "constant":          eta ||F|| (the inexact Newton condition of the paper's (27));
 //   "adaptive":          min(eta ||rhs||, max(floor, safety * residualScale)), the residual
-//                        scale following the barrier parameter;
+//                        scale following the barrier parameter; tailSafety instead of safety
+//                        when stationarityOnly (the method's other KKT measures are met);
 //   "eisenstat-walker":  eta_k ||F|| with Eisenstat and Walker's choice 2,
 //                        eta_k = 0.9 (||F_k|| / ||F_k-1||)^2, safeguarded, at most eta;
 //   "relative":          eta ||rhs||, a fixed residual reduction for every Newton system.
@@ -57,6 +58,8 @@ struct ForcingRule {
   std::string type;
   double eta = 0.1;
   double safety = 0.3;
+  double tailSafety = 0.1;
+  bool stationarityOnly = false;  // set by the method before each Newton step
   double floor = 0.0;
   // Eisenstat-Walker state: the previous nonlinear residual norm and forcing term.
   double previousNorm = -1.0, previousEta = 0.0;

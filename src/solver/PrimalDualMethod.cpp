@@ -116,6 +116,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     ++result.gradientEvaluations;
     lambda.update(-1.0, y, 0.0);
     const KKTMeasures kkt = kktMeasures(qp, *v, lambda);
+    forcing.stationarityOnly = kkt.complementarity <= tol && kkt.primalFeasibility <= tol && kkt.dualFeasibility <= tol;
 
     if (havePending) {
       pending.objective = objective(qp, *v, Qv);
