@@ -33,23 +33,30 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
 P = "Solver/Preconditioner/"
+A = {P + "hierarchy": "algebraic"}  # MueLu's smoothed aggregation alone
 CONFIGS = {
-    "amg of Q": {P + "type": "amg of Q", P + "contact correction": "none"},
-    "amg of H": {P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0", P + "contact correction": "none"},
-    "amg of H + additive": {P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0",
+    # The default configuration: geometric levels on the box meshes above MueLu, AMG of H
+    # rebuilt when constraints switch, multiplicative contact correction.
+    "default": {},
+    # The default of session 4: the same with MueLu's hierarchy alone, and the forcing's
+    # tail safety equal to its safety (0.3).
+    "algebraic (previous default)": {**A, "Solver/forcing: tail safety": "0.3"},
+    # Variants of the algebraic hierarchy (bench/results/preconditioners.md, session 4).
+    "amg of Q": {**A, P + "type": "amg of Q", P + "contact correction": "none"},
+    "amg of H": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0", P + "contact correction": "none"},
+    "amg of H + additive": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0",
                             P + "contact correction": "additive"},
-    "amg of H + multiplicative": {P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0",
+    "amg of H + multiplicative": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0",
                                   P + "contact correction": "multiplicative"},
-    "amg of Q + multiplicative": {P + "type": "amg of Q", P + "contact correction": "multiplicative"},
-    # The default configuration.
-    "lagged amg of H + multiplicative": {P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0.9",
+    "amg of Q + multiplicative": {**A, P + "type": "amg of Q", P + "contact correction": "multiplicative"},
+    "lagged amg of H + multiplicative": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0.9",
                                          P + "contact correction": "multiplicative"},
-    # The default with a stronger cycle: fewer Krylov iterations, each dearer.
-    "default + W-cycle": {P + "MueLu/cycle type": "W", P + "MueLu/smoother: params/chebyshev: degree": "3",
+    # The algebraic default with a stronger cycle: fewer Krylov iterations, each dearer.
+    "default + W-cycle": {**A, P + "MueLu/cycle type": "W", P + "MueLu/smoother: params/chebyshev: degree": "3",
                           P + "MueLu/aggregation: drop tol": "0.02"},
-    # The defaults before the forcing safety went from 0.1 to 0.3 and the corrector started
-    # from the predictor's step.
-    "previous default": {"Solver/forcing: safety": "0.1", "Solver/primal-dual: corrector from predictor": "false"},
+    # The algebraic defaults before the forcing safety went from 0.1 to 0.3 and the corrector
+    # started from the predictor's step.
+    "previous default": {**A, "Solver/forcing: safety": "0.1", "Solver/primal-dual: corrector from predictor": "false"},
 }
 # Measured with the adaptive forcing only: "previous default" changes the forcing and the
 # corrector, not the preconditioner (with forcing "relative" it solves the default's linear
