@@ -9,8 +9,8 @@
 namespace signorini {
 
 // Returns `valid` with the user's values put in, after checking them:
-// - every user name must exist in `valid`, except inside sublists named "MueLu" or "Belos",
-//   which are passed through to those packages unchanged;
+// - every user name must exist in `valid`, except inside sublists named "MueLu", "Belos"
+//   or "Ifpack2", which are passed through to those packages unchanged;
 // - a valid sublist holding a sublist named "<name>" accepts any number of user sublists
 //   of any name, each validated against that template (e.g. one per boundary);
 // - an int where a double is expected is accepted and converted;
