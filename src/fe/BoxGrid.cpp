@@ -61,7 +61,7 @@ void BoxGrid::vertexCoordinates(long long vertex, double* x) const {
   for (int a = 0; a < dim; ++a) {
     const long long index = vertex % (cells[a] + 1);
     vertex /= cells[a] + 1;
-    x[a] = lengths[a] * double(index) / double(cells[a]);  // as makeBoxMesh computes it
+    x[a] = lengths[a] * double(index) / double(cells[a]);  // division last: far faces land exactly on L
   }
 }
 

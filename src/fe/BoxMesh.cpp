@@ -57,14 +57,8 @@ SimplexMesh makeBoxMesh(int dim, const std::array<long long, 3>& cellsPerDirecti
     for (int side = 0; side < 2; ++side) mesh.boundaryTags[names[axis][side]] = 2 * axis + side + 1;
 
   mesh.vertices.resize(dim * numVertices);
-  for (long long k = 0; k <= (dim == 3 ? n[2] : 0); ++k)
-    for (long long j = 0; j <= n[1]; ++j)
-      for (long long i = 0; i <= n[0]; ++i) {
-        const long long index[3] = {i, j, k};
-        double* x = mesh.vertices.data() + dim * (i + stride[1] * j + stride[2] * k);
-        // Division last, so the far faces land exactly on the lengths.
-        for (int axis = 0; axis < dim; ++axis) x[axis] = lengths[axis] * double(index[axis]) / double(n[axis]);
-      }
+  const BoxGrid grid{dim, n, lengths};
+  for (long long v = 0; v < numVertices; ++v) grid.vertexCoordinates(v, mesh.vertices.data() + dim * v);
 
   const std::vector<CornerSimplex> templates[2] = {
       positivelyOriented(dim, boxSimplexCorners(dim, 0)), positivelyOriented(dim, boxSimplexCorners(dim, 1))};

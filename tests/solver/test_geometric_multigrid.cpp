@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
