@@ -19,6 +19,7 @@
 #include "signorini/BarrierHessianOperator.hpp"
 #include "signorini/ContactQP.hpp"
 #include "signorini/ContactSubspaceSolver.hpp"
+#include "signorini/InitialGuessProjection.hpp"
 #include "signorini/KrylovSolver.hpp"
 #include "signorini/MultilevelPreconditioner.hpp"
 
@@ -34,9 +35,11 @@ class NewtonSystemSolver {
   // Sets D and refreshes the preconditioner as its strategy says.
   void setWeights(const Vector& D);
 
-  // Solves H x = r from x = 0 until ||r - H x|| <= absoluteTolerance.
-  // With `fromGuess`, starts from the x given (e.g. the predictor's step for the corrector,
-  // whose right-hand side differs by the centering terms only) instead of x = 0.
+  // Solves H x = r until ||r - H x|| <= absoluteTolerance, from x = 0 or, with Krylov/
+  // "initial guess: previous solutions" > 0, from the projection on earlier solutions
+  // (InitialGuessProjection). With `fromGuess`, the x given (e.g. the predictor's step for
+  // the corrector, whose right-hand side differs by the centering terms only) is the start,
+  // or joins the projection's basis.
   KrylovResult solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess = false);
 
   const BarrierHessianOperator& hessian() const { return *H_; }
@@ -50,6 +53,7 @@ class NewtonSystemSolver {
   KrylovSolver krylov_;
   std::string strategy_;
   int maxIterations_;
+  InitialGuessProjection initialGuess_;
   std::unique_ptr<MultilevelPreconditioner> amg_;
   std::string correction_ = "none";
   RCP<ContactSubspaceSolver> subspace_;

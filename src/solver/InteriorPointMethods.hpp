@@ -58,7 +58,7 @@ struct ForcingRule {
   std::string type;
   double eta = 0.1;
   double safety = 0.3;
-  double tailSafety = 0.1;
+  double tailSafety = 0.01;
   bool stationarityOnly = false;  // set by the method before each Newton step
   double floor = 0.0;
   // Eisenstat-Walker state: the previous nonlinear residual norm and forcing term.

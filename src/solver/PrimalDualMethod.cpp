@@ -116,7 +116,9 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     ++result.gradientEvaluations;
     lambda.update(-1.0, y, 0.0);
     const KKTMeasures kkt = kktMeasures(qp, *v, lambda);
-    forcing.stationarityOnly = kkt.complementarity <= tol && kkt.primalFeasibility <= tol && kkt.dualFeasibility <= tol;
+    // Not at the start: there v = 0 may give the complementarity measure no energy scale.
+    forcing.stationarityOnly =
+        k > 0 && kkt.complementarity <= tol && kkt.primalFeasibility <= tol && kkt.dualFeasibility <= tol;
 
     if (havePending) {
       pending.objective = objective(qp, *v, Qv);

@@ -1,0 +1,127 @@
+// Fischer's projection of a Krylov solve's starting vector on earlier solutions: exact when
+// the solution lies in their span, the best guess of that span in H's energy norm otherwise,
+// and what the Newton systems start from by default.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/Error.hpp"
+#include "signorini/InitialGuessProjection.hpp"
+#include "signorini/NewtonSystemSolver.hpp"
+#include "support/TestProblems.hpp"
+
+namespace {
+
+using namespace signorini;
+using namespace signorini::testing;
+
+struct Fixture {
+  ContactQP qp = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp;
+  const Operator& H = *qp.Q;  // symmetric positive definite: the projection's H
+  RCP<Vector> random() const {
+    auto v = rcp(new Vector(qp.Q->getDomainMap()));
+    v->randomize();
+    return v;
+  }
+  double energyNorm(const Vector& v) const {
+    Vector Hv(H.getRangeMap());
+    H.apply(v, Hv);
+    return std::sqrt(v.dot(Hv));
+  }
+};
+
+TEST(InitialGuessProjection, ExactWhenTheSolutionIsInTheSpanOfTheKeptSolutions) {
+  Fixture f;
+  auto solution = f.random(), a = f.random(), b = f.random();
+  Vector r(f.H.getRangeMap()), shifted(*solution, Teuchos::Copy), x(f.H.getDomainMap());
+  f.H.apply(*solution, r);
+  shifted.update(1.0, *a, 1.0);  // solution + a: with a, it spans the solution
+
+  InitialGuessProjection projection(2);
+  projection.remember(*b);  // dropped: the capacity is 2
+  projection.remember(*a);
+  projection.remember(shifted);
+  EXPECT_EQ(projection.project(f.H, r, x, false), 2);
+  x.update(-1.0, *solution, 1.0);
+  EXPECT_LT(f.energyNorm(x), 1e-10 * f.energyNorm(*solution));
+}
+
+TEST(InitialGuessProjection, GivesTheGalerkinSolutionOnTheSpan) {
+  Fixture f;
+  auto solution = f.random();
+  Vector r(f.H.getRangeMap()), x(f.H.getDomainMap()), residual(f.H.getRangeMap());
+  f.H.apply(*solution, r);
+  InitialGuessProjection projection(3);
+  std::vector<RCP<Vector>> kept;
+  for (int i = 0; i < 3; ++i) {
+    kept.push_back(f.random());
+    projection.remember(*kept.back());
+  }
+  ASSERT_EQ(projection.project(f.H, r, x, false), 3);
+  // Galerkin: the residual is orthogonal to every kept solution (the error H-orthogonal).
+  f.H.apply(x, residual);
+  residual.update(1.0, r, -1.0);
+  for (const auto& u : kept) EXPECT_LT(std::abs(u->dot(residual)), 1e-10 * u->norm2() * r.norm2());
+  // Hence no multiple of one of them is closer to the solution in the energy norm.
+  Vector error(x, Teuchos::Copy), Hu(f.H.getRangeMap());
+  error.update(-1.0, *solution, 1.0);
+  const double projected = f.energyNorm(error);
+  EXPECT_LT(projected, f.energyNorm(*solution));
+  for (const auto& u : kept) {
+    f.H.apply(*u, Hu);
+    Vector single(*u, Teuchos::Copy);
+    single.scale(u->dot(r) / u->dot(Hu));
+    single.update(-1.0, *solution, 1.0);
+    EXPECT_LE(projected, f.energyNorm(single) * (1 + 1e-12));
+  }
+}
+
+TEST(InitialGuessProjection, SkipsDependentVectorsAndUsesTheGivenStart) {
+  Fixture f;
+  auto a = f.random();
+  Vector twice(*a, Teuchos::Copy), r(f.H.getRangeMap()), x(*a, Teuchos::Copy);
+  twice.scale(2.0);
+  f.H.apply(*a, r);
+  InitialGuessProjection projection(4);
+  EXPECT_EQ(projection.project(f.H, r, x, false), 0);  // nothing kept yet: x = 0
+  EXPECT_EQ(x.norm2(), 0.0);
+  x.assign(twice);
+  EXPECT_EQ(projection.project(f.H, r, x, true), 1);  // the given start alone: scaled to a
+  x.update(-1.0, *a, 1.0);
+  EXPECT_LT(x.norm2(), 1e-12 * a->norm2());
+  projection.remember(*a);
+  projection.remember(twice);
+  EXPECT_EQ(projection.project(f.H, r, x, false), 1);
+  EXPECT_THROW(InitialGuessProjection(-1), InputError);
+}
+
+// A Newton system solved again needs no Krylov iteration with the projection, and some
+// without it.
+TEST(InitialGuessProjection, NewtonSystemSolverStartsFromEarlierSolutions) {
+  Fixture f;
+  Vector D(f.qp.A->getRangeMap()), r(f.H.getRangeMap()), x(f.H.getDomainMap());
+  D.randomize(1.0, 1e6);
+  r.randomize();
+  for (int keep : {0, 2}) {
+    Teuchos::ParameterList params = NewtonSystemSolver::validParameters();
+    params.sublist("Krylov").set("initial guess: previous solutions", keep);
+    NewtonSystemSolver newton(f.qp, params);
+    newton.setWeights(D);
+    const KrylovResult first = newton.solve(r, x, 1e-10 * r.norm2());
+    ASSERT_TRUE(first.converged);
+    EXPECT_GT(first.iterations, 0);
+    const KrylovResult again = newton.solve(r, x, 1e-6 * r.norm2());
+    ASSERT_TRUE(again.converged);
+    if (keep == 0) {
+      EXPECT_GT(again.iterations, 0);
+    } else {
+      EXPECT_EQ(again.iterations, 0);
+    }
+  }
+}
+
+}  // namespace
