@@ -56,8 +56,8 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
         "safety, the dual residual falls by about this much per main iteration. The tail's Newton systems "
         "start close to their solutions (Krylov/initial guess: previous solutions), so two digits per "
         "step cost about what one did, and the main-iteration count stops following where CG happened "
-        "to stop: with 0.1, paper/E took 8, 9, 9 and 10 main iterations on 1 to 4 ranks, with 0.01 it "
-        "takes 8 on each",
+        "to stop: with 0.1, paper/E took 8, 9, 9 and 10 main iterations on 1 to 4 ranks, with 0.01 8, 8, "
+        "8 and 9",
         range(1e-6, 0.9));
   p.set("starting point: complementarity", 1.0,
         "Initial s^T y as a multiple of the energy scale |b^T v_hat| of the unconstrained solution "
