@@ -71,7 +71,8 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
   p.set("primal-dual: corrector from predictor", true,
         "Mehrotra: start the corrector's Krylov solve from the predictor's step instead of zero "
         "(the two right-hand sides differ by the centering and second-order terms only; measured: "
-        "10-25% fewer Krylov iterations on the family)");
+        "10-25% fewer Krylov iterations on the family, from zero). With Solver/Krylov/initial guess: previous "
+        "solutions > 0, the default, the predictor's step is among the projection's vectors either way");
   p.set("primal-dual: fraction to boundary", 0.995, "Step kept this fraction inside s > 0, y > 0", range(0.5, 0.99999));
   p.set("primal-dual: armijo", 0.01, "Fixed centering: Armijo constant of the merit backtracking", range(1e-8, 0.5));
 
