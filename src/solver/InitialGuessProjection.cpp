@@ -14,8 +14,9 @@ InitialGuessProjection::InitialGuessProjection(int capacity) : capacity_(capacit
 }
 
 int InitialGuessProjection::project(const Operator& H, const Vector& r, Vector& x, bool withX) const {
+  // x is read here and only overwritten after the basis is built: no copy needed.
   std::vector<RCP<const Vector>> candidates;
-  if (withX) candidates.push_back(rcp(new Vector(x, Teuchos::Copy)));
+  if (withX) candidates.push_back(Teuchos::rcpFromRef<const Vector>(x));
   for (auto it = solutions_.rbegin(); it != solutions_.rend(); ++it) candidates.push_back(*it);
 
   // Modified Gram-Schmidt in the H inner product, carrying H q along so that each vector

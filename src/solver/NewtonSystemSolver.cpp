@@ -45,7 +45,8 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
              "Each Newton system starts from the H-orthogonal projection of its solution on the span of "
              "this many earlier solutions (and of the predictor's step, for the corrector): Fischer's "
              "projection, one application of H per vector. 0 starts from zero. Measured on the family "
-             "(2 ranks): 2 needs 20% fewer CG iterations on 2D nx = 800 and 36% fewer on 3D nx = 64",
+             "(2 ranks, bench/results/preconditioners-projection.md): 2 needs 18% fewer CG iterations on 2D nx = 800 "
+             "and 36% fewer on 3D nx = 64",
              rcp(new Teuchos::EnhancedNumberValidator<int>(0, 20)));
   Teuchos::ParameterList& prec = p.sublist("Preconditioner", false, "Preconditioner of H");
   prec.set("type", "amg of H",
