@@ -39,6 +39,8 @@ CONFIGS = {
     # rebuilt when constraints switch, multiplicative contact correction; each Newton system
     # starts from the projection on the two previous solutions, tail safety 0.01.
     "default": {},
+    # The default with the hierarchy rebuilt at every Newton step, never stale.
+    "rebuild every step": {P + "amg of H: rebuild tolerance": "0"},
     # The default of session 5: Newton systems from zero (the corrector from the predictor's
     # step), tail safety 0.1.
     "without projection (session 5 default)": {"Solver/Krylov/initial guess: previous solutions": "0",
