@@ -37,18 +37,23 @@ A = {P + "hierarchy": "algebraic"}  # MueLu's smoothed aggregation alone
 CONFIGS = {
     # The default configuration: geometric levels on the box meshes above MueLu, AMG of H
     # rebuilt when constraints switch, multiplicative contact correction; each Newton system
-    # starts from the projection on the two previous solutions, tail safety 0.01.
+    # starts from the projection on the two previous solutions, corrected on the contact DOFs;
+    # tail safety 0.01.
     "default": {},
+    # The default of session 6: the projected start is not corrected on the contact DOFs.
+    "without contact-corrected start": {"Solver/Krylov/initial guess: contact correction": "false"},
     # The default with the hierarchy rebuilt at every Newton step, never stale.
     "rebuild every step": {P + "amg of H: rebuild tolerance": "0"},
     # The default of session 5: Newton systems from zero (the corrector from the predictor's
     # step), tail safety 0.1.
     "without projection (session 5 default)": {"Solver/Krylov/initial guess: previous solutions": "0",
+                                               "Solver/Krylov/initial guess: contact correction": "false",
                                                "Solver/forcing: tail safety": "0.1"},
     # The default of session 4: the same with MueLu's hierarchy alone, and the forcing's
     # tail safety equal to its safety (0.3).
     "algebraic (previous default)": {**A, "Solver/forcing: tail safety": "0.3",
-                                     "Solver/Krylov/initial guess: previous solutions": "0"},
+                                     "Solver/Krylov/initial guess: previous solutions": "0",
+                                     "Solver/Krylov/initial guess: contact correction": "false"},
     # Variants of the algebraic hierarchy (bench/results/preconditioners.md, session 4).
     "amg of Q": {**A, P + "type": "amg of Q", P + "contact correction": "none"},
     "amg of H": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0", P + "contact correction": "none"},
@@ -66,12 +71,14 @@ CONFIGS = {
     # started from the predictor's step.
     "previous default": {**A, "Solver/forcing: safety": "0.1", "Solver/primal-dual: corrector from predictor": "false"},
 }
-# Measured with the adaptive forcing only: "without projection" and "previous default" change
+# Measured with the adaptive forcing only: "without projection", "without contact-corrected
+# start" and "previous default" change
 # the forcing and the starting vectors, not the preconditioner (with forcing "relative" they
 # solve the default's linear problems, from other starting vectors; session 5's runs of them
 # are in preconditioners-geometric.json); the W-cycle, to keep the benchmark's time within an
 # hour. The variants of session 4 run with today's defaults for what they do not set.
-ADAPTIVE_ONLY = {"previous default", "default + W-cycle", "without projection (session 5 default)"}
+ADAPTIVE_ONLY = {"previous default", "default + W-cycle", "without projection (session 5 default)",
+                 "without contact-corrected start"}
 FORCING = {
     "adaptive": {},
     "relative": {"Solver/forcing: type": "relative", "Solver/forcing: eta": "1e-8"},

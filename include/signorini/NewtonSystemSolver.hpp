@@ -39,7 +39,9 @@ class NewtonSystemSolver {
   // "initial guess: previous solutions" > 0, from the projection on earlier solutions
   // (InitialGuessProjection). With `fromGuess`, the x given (e.g. the predictor's step for
   // the corrector, whose right-hand side differs by the centering terms only) is the start,
-  // or joins the projection's basis.
+  // or joins the projection's basis. With Krylov/"initial guess: contact correction" and a
+  // contact correction in the preconditioner, the start is then made exact on the contact
+  // DOFs: x += P (P^T H P)^-1 P^T (r - H x), the starting vector of deflated CG.
   KrylovResult solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess = false);
 
   const BarrierHessianOperator& hessian() const { return *H_; }
@@ -54,6 +56,7 @@ class NewtonSystemSolver {
   std::string strategy_;
   int maxIterations_;
   InitialGuessProjection initialGuess_;
+  bool contactCorrectedStart_ = false;
   std::unique_ptr<MultilevelPreconditioner> amg_;
   std::string correction_ = "none";
   RCP<ContactSubspaceSolver> subspace_;

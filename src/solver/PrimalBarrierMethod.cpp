@@ -209,21 +209,36 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
 
       // Fraction to the boundary (28), then Armijo backtracking on psi, evaluated without
       // further operator applications: psi is quadratic plus a sum of logs along the line.
-      qp.A->apply(dv, Adv);
-      minusAdv.update(-1.0, Adv, 0.0);
-      double alpha = std::min(1.0, ftb * maxStepToBoundary(s, minusAdv));
-      qp.Q->apply(dv, Qdv);
-      const double linear = Qv.dot(dv) - qp.b->dot(dv), quadratic = 0.5 * Qdv.dot(dv);
-      auto psiChange = [&](double a) {  // psi(v + a dv) - psi(v)
-        ++result.functionEvaluations;
-        return a * linear + a * a * quadratic - mu * logChange(s, a, minusAdv);
-      };
+      // A direction that finds no decrease is solved once more, much tighter, and searched
+      // again: near round-off a loosely solved direction's slope can be all error.
+      double alpha = 0.0;
       int halvings = 0;
-      while (!(psiChange(alpha) <= tau * alpha * slope) && halvings < 60) {
-        alpha *= 0.5;
-        ++halvings;
+      for (int attempt = 0; attempt < 2; ++attempt) {
+        if (attempt == 1) {
+          kr = newton.solve(rhs, dv, 1e-3 * tolAbs, true);
+          result.krylovIterations += kr.iterations;
+          krylov += kr.iterations;
+          result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, krylov);
+          slope = g.dot(dv);
+          if (!(slope < 0)) break;
+        }
+        qp.A->apply(dv, Adv);
+        minusAdv.update(-1.0, Adv, 0.0);
+        alpha = std::min(1.0, ftb * maxStepToBoundary(s, minusAdv));
+        qp.Q->apply(dv, Qdv);
+        const double linear = Qv.dot(dv) - qp.b->dot(dv), quadratic = 0.5 * Qdv.dot(dv);
+        auto psiChange = [&](double a) {  // psi(v + a dv) - psi(v)
+          ++result.functionEvaluations;
+          return a * linear + a * a * quadratic - mu * logChange(s, a, minusAdv);
+        };
+        halvings = 0;
+        while (!(psiChange(alpha) <= tau * alpha * slope) && halvings < 60) {
+          alpha *= 0.5;
+          ++halvings;
+        }
+        if (halvings < 60) break;
       }
-      if (halvings == 60) {
+      if (halvings == 60 || !(slope < 0)) {
         result.status = SolveStatus::LineSearchFailure;
         result.message = "no Armijo decrease along the Newton direction; tighten Solver/forcing: eta";
         failed = true;

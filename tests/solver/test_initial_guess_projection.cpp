@@ -9,6 +9,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "signorini/BarrierHessianOperator.hpp"
 #include "signorini/Error.hpp"
 #include "signorini/InitialGuessProjection.hpp"
 #include "signorini/NewtonSystemSolver.hpp"
@@ -121,6 +122,36 @@ TEST(InitialGuessProjection, NewtonSystemSolverStartsFromEarlierSolutions) {
     } else {
       EXPECT_EQ(again.iterations, 0);
     }
+  }
+}
+
+// A system whose solution lies on the contact DOFs: the contact-corrected start is that
+// solution (no Krylov iteration), the start from zero is not.
+TEST(InitialGuessProjection, ContactCorrectedStartIsExactOnTheContactDofs) {
+  Fixture f;
+  Vector D(f.qp.A->getRangeMap()), ones(f.qp.A->getRangeMap()), solution(f.H.getDomainMap()),
+      r(f.H.getRangeMap()), x(f.H.getDomainMap());
+  D.randomize(1.0, 1e6);
+  ones.putScalar(1.0);
+  f.qp.A->apply(ones, solution, Teuchos::TRANS);  // nonzero exactly on the contact DOFs
+  BarrierHessianOperator H(f.qp.Q, f.qp.A);
+  H.setWeights(D);
+  H.apply(solution, r);
+  for (bool corrected : {false, true}) {
+    Teuchos::ParameterList params = NewtonSystemSolver::validParameters();
+    params.sublist("Krylov").set("initial guess: previous solutions", 0);
+    params.sublist("Krylov").set("initial guess: contact correction", corrected);
+    NewtonSystemSolver newton(f.qp, params);
+    newton.setWeights(D);
+    const KrylovResult result = newton.solve(r, x, 1e-8 * r.norm2());
+    ASSERT_TRUE(result.converged);
+    if (corrected) {
+      EXPECT_EQ(result.iterations, 0);
+    } else {
+      EXPECT_GT(result.iterations, 0);
+    }
+    x.update(-1.0, solution, 1.0);
+    EXPECT_LT(x.normInf(), 1e-6 * solution.normInf()) << corrected;
   }
 }
 
