@@ -1,6 +1,7 @@
 // Fischer's projection of a Krylov solve's starting vector on earlier solutions: exact when
 // the solution lies in their span, the best guess of that span in H's energy norm otherwise,
-// and what the Newton systems start from by default.
+// and what the Newton systems start from by default, with its correction on the contact
+// DOFs.
 #include <gtest/gtest.h>
 
 #include <cmath>
