@@ -72,11 +72,10 @@ CONFIGS = {
     "previous default": {**A, "Solver/forcing: safety": "0.1", "Solver/primal-dual: corrector from predictor": "false"},
 }
 # Measured with the adaptive forcing only: "without projection", "without contact-corrected
-# start" and "previous default" change
-# the forcing and the starting vectors, not the preconditioner (with forcing "relative" they
-# solve the default's linear problems, from other starting vectors; session 5's runs of them
-# are in preconditioners-geometric.json); the W-cycle, to keep the benchmark's time within an
-# hour. The variants of session 4 run with today's defaults for what they do not set.
+# start" and "previous default" change the forcing and the starting vectors, not the
+# preconditioner (with forcing "relative" they solve the default's linear problems, from
+# other starting vectors; session 5's runs of them are in preconditioners-geometric.json);
+# the W-cycle, to keep the benchmark's time within an hour. The variants of session 4 run with today's defaults for what they do not set.
 ADAPTIVE_ONLY = {"previous default", "default + W-cycle", "without projection (session 5 default)",
                  "without contact-corrected start"}
 FORCING = {

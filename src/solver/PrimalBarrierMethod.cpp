@@ -188,17 +188,19 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
       rhs.update(-1.0, g, 0.0);
       const double residualScale = gnorm * std::min(1.0, std::sqrt(gnorm / (bnorm > 0 ? bnorm : 1.0)));
       double tolAbs = std::min(0.5 * gnorm, forcing.tolerance(gnorm, residualScale, gnorm));
-      KrylovResult kr = newton.solve(rhs, dv, tolAbs);
       ++result.newtonSteps;
-      int krylov = kr.iterations;
-      double slope = g.dot(dv);
-      if (!(slope < 0)) {  // not a descent direction: solve once more, much tighter
-        kr = newton.solve(rhs, dv, 1e-3 * tolAbs);
-        krylov += kr.iterations;
+      int krylov = 0;
+      double slope = 0.0;
+      // Solves for the direction dv, counts the iterations, and updates its slope g^T dv.
+      auto solveDirection = [&](double tolerance, bool fromDirection) {
+        const int iterations = newton.solve(rhs, dv, tolerance, fromDirection).iterations;
+        krylov += iterations;
+        result.krylovIterations += iterations;
+        result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, krylov);
         slope = g.dot(dv);
-      }
-      result.krylovIterations += krylov;
-      result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, krylov);
+      };
+      solveDirection(tolAbs, false);
+      if (!(slope < 0)) solveDirection(1e-3 * tolAbs, false);  // no descent: once more, much tighter
       if (!(slope < 0)) {
         result.status = SolveStatus::KrylovFailure;
         result.message = "the Krylov solver returned no descent direction; raise Solver/Krylov/maximum "
@@ -215,11 +217,7 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
       int halvings = 0;
       for (int attempt = 0; attempt < 2; ++attempt) {
         if (attempt == 1) {
-          kr = newton.solve(rhs, dv, 1e-3 * tolAbs, true);
-          result.krylovIterations += kr.iterations;
-          krylov += kr.iterations;
-          result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, krylov);
-          slope = g.dot(dv);
+          solveDirection(1e-3 * tolAbs, true);
           if (!(slope < 0)) break;
         }
         qp.A->apply(dv, Adv);
