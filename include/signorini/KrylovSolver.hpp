@@ -24,10 +24,12 @@ class KrylovSolver {
   explicit KrylovSolver(const Teuchos::ParameterList& params = validParameters());
 
   // Solves A x = b from the initial x, preconditioned by M (may be null), until
-  // ||b - A x|| <= tol ||b|| or maxIterations.
+  // ||b - A x|| <= tol ||b|| or maxIterations. With startReduction > 0 the target is instead
+  // max(floor ||b||, min(tol ||b||, startReduction min(||r0||, ||b||))), where r0 = b - A x0 is
+  // the starting residual (Belos computes it anyway: no extra product).
   KrylovResult solve(const RCP<const Operator>& A, const RCP<const Operator>& M,
                      const RCP<const MultiVector>& b, const RCP<MultiVector>& x, double tol,
-                     int maxIterations) const;
+                     int maxIterations, double startReduction = 0.0, double floor = 0.0) const;
 
   const std::string& solverName() const { return solver_; }
 

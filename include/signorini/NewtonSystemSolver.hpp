@@ -42,7 +42,11 @@ class NewtonSystemSolver {
   // or joins the projection's basis. With Krylov/"initial guess: contact correction" and a
   // contact correction in the preconditioner, the start is then made exact on the contact
   // DOFs: x += P (P^T H P)^-1 P^T (r - H x), the starting vector of deflated CG.
-  KrylovResult solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess = false);
+  // With startReduction > 0 the solve stops earlier, once the residual of that start (or ||r||,
+  // if smaller) has fallen by this factor, but not above absoluteTolerance nor before
+  // absoluteFloor.
+  KrylovResult solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess = false,
+                     double startReduction = 0.0, double absoluteFloor = 0.0);
 
   const BarrierHessianOperator& hessian() const { return *H_; }
   int maxIterations() const { return maxIterations_; }

@@ -59,6 +59,7 @@ struct ForcingRule {
   double eta = 0.1;
   double safety = 0.3;
   double tailSafety = 0.01;
+  double reductionSafeguard = 1.0;
   bool stationarityOnly = false;  // set by the method before each Newton step
   double floor = 0.0;
   // Eisenstat-Walker state: the previous nonlinear residual norm and forcing term.
@@ -66,7 +67,11 @@ struct ForcingRule {
 
   void restart() { previousNorm = -1.0; }
   // nonlinearNorm: the norm of the nonlinear residual the Newton step reduces (EW only).
+  // An absolute tolerance; with "reduction" the loosest one allowed, startReduction() and
+  // floor do the rest (NewtonSystemSolver::solve).
   double tolerance(double rhsNorm, double residualScale, double nonlinearNorm);
+  // The factor by which a solve reduces its start's residual ("reduction"), else 0.
+  double startReduction() const { return type == "reduction" ? eta : 0.0; }
 };
 ForcingRule forcingRule(const Teuchos::ParameterList& params, double floor);
 

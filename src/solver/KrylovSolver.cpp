@@ -1,11 +1,13 @@
 #include "signorini/KrylovSolver.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include <BelosLinearProblem.hpp>
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
 #include <Tpetra_Operator.hpp>
 
 #include "signorini/Error.hpp"
@@ -29,10 +31,15 @@ KrylovSolver::KrylovSolver(const Teuchos::ParameterList& params)
 
 KrylovResult KrylovSolver::solve(const RCP<const Operator>& A, const RCP<const Operator>& M,
                                  const RCP<const MultiVector>& b, const RCP<MultiVector>& x,
-                                 double tol, int maxIterations) const {
+                                 double tol, int maxIterations, double startReduction, double floor) const {
   auto problem = rcp(new Belos::LinearProblem<Scalar, MultiVector, Operator>(A, x, b));
   if (!M.is_null()) problem->setRightPrec(M);
   problem->setProblem();
+  if (startReduction > 0.0 && b->getNumVectors() == 1) {
+    // Relative to ||b||, as the residual scaling below says; a start worse than zero counts as zero.
+    const double bnorm = b->getVector(0)->norm2(), r0norm = problem->getInitResVec()->getVector(0)->norm2();
+    if (bnorm > 0.0) tol = std::max(floor, std::min(tol, startReduction * std::min(r0norm, bnorm) / bnorm));
+  }
 
   Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
   auto solver = factory.create(solver_, Teuchos::null);

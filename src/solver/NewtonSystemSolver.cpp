@@ -165,7 +165,8 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
   }
 }
 
-KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess) {
+KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess,
+                                       double startReduction, double absoluteFloor) {
   const double rnorm = r.norm2();
   if (!fromGuess || rnorm == 0.0) x.putScalar(0.0);
   if (rnorm == 0.0) return KrylovResult{0, true, 0.0};
@@ -186,7 +187,8 @@ KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absolu
   KrylovResult result;
   {
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3c Krylov"));
-    result = krylov_.solve(H_, M, rhs, sol, std::min(0.5, absoluteTolerance / rnorm), maxIterations_);
+    result = krylov_.solve(H_, M, rhs, sol, std::min(0.5, absoluteTolerance / rnorm), maxIterations_, startReduction,
+                           absoluteFloor / rnorm);
   }
   initialGuess_.remember(x);
   return result;

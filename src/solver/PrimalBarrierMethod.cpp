@@ -187,20 +187,23 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
       newton.setWeights(D);
       rhs.update(-1.0, g, 0.0);
       const double residualScale = gnorm * std::min(1.0, std::sqrt(gnorm / (bnorm > 0 ? bnorm : 1.0)));
-      double tolAbs = std::min(0.5 * gnorm, forcing.tolerance(gnorm, residualScale, gnorm));
+      const double tolAbs = std::min(0.5 * gnorm, forcing.tolerance(gnorm, residualScale, gnorm));
       ++result.newtonSteps;
       int krylov = 0;
       double slope = 0.0;
-      // Solves for the direction dv, counts the iterations, and updates its slope g^T dv.
-      auto solveDirection = [&](double tolerance, bool fromDirection) {
-        const int iterations = newton.solve(rhs, dv, tolerance, fromDirection).iterations;
+      // Solves for the direction dv, `tighter` times tighter than the forcing asks, counts the
+      // iterations, and updates its slope g^T dv.
+      auto solveDirection = [&](double tighter, bool fromDirection) {
+        const int iterations =
+            newton.solve(rhs, dv, tighter * tolAbs, fromDirection, tighter * forcing.startReduction(),
+                         tighter * forcing.floor).iterations;
         krylov += iterations;
         result.krylovIterations += iterations;
         result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, krylov);
         slope = g.dot(dv);
       };
-      solveDirection(tolAbs, false);
-      if (!(slope < 0)) solveDirection(1e-3 * tolAbs, false);  // no descent: once more, much tighter
+      solveDirection(1.0, false);
+      if (!(slope < 0)) solveDirection(1e-3, false);  // no descent: once more, much tighter
       if (!(slope < 0)) {
         result.status = SolveStatus::KrylovFailure;
         result.message = "the Krylov solver returned no descent direction; raise Solver/Krylov/maximum "
@@ -217,7 +220,7 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
       int halvings = 0;
       for (int attempt = 0; attempt < 2; ++attempt) {
         if (attempt == 1) {
-          solveDirection(1e-3 * tolAbs, true);
+          solveDirection(1e-3, true);
           if (!(slope < 0)) break;
         }
         qp.A->apply(dv, Adv);

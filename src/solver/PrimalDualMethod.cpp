@@ -87,8 +87,12 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     const double residualScale = std::max(rdNorm, mu0 > 0 ? bnorm * mu / mu0 : 0.0);
     // ||F|| with ||s.y - mu_target|| estimated by sqrt(m) mu
     const double kktNorm = std::sqrt(rdNorm * rdNorm + rpNorm * rpNorm + static_cast<double>(m) * mu * mu);
+    double tolerance = forcing.tolerance(rhs.norm2(), residualScale, kktNorm);
+    // Fixed centering backtracks on 1/2 ||F||^2, along which only an inexact Newton direction,
+    // ||residual|| <= eta ||F|| with eta < 1, is sure to descend.
+    if (centering == "fixed") tolerance = std::max(forcing.floor, std::min(tolerance, forcing.eta * kktNorm));
     KrylovResult kr =
-        newton.solve(rhs, dv, forcing.tolerance(rhs.norm2(), residualScale, kktNorm), fromCurrentStep);
+        newton.solve(rhs, dv, tolerance, fromCurrentStep, forcing.startReduction(), forcing.floor);
     qp.A->apply(dv, Adv);
     ds.update(-1.0, rp, -1.0, Adv, 0.0);
     {
@@ -143,7 +147,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
       // Newton systems are solved too loosely for the target, and D = y/s degenerates.
       result.status = SolveStatus::NumericalBreakdown;
       result.message = "the barrier parameter vanished before the KKT target was met: the Newton systems are "
-                       "solved too loosely; tighten Solver/forcing: eta or use Solver/forcing: type = adaptive";
+                       "solved too loosely; tighten Solver/forcing: eta";
       break;
     }
     if (k == maxIterations) {

@@ -230,7 +230,7 @@ TEST(InteriorPoint, ForcingRulesAndKrylovSolversAreSelectable) {
   const Teuchos::ParameterList problem = shippedProblem("paper/G");
   AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
   const double reference = referenceObjective(problem);
-  for (const char* forcing : {"constant", "eisenstat-walker", "relative"})
+  for (const char* forcing : {"adaptive", "constant", "eisenstat-walker", "relative"})
     for (const char* m : {"primal-dual", "primal"}) {
       Teuchos::ParameterList params = method(m);
       params.set("forcing: type", forcing);
