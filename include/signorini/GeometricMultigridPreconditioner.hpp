@@ -51,6 +51,10 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // The interpolation from level l + 1 to level l (l = 0: to the fine space). Coarse DOF
   // blockSize * v + c is component c at vertex v of that level's grid (BoxGrid numbering).
   RCP<const CrsMatrix> prolongator(int level) const;
+  // The matrix of level l (0: the fine one given to compute(), then the Galerkin products).
+  // After the first compute(), a fine matrix on the previous one's graph updates them in
+  // place with the products of the entries that changed.
+  RCP<const CrsMatrix> levelMatrix(int level) const;
 
  private:
   struct Level;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <Ifpack2_Chebyshev.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_LAPACK.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <TpetraExt_TripleMatrixMultiply.hpp>
@@ -173,6 +174,67 @@ double largestEigenvalueEstimate(const CrsMatrix& A, int steps) {
   return alpha.back();
 }
 
+// The entries of `next` that differ from `previous`, as a matrix holding only them, when the
+// two share one graph (BarrierHessianOperator assembles every H on Q's): between Newton
+// steps only A^T D A on the contact DOFs changes. Null, on every rank, otherwise. Collective.
+RCP<CrsMatrix> changedEntries(const CrsMatrix& previous, const CrsMatrix& next) {
+  int sameGraph = previous.getCrsGraph() == next.getCrsGraph() ? 1 : 0;
+  int everywhere = 0;
+  Teuchos::reduceAll(*next.getComm(), Teuchos::REDUCE_MIN, 1, &sameGraph, &everywhere);
+  if (!everywhere) return Teuchos::null;
+  const auto before = previous.getLocalMatrixHost(), after = next.getLocalMatrixHost();
+  const LocalOrdinal rows = static_cast<LocalOrdinal>(after.numRows());
+  Teuchos::Array<std::size_t> counts(rows, 0);  // Tpetra 13.2 matrices cannot grow past these
+  for (LocalOrdinal row = 0; row < rows; ++row)
+    for (auto e = after.graph.row_map(row); e < after.graph.row_map(row + 1); ++e)
+      counts[row] += after.values(e) != before.values(e);
+  auto change = rcp(new CrsMatrix(next.getRowMap(), counts()));
+  std::vector<GlobalOrdinal> columns;
+  std::vector<double> values;
+  for (LocalOrdinal row = 0; row < rows; ++row) {
+    columns.clear();
+    values.clear();
+    for (auto e = after.graph.row_map(row); e < after.graph.row_map(row + 1); ++e)
+      if (after.values(e) != before.values(e)) {
+        columns.push_back(next.getColMap()->getGlobalElement(after.graph.entries(e)));
+        values.push_back(after.values(e) - before.values(e));
+      }
+    if (!columns.empty())
+      change->insertGlobalValues(next.getRowMap()->getGlobalElement(row),
+                                 Teuchos::ArrayView<const GlobalOrdinal>(columns),
+                                 Teuchos::ArrayView<const double>(values));
+  }
+  change->fillComplete(next.getDomainMap(), next.getRangeMap());
+  return change;
+}
+
+// A += change, where change's entries lie in A's pattern; false, on every rank, when some do
+// not (A is then partly updated: the caller rebuilds it). Collective.
+bool addInPattern(CrsMatrix& A, const CrsMatrix& change) {
+  A.resumeFill();
+  int fits = 1;
+  for (LocalOrdinal row = 0; row < static_cast<LocalOrdinal>(change.getNodeNumRows()); ++row) {
+    typename CrsMatrix::local_inds_host_view_type cols;
+    typename CrsMatrix::values_host_view_type vals;
+    change.getLocalRowView(row, cols, vals);
+    if (cols.extent(0) == 0) continue;
+    std::vector<GlobalOrdinal> globalCols(cols.extent(0));
+    std::vector<double> rowValues(cols.extent(0));
+    for (std::size_t k = 0; k < cols.extent(0); ++k) {
+      globalCols[k] = change.getColMap()->getGlobalElement(cols(k));
+      rowValues[k] = vals(k);
+    }
+    const LocalOrdinal added = A.sumIntoGlobalValues(change.getRowMap()->getGlobalElement(row),
+                                                     Teuchos::ArrayView<const GlobalOrdinal>(globalCols),
+                                                     Teuchos::ArrayView<const double>(rowValues));
+    if (added != static_cast<LocalOrdinal>(globalCols.size())) fits = 0;
+  }
+  A.fillComplete(A.getDomainMap(), A.getRangeMap());
+  int everywhere = 0;
+  Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_MIN, 1, &fits, &everywhere);
+  return everywhere == 1;
+}
+
 }  // namespace
 
 Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParameters() {
@@ -339,15 +401,32 @@ class VCycle : public Operator {
 }  // namespace
 
 void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reuse) {
+  // After the first build, the coarse matrices are updated with the Galerkin products of what
+  // changed in A alone (a few rows: A^T D A on the contact DOFs), not recomputed: the full
+  // products were 0.9 s of a 1.6 s setup at 3D nx = 64.
+  RCP<CrsMatrix> change;
+  if (levels_.size() > 1 && !levels_[0]->A.is_null()) {
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b1 Galerkin products"));
+    change = changedEntries(*levels_[0]->A, *A);
+  }
   levels_[0]->A = A;
   std::vector<RCP<CrsMatrix>> matrices{A}, prolongators, restrictions;
   std::vector<RCP<Chebyshev>> smoothers;
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     Level& level = *levels_[l];
-    auto coarseA = rcp(new CrsMatrix(level.P->getDomainMap(), 0));
+    RCP<CrsMatrix> coarseA;
     {
       Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b1 Galerkin products"));
-      Tpetra::TripleMatrixMultiply::MultiplyRAP(*level.P, true, *level.A, false, *level.P, false, *coarseA);
+      if (!change.is_null()) {
+        auto coarseChange = rcp(new CrsMatrix(level.P->getDomainMap(), 0));
+        Tpetra::TripleMatrixMultiply::MultiplyRAP(*level.P, true, *change, false, *level.P, false, *coarseChange);
+        change = addInPattern(*levels_[l + 1]->A, *coarseChange) ? coarseChange : Teuchos::null;
+        if (!change.is_null()) coarseA = levels_[l + 1]->A;
+      }
+      if (coarseA.is_null()) {
+        coarseA = rcp(new CrsMatrix(level.P->getDomainMap(), 0));
+        Tpetra::TripleMatrixMultiply::MultiplyRAP(*level.P, true, *level.A, false, *level.P, false, *coarseA);
+      }
     }
     levels_[l + 1]->A = coarseA;
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b2 smoothers"));
@@ -375,6 +454,12 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
     coarse_->compute(levels_.back()->A, reuse && !cycle_.is_null());
   }
   cycle_ = rcp(new VCycle(matrices, smoothers, prolongators, restrictions, coarse_->getOperator()));
+}
+
+RCP<const CrsMatrix> GeometricMultigridPreconditioner::levelMatrix(int level) const {
+  if (level < 0 || level >= static_cast<int>(levels_.size()) || levels_[level]->A.is_null())
+    throw Error("GeometricMultigridPreconditioner::levelMatrix: no such level, or compute() not called");
+  return levels_[level]->A;
 }
 
 RCP<Operator> GeometricMultigridPreconditioner::getOperator() const {

@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "signorini/BarrierHessianOperator.hpp"
 #include "signorini/Error.hpp"
 #include "signorini/GeometricMultigridPreconditioner.hpp"
 #include "signorini/InteriorPointSolver.hpp"
@@ -140,6 +142,60 @@ TEST(GeometricMultigrid, CycleIsSymmetric) {
   gmg.getOperator()->apply(y, My);
   EXPECT_NEAR(y.dot(Mx), x.dot(My), 1e-11 * std::abs(y.dot(Mx)));
   EXPECT_GT(x.dot(Mx), 0.0);
+}
+
+// Between Newton steps only A^T D A changes; the coarse matrices are then updated in place
+// with the Galerkin products of the change, and must equal the products of the new matrix.
+TEST(GeometricMultigrid, UpdatedCoarseMatricesEqualFreshProducts) {
+  for (int dim : {2, 3}) {
+    Teuchos::ParameterList p = boxProblem(dim, dim == 2 ? 16 : 8, 1);
+    p.sublist("Contact").set("boundary", dim == 2 ? "ymin" : "zmin");
+    p.sublist("Traction").sublist(dim == 2 ? "ymax" : "zmax").set(dim == 2 ? "traction: y" : "traction: z", "-1");
+    const AssembledProblem problem = buildProblem(p, Tpetra::getDefaultComm());
+    const ContactQP& qp = problem.qp;
+    BarrierHessianOperator H(qp.Q, qp.A);
+    Vector D(qp.A->getRangeMap());
+    auto weightsFor = [&](int step) {  // zero on some constraints, large on others, as mu falls
+      auto d = D.getDataNonConst();
+      for (std::size_t i = 0; i < D.getLocalLength(); ++i) {
+        const GlobalOrdinal g = D.getMap()->getGlobalElement(i);
+        d[i] = (g + step) % 3 == 0 ? 0.0 : std::pow(10.0, step + static_cast<double>(g % 5));
+      }
+      H.setWeights(D);
+      return H.assemble();
+    };
+    GeometricMultigridPreconditioner updated = multigrid(qp, 50);
+    ASSERT_GE(updated.geometricLevels(), 2);
+    updated.compute(weightsFor(0));
+    const RCP<const CrsMatrix> firstCoarse = updated.levelMatrix(1);
+    const RCP<CrsMatrix> H2 = weightsFor(2);
+    updated.compute(H2);
+    EXPECT_EQ(updated.levelMatrix(1).get(), firstCoarse.get()) << dim << "D: not updated in place";
+    GeometricMultigridPreconditioner fresh = multigrid(qp, 50);
+    fresh.compute(H2);
+    for (int l = 1; l <= updated.geometricLevels(); ++l) {
+      const CrsMatrix &a = *updated.levelMatrix(l), &b = *fresh.levelMatrix(l);
+      ASSERT_EQ(a.getGlobalNumEntries(), b.getGlobalNumEntries()) << dim << "D level " << l;
+      Vector x(a.getDomainMap()), ax(a.getRangeMap()), bx(a.getRangeMap());
+      x.randomize();
+      a.apply(x, ax);
+      b.apply(x, bx);
+      ax.update(-1.0, bx, 1.0);
+      EXPECT_LT(ax.norm2(), 1e-12 * bx.norm2()) << dim << "D level " << l;
+      EXPECT_GT(bx.norm2(), 0.0);
+    }
+    // And the cycles agree: same smoothers, same coarse solve.
+    Vector x(qp.Q->getDomainMap()), Mx(x.getMap()), Fx(x.getMap());
+    x.randomize();
+    updated.getOperator()->apply(x, Mx);
+    fresh.getOperator()->apply(x, Fx);
+    Mx.update(-1.0, Fx, 1.0);
+    EXPECT_LT(Mx.norm2(), 1e-9 * Fx.norm2()) << dim << "D";
+
+    // A fine matrix on another graph is not an update: the levels are computed afresh.
+    updated.compute(Tpetra::MatrixMatrix::add(1.0, false, *H2, 0.0, false, *qp.Qmatrix()));
+    EXPECT_NE(updated.levelMatrix(1).get(), firstCoarse.get()) << dim << "D";
+  }
 }
 
 // A grid that the mesh does not refine is an input error, not a wrong preconditioner.
