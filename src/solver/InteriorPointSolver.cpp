@@ -47,7 +47,8 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
         "problem at every mu, for measuring preconditioners). \"reduction\" against \"adaptive\", "
         "measured on the family (2 ranks, bench/results/preconditioners-forcing.md): about as many "
         "CG iterations per Newton system on every member and at every mu, one main iteration fewer "
-        "on most members, less solve time on the large ones, more CG iterations on the small ones",
+        "on most members, the same solve time within 12% on the large ones, more CG iterations on "
+        "the small ones",
         choices({"reduction", "adaptive", "constant", "eisenstat-walker", "relative"}));
   p.set("forcing: eta", 0.1, "Reduction of each solve's starting residual, constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
   p.set("forcing: safety", 0.3,

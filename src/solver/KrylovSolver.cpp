@@ -7,8 +7,8 @@
 #include <BelosSolverFactory.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <Tpetra_MultiVector.hpp>
-#include <Tpetra_Vector.hpp>
 #include <Tpetra_Operator.hpp>
+#include <Tpetra_Vector.hpp>
 
 #include "signorini/Error.hpp"
 
