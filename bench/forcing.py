@@ -5,7 +5,8 @@ safety asks each system for fewer digits and the interior point method for more 
 
     /usr/bin/python3 bench/forcing.py [--ranks N] [--safety 0.1,0.2,...] [--problems XML,...]
 
-Writes bench/results/forcing.{json,md}; every run uses the default configuration otherwise.
+Writes bench/results/forcing.{json,md}; every run selects the adaptive forcing (the default
+until session 8, when "reduction" replaced it) and uses the default configuration otherwise.
 The stored results include safety 1.0, measured before the parameter was limited to 0.9
 (at 1 a step need not reduce the dual residual, and it stagnated on 3D P1).
 """
@@ -33,7 +34,8 @@ def main():
     for problem in problems:
         for safety in safeties:
             out = os.path.join(args.workdir, f"{problem.replace('/', '-')}-safety-{safety}")
-            summary, history = run(problem, {"Solver/forcing: safety": safety}, args.ranks, out, args.reuse)
+            settings = {"Solver/forcing: type": "adaptive", "Solver/forcing: safety": safety}
+            summary, history = run(problem, settings, args.ranks, out, args.reuse)
             records.append({"problem": problem, "safety": float(safety), "ranks": args.ranks, "summary": summary,
                             "history": history})
             print(f"{problem:22s} safety {safety:4s}: it {summary['outer_iterations']:3d}, "
