@@ -43,17 +43,13 @@ StoppedSolve solveFrom(const RCP<CrsMatrix>& A, double offset, double tol, doubl
   auto b = rcp(new MultiVector(A->getRangeMap(), 1));
   auto x = rcp(new MultiVector(A->getDomainMap(), 1));
   {
+    auto position = [&](long i) {  // in [0, 1)
+      return static_cast<double>(A->getRowMap()->getGlobalElement(i)) / A->getGlobalNumRows();
+    };
     auto xd = x->getDataNonConst(0);
-    auto bd = b->getDataNonConst(0);
-    for (long i = 0; i < xd.size(); ++i) {
-      const double t = static_cast<double>(A->getRowMap()->getGlobalElement(i)) / A->getGlobalNumRows();
-      xd[i] = std::sin(3.0 * t) + t * t;  // the exact solution
-    }
+    for (long i = 0; i < xd.size(); ++i) xd[i] = std::sin(3.0 * position(i)) + position(i) * position(i);  // x*
     A->apply(*x, *b);
-    for (long i = 0; i < xd.size(); ++i) {
-      const double t = static_cast<double>(A->getRowMap()->getGlobalElement(i)) / A->getGlobalNumRows();
-      xd[i] += offset * std::sin(7.0 * t) * std::cos(31.0 * t);
-    }
+    for (long i = 0; i < xd.size(); ++i) xd[i] += offset * std::sin(7.0 * position(i)) * std::cos(31.0 * position(i));
   }
   StoppedSolve run;
   run.r0 = residualNorm(*A, *b, *x);
