@@ -36,10 +36,13 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // `grid`: the box the fine space's mesh subdivides; `Q`: the fine matrix (its pattern and
   // Dirichlet rows are those of every matrix given to compute()); `coordinates`: the owned
   // fine nodes, on a node map with Q's DOF = blockSize * node + component. Collective.
+  // `eigenvalueUpdateSteps`: Lanczos steps of the smoothers' eigenvalue estimates after a
+  // Galerkin update, started from the previous estimate's Ritz vector and the changed rows
+  // (0: a fresh estimate of "chebyshev: eigenvalue max iterations" steps at every build).
   // Throws InputError when the nodes do not contain the coarse grid's vertices.
   GeometricMultigridPreconditioner(const BoxGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates,
                                    int blockSize, long long coarsestSize, const Teuchos::ParameterList& smoother,
-                                   const Teuchos::ParameterList& muelu);
+                                   const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps = 5);
   ~GeometricMultigridPreconditioner() override;
 
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
@@ -60,6 +63,7 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   struct Level;
   std::vector<std::shared_ptr<Level>> levels_;  // levels_[0] is the fine space
   Teuchos::ParameterList smoother_;
+  int eigenvalueUpdateSteps_;
   std::unique_ptr<MueLuPreconditioner> coarse_;
   RCP<Operator> cycle_;
 };

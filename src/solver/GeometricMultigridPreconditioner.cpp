@@ -29,6 +29,7 @@ struct GeometricMultigridPreconditioner::Level {
   std::vector<char> dirichlet;      // per owned DOF
   RCP<CrsMatrix> A;
   RCP<Chebyshev> smoother;
+  RCP<Vector> ritzVector;  // of the smoother's last eigenvalue estimate
   RCP<CrsMatrix> P, R;  // from the next coarser level to this one, and its transpose
 };
 
@@ -140,38 +141,66 @@ void deterministicStart(Vector& x) {
 // The largest eigenvalue of D^-1 A (D = diag A) by Lanczos in the D inner product, where
 // D^-1 A is self-adjoint: the largest Ritz value after k steps is far closer to it than the
 // power method's Rayleigh quotient after k steps (the power method needed 30 steps in 3D),
-// and each step costs the same one product with A.
-double largestEigenvalueEstimate(const CrsMatrix& A, int steps) {
+// and each step costs the same one product with A. `vector` holds the start and receives the
+// Ritz vector of the value returned, both scaled by D^1/2 (an eigenvector of D^-1/2 A D^-1/2):
+// so scaled, a Ritz vector still starts the next estimate well after D changed by orders of
+// magnitude on the contact DOFs, where unscaled it would be all contact DOFs in the D-norm.
+double largestEigenvalueEstimate(const CrsMatrix& A, int steps, Vector& vector) {
   const auto map = A.getRowMap();
-  Vector diagonal(map), inverseDiagonal(map), q(map), previous(map), w(map), Dw(map);
+  Vector diagonal(map), inverseDiagonal(map), root(map), inverseRoot(map), w(map), Dw(map);
+  MultiVector basis(map, steps);
   A.getLocalDiagCopy(diagonal);
   inverseDiagonal.reciprocal(diagonal);
-  deterministicStart(q);
-  Dw.elementWiseMultiply(1.0, diagonal, q, 0.0);
-  q.scale(1.0 / std::sqrt(q.dot(Dw)));
+  {
+    auto d = diagonal.getData();
+    auto r = root.getDataNonConst(), ir = inverseRoot.getDataNonConst();
+    for (long i = 0; i < r.size(); ++i) {
+      r[i] = std::sqrt(d[i]);
+      ir[i] = 1.0 / r[i];
+    }
+  }
+  w.elementWiseMultiply(1.0, inverseRoot, vector, 0.0);
+  basis.getVectorNonConst(0)->update(1.0 / vector.norm2(), w, 0.0);
   std::vector<double> alpha, beta;
-  double previousBeta = 0.0;
   for (int k = 0; k < steps; ++k) {
-    A.apply(q, Dw);                     // A q
-    alpha.push_back(q.dot(Dw));         // <D^-1 A q, q>_D
+    const auto q = basis.getVector(k);
+    A.apply(*q, Dw);                     // A q
+    alpha.push_back(q->dot(Dw));         // <D^-1 A q, q>_D
     w.elementWiseMultiply(1.0, inverseDiagonal, Dw, 0.0);
-    w.update(-alpha.back(), q, -previousBeta, previous, 1.0);
+    w.update(-alpha.back(), *q, 1.0);
+    if (k > 0) w.update(-beta.back(), *basis.getVector(k - 1), 1.0);
     Dw.elementWiseMultiply(1.0, diagonal, w, 0.0);
     const double b = std::sqrt(std::max(w.dot(Dw), 0.0));
     if (k + 1 == steps || b <= 1e-12 * std::abs(alpha.back())) break;  // the Krylov space is invariant
     beta.push_back(b);
-    previous.assign(q);
-    q.update(1.0 / b, w, 0.0);
-    previousBeta = b;
+    basis.getVectorNonConst(k + 1)->update(1.0 / b, w, 0.0);
   }
-  // Eigenvalues of the Lanczos tridiagonal matrix, ascending.
+  // Eigenpairs of the Lanczos tridiagonal matrix, ascending.
   const int n = static_cast<int>(alpha.size());
   beta.resize(std::max(n - 1, 1));
-  std::vector<double> work(std::max(1, 2 * n - 2));
+  std::vector<double> work(std::max(1, 2 * n - 2)), eigenvectors(n * n);
   int info = 0;
-  Teuchos::LAPACK<int, double>().STEQR('N', n, alpha.data(), beta.data(), nullptr, 1, work.data(), &info);
+  Teuchos::LAPACK<int, double>().STEQR('I', n, alpha.data(), beta.data(), eigenvectors.data(), n, work.data(), &info);
   if (info != 0) throw Error("GeometricMultigridPreconditioner: the Lanczos eigenvalue estimate failed");
+  w.putScalar(0.0);
+  for (int k = 0; k < n; ++k) w.update(eigenvectors[(n - 1) * n + k], *basis.getVector(k), 1.0);
+  vector.elementWiseMultiply(1.0, root, w, 0.0);
   return alpha.back();
+}
+
+// The start of a new estimate after A changed in `change`'s rows: the previous (scaled) Ritz
+// vector, plus as much again on those rows (a new largest eigenvalue there would have its
+// eigenvector there, where the previous vector need not reach).
+void updatedStart(const CrsMatrix& change, Vector& vector) {
+  Vector local(vector.getMap());
+  deterministicStart(local);
+  {
+    auto data = local.getDataNonConst();
+    for (std::size_t row = 0; row < change.getNodeNumRows(); ++row)
+      if (change.getNumEntriesInLocalRow(static_cast<LocalOrdinal>(row)) == 0) data[row] = 0.0;
+  }
+  const double size = local.norm2();
+  if (size > 0.0) vector.update(vector.norm2() / size, local, 1.0);
 }
 
 // The entries of `next` that differ from `previous`, as a matrix holding only them, when the
@@ -253,9 +282,12 @@ Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParamete
 
 GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
     const BoxGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates, int blockSize, long long coarsestSize,
-    const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu)
-    : smoother_(defaultSmootherParameters()) {
+    const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps)
+    : smoother_(defaultSmootherParameters()), eigenvalueUpdateSteps_(eigenvalueUpdateSteps) {
   smoother_.setParameters(smoother);
+  // One step is the Rayleigh quotient of the start: at 2D nx = 800 CG then did not converge.
+  if (eigenvalueUpdateSteps == 1 || eigenvalueUpdateSteps == 2 || eigenvalueUpdateSteps < 0)
+    throw InputError("Preconditioner/geometric: eigenvalue update steps must be 0 (fresh estimates) or at least 3");
   const int dim = grid.dim;
   if (static_cast<int>(coordinates.getNumVectors()) != dim || blockSize < 1 ||
       Q.getRowMap()->getNodeNumElements() != blockSize * coordinates.getLocalLength())
@@ -415,6 +447,7 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
   for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
     Level& level = *levels_[l];
     RCP<CrsMatrix> coarseA;
+    const RCP<const CrsMatrix> levelChange = change;
     {
       Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b1 Galerkin products"));
       if (!change.is_null()) {
@@ -432,10 +465,18 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b2 smoothers"));
     level.smoother = rcp(new Chebyshev(level.A));
     Teuchos::ParameterList smoother = smoother_;
-    if (!smoother.isParameter("chebyshev: max eigenvalue"))
-      smoother.set("chebyshev: max eigenvalue",
-                   smoother.get<double>("chebyshev: boost factor") *
-                       largestEigenvalueEstimate(*level.A, smoother.get<int>("chebyshev: eigenvalue max iterations")));
+    if (!smoother.isParameter("chebyshev: max eigenvalue")) {
+      int steps = smoother.get<int>("chebyshev: eigenvalue max iterations");
+      if (!levelChange.is_null() && !level.ritzVector.is_null() && eigenvalueUpdateSteps_ > 0) {
+        updatedStart(*levelChange, *level.ritzVector);
+        steps = eigenvalueUpdateSteps_;
+      } else {
+        level.ritzVector = rcp(new Vector(level.A->getRowMap()));
+        deterministicStart(*level.ritzVector);
+      }
+      smoother.set("chebyshev: max eigenvalue", smoother.get<double>("chebyshev: boost factor") *
+                                                    largestEigenvalueEstimate(*level.A, steps, *level.ritzVector));
+    }
     // Each build makes a new smoother, whose matrix never changes. Told so, Ifpack2 13.2 skips
     // its own power method, which it otherwise runs in every compute() even when given the
     // max eigenvalue, and then ignores: a third of the setup time at 2D nx = 800.
