@@ -108,6 +108,8 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     return kr;
   };
 
+  double previousRdNorm = -1.0, previousAlpha = 0.0;
+  int stalls = 0;  // main iterations in a row in which r_d stalled
   for (int k = 0;; ++k) {
     qp.Q->apply(*v, Qv);
     rd.assign(Qv);
@@ -117,6 +119,23 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     rp.update(1.0, Av, 1.0, s, 0.0);
     rp.update(-1.0, *qp.d, 1.0);
     mu = m > 0 ? s.dot(y) / m : 0.0;
+    {
+      // The Krylov residual of a step lands in r_d alone: after a step of length alpha,
+      // r_d = (1 - alpha) r_d + alpha (residual). When, twice in a row, r_d kept more than
+      // 1 - alpha/4 of itself and lagged behind mu (its term of the safeguard binds), the solves
+      // are too loose for it: the reduction forcing's safeguard tightens for the rest of the
+      // solve. Without the contact correction, paper/K at 3 ranks otherwise stalled at
+      // stationarity 1e-5 while mu fell to nothing; a single stall (2D nx = 400, step 3) passes.
+      const double rdNorm = rd.norm2();
+      const bool stalled = forcing.type == "reduction" && previousRdNorm > 0 && mu0 > 0 &&
+                           rdNorm > bnorm * mu / mu0 && rdNorm > (1 - 0.25 * previousAlpha) * previousRdNorm;
+      stalls = stalled ? stalls + 1 : 0;
+      if (stalls == 2) {
+        forcing.reductionSafeguard *= 0.5;
+        stalls = 0;
+      }
+      previousRdNorm = rdNorm;
+    }
     ++result.gradientEvaluations;
     lambda.update(-1.0, y, 0.0);
     const KKTMeasures kkt = kktMeasures(qp, *v, lambda);
@@ -266,6 +285,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     v->update(alpha, dv, 1.0);
     s.update(alpha, ds, 1.0);
     y.update(alpha, dy, 1.0);
+    previousAlpha = alpha;
 
     pending = NewtonStepRecord();
     pending.outer = k + 1;
