@@ -38,11 +38,12 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // fine nodes, on a node map with Q's DOF = blockSize * node + component. Collective.
   // `eigenvalueUpdateSteps`: Lanczos steps of the smoothers' eigenvalue estimates after a
   // Galerkin update, started from the previous estimate's Ritz vector and the changed rows
-  // (0: a fresh estimate of "chebyshev: eigenvalue max iterations" steps at every build).
+  // (0: a fresh estimate of "chebyshev: eigenvalue max iterations" steps at every build; the
+  // default, 5, is Preconditioner/geometric: eigenvalue update steps in NewtonSystemSolver).
   // Throws InputError when the nodes do not contain the coarse grid's vertices.
   GeometricMultigridPreconditioner(const BoxGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates,
                                    int blockSize, long long coarsestSize, const Teuchos::ParameterList& smoother,
-                                   const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps = 5);
+                                   const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps);
   ~GeometricMultigridPreconditioner() override;
 
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;

@@ -72,6 +72,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
   bool havePending = false;
   double mu = 0;
 
+  double rdNorm = 0.0;  // ||r_d|| of the current iterate, set with r_d in the main loop
   // Direction for a complementarity residual rc; returns the Krylov result.
   auto direction = [&](const Vector& rcv, bool fromCurrentStep) {
     {
@@ -83,7 +84,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
     }
     rhs.assign(rd);
     qp.A->apply(u, rhs, Teuchos::TRANS, -1.0, -1.0);
-    const double rdNorm = rd.norm2(), rpNorm = rp.norm2();
+    const double rpNorm = rp.norm2();
     const double residualScale = std::max(rdNorm, mu0 > 0 ? bnorm * mu / mu0 : 0.0);
     // ||F|| with ||s.y - mu_target|| estimated by sqrt(m) mu
     const double kktNorm = std::sqrt(rdNorm * rdNorm + rpNorm * rpNorm + static_cast<double>(m) * mu * mu);
@@ -126,7 +127,7 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
       // are too loose for it: the reduction forcing's safeguard tightens for the rest of the
       // solve. Without the contact correction, paper/K at 3 ranks otherwise stalled at
       // stationarity 1e-5 while mu fell to nothing; a single stall (2D nx = 400, step 3) passes.
-      const double rdNorm = rd.norm2();
+      rdNorm = rd.norm2();
       const bool stalled = forcing.type == "reduction" && previousRdNorm > 0 && mu0 > 0 &&
                            rdNorm > bnorm * mu / mu0 && rdNorm > (1 - 0.25 * previousAlpha) * previousRdNorm;
       stalls = stalled ? stalls + 1 : 0;

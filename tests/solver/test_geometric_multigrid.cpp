@@ -261,7 +261,7 @@ TEST(GeometricMultigrid, RejectsAGridTheMeshDoesNotRefine) {
   BoxGrid wrong = *problem.qp.grid;
   wrong.cells = {6, 6, 1};  // halved: vertices at thirds, which the 8-cell mesh lacks
   EXPECT_THROW(GeometricMultigridPreconditioner(wrong, *problem.qp.Qmatrix(), *problem.qp.coordinates, 2, 1,
-                                                Teuchos::ParameterList(), Teuchos::ParameterList()),
+                                                Teuchos::ParameterList(), Teuchos::ParameterList(), 5),
                InputError);
 }
 
