@@ -36,15 +36,19 @@ ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
            OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
 P = "Solver/Preconditioner/"
 A = {P + "hierarchy": "algebraic"}  # MueLu's smoothed aggregation alone
-LAGGED = {P + "amg of H: rebuild tolerance": "0.9"}  # the default rebuild rule until session 9
+UNFILTERED = {P + "amg of H: weight cap": "0"}  # the AMG sees H itself, as until session 10
+LAGGED = {**UNFILTERED, P + "amg of H: rebuild tolerance": "0.9"}  # the default rebuild rule until session 9
 CONFIGS = {
-    # The default configuration: geometric levels on the box meshes above MueLu, AMG of H
-    # rebuilt at every Newton step (Galerkin update, warm-started eigenvalue estimates),
-    # multiplicative contact correction; each Newton system starts from the projection on the
-    # two previous solutions, corrected on the contact DOFs.
+    # The default configuration: geometric levels on the box meshes above MueLu, AMG of
+    # Q + A^T D' A with D' capped at 10 times the constraint stiffness (filtering), rebuilt at
+    # every Newton step (Galerkin update, warm-started eigenvalue estimates), multiplicative
+    # contact correction; each Newton system starts from the projection on the two previous
+    # solutions, corrected on the contact DOFs.
     "default": {},
-    # The default until session 9: the hierarchy rebuilt only when constraints switch between
-    # free and firmly active.
+    # The default of session 9: the AMG built for H itself.
+    "unfiltered": UNFILTERED,
+    # The default until session 9: the AMG of H itself, rebuilt only when constraints switch
+    # between free and firmly active.
     "lagged rebuild": LAGGED,
     # The default of session 6: the projected start is not corrected on the contact DOFs.
     "without contact-corrected start": {**LAGGED, "Solver/Krylov/initial guess: contact correction": "false"},

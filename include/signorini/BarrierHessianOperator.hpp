@@ -32,6 +32,8 @@ class BarrierHessianOperator : public Operator {
   // graph in a row this rank owns (contact constraints couple the DOFs of one node), the
   // result shares Q's graph and costs a copy of Q's values; otherwise it is a general sum.
   RCP<CrsMatrix> assemble() const;
+  // Q + A^T D A with other weights D than the operator's (on A's range map).
+  RCP<CrsMatrix> assemble(const Vector& D) const;
 
   // H P P^T, with P the restriction to the contact DOFs (those in A): Q's columns on the
   // contact DOFs plus A^T D A, with a copy of the current D. It applies H to vectors that

@@ -7,7 +7,9 @@
 //   "amg of H":  MueLu on the assembled Q + A^T D A (assembled for the preconditioner only),
 //                rebuilt when some constraint's relative weight D_i / (D_i + q_i) moved by
 //                more than "amg of H: rebuild tolerance" since the last build (0: every
-//                step, 1: never after the first), with MueLu's "reuse: type" if set;
+//                step, 1: never after the first), with MueLu's "reuse: type" if set; with a
+//                contact correction, D_i is capped at "amg of H: weight cap" times q_i
+//                (filtering: the correction solves the stiff contact part exactly);
 // and its "contact correction": the AMG combined with an exact solve on the contact DOFs
 // (see SubspaceCorrectedPreconditioner), "none", "additive" or "multiplicative". The
 // multigrid's levels are MueLu's (MueLuPreconditioner) or, on a box mesh, geometric ones
@@ -66,6 +68,7 @@ class NewtonSystemSolver {
   RCP<ContactSubspaceSolver> subspace_;
   bool reuseHierarchy_ = false;
   double rebuildTolerance_ = 0.0;
+  double weightCap_ = 0.0;  // "amg of H: weight cap" with a contact correction, else 0 (none)
   RCP<Vector> constraintStiffness_, builtWeights_;  // q_i, and w_i of the last AMG build
   int amgBuilds_ = 0;
   bool amgReady_ = false;

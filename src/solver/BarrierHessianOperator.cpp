@@ -66,7 +66,9 @@ bool BarrierHessianOperator::findPositionsInQPattern(const CrsMatrix& Q) const {
   return global == 1;
 }
 
-RCP<CrsMatrix> BarrierHessianOperator::assemble() const {
+RCP<CrsMatrix> BarrierHessianOperator::assemble() const { return assemble(*D_); }
+
+RCP<CrsMatrix> BarrierHessianOperator::assemble(const Vector& D) const {
   auto Q = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Q_);
   if (Q.is_null()) throw Error("BarrierHessianOperator::assemble needs Q as a CrsMatrix");
   if (inQPattern_ < 0) inQPattern_ = findPositionsInQPattern(*Q) ? 1 : 0;
@@ -75,7 +77,7 @@ RCP<CrsMatrix> BarrierHessianOperator::assemble() const {
     const auto qValues = Q->getLocalMatrixHost().values;
     Values values(Kokkos::view_alloc(Kokkos::WithoutInitializing, "H values"), qValues.extent(0));
     Kokkos::deep_copy(values, qValues);
-    const auto d = D_->getData(0);
+    const auto d = D.getData(0);
     for (std::size_t e = 0; e < position_.size(); ++e)
       values(position_[e]) += d[constraint_[e]] * coefficient_[e];
     auto H = rcp(new CrsMatrix(Q->getCrsGraph(), values));
@@ -83,7 +85,7 @@ RCP<CrsMatrix> BarrierHessianOperator::assemble() const {
     return H;
   }
   CrsMatrix DA(*A_, Teuchos::Copy);
-  DA.leftScale(*D_);
+  DA.leftScale(D);
   auto AtDA = rcp(new CrsMatrix(A_->getDomainMap(), 0));
   Tpetra::MatrixMatrix::Multiply(*A_, true, DA, false, *AtDA);
   return Tpetra::MatrixMatrix::add(1.0, false, *Q, 1.0, false, *AtDA);

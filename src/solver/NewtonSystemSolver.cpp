@@ -1,5 +1,6 @@
 #include "signorini/NewtonSystemSolver.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
@@ -63,12 +64,22 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "amg of Q", "amg of H"))));
   prec.set("amg of H: rebuild tolerance", 0.0,
            "\"amg of H\" is rebuilt when the relative weight D_i / (D_i + q_i) of some constraint i "
-           "(q_i = a_i^T diag(Q) a_i, its stiffness) moved by more than this since the last build; "
+           "(q_i = a_i^T diag(Q) a_i, its stiffness; D_i capped as \"amg of H: weight cap\" says) moved by more than this since the last build; "
            "0 (the default) rebuilds at every Newton step, 1 never after the first; 0.9 rebuilds when a "
            "constraint switches between free and firmly active and leaves the rest to the contact "
            "correction, which on 2D P1 let the largest CG count per Newton system grow from 4 to 8 "
            "with the mesh (4 to 6 rebuilt at every step; bench/results/preconditioners-forcing.md)",
            rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
+  prec.set("amg of H: weight cap", 10.0,
+           "With a contact correction, \"amg of H\" is built for Q + A^T D' A with D'_i = min(D_i, cap q_i) "
+           "instead of H (filtering, as in the AMG with filtering of Petrides et al.): the barrier weights "
+           "of firmly active constraints, orders of magnitude above their stiffness q_i, stay out of the "
+           "coarse levels, and the contact correction solves for them exactly. 0: no cap, the AMG sees H "
+           "(it always does without a contact correction). Measured on the family (2 ranks, a rebuild at "
+           "every step; bench/results/preconditioners-forcing.md, against 0): CG iterations per Newton "
+           "system stay flat as mu falls (paper/G's last step 7 -> 5 against its first 4; paper/H 8 -> 6, "
+           "paper/I 10 -> 7), 5-10% fewer in total on the 2D family; 3 and 30 measured about as well",
+           rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1e300)));
   prec.set("contact correction", "multiplicative",
            "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
            "\"additive\" or \"multiplicative\" (symmetric: subspace, AMG, subspace)",
@@ -133,6 +144,8 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
     subspace_ = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A));
   if (correction_ == "multiplicative") contactColumns_ = H_->onContactColumns();
   rebuildTolerance_ = params.sublist("Preconditioner").get<double>("amg of H: rebuild tolerance");
+  // Without a contact correction, nothing else would see the weights above the cap.
+  if (correction_ != "none") weightCap_ = params.sublist("Preconditioner").get<double>("amg of H: weight cap");
   if (strategy_ == "amg of H") constraintStiffness_ = constraintStiffness(*qp.Qmatrix(), *qp.A);
   reuseHierarchy_ = muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none";
   if (strategy_ == "amg of Q") {
@@ -149,13 +162,19 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
     subspace_->setWeights(D);
   }
   if (strategy_ == "amg of H") {
-    // The relative weights w_i = D_i / (D_i + q_i) say how much A^T D A changes H.
+    // The AMG sees the weights filtered by the cap, and their relative values w_i = D_i / (D_i + q_i)
+    // say how much A^T D A changes the matrix it was built for.
     auto weights = rcp(new Vector(D.getMap()));
+    Vector filtered(D.getMap());
     {
       auto dd = D.getData();
       auto qd = constraintStiffness_->getData();
       auto wd = weights->getDataNonConst();
-      for (long i = 0; i < wd.size(); ++i) wd[i] = dd[i] + qd[i] > 0 ? dd[i] / (dd[i] + qd[i]) : 0.0;
+      auto fd = filtered.getDataNonConst();
+      for (long i = 0; i < wd.size(); ++i) {
+        fd[i] = weightCap_ > 0 ? std::min(dd[i], weightCap_ * qd[i]) : dd[i];
+        wd[i] = fd[i] + qd[i] > 0 ? fd[i] / (fd[i] + qd[i]) : 0.0;
+      }
     }
     if (amgReady_ && rebuildTolerance_ > 0) {
       Vector change(D.getMap());
@@ -167,7 +186,7 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
     RCP<CrsMatrix> H;
     {
       Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3a assemble H"));
-      H = H_->assemble();
+      H = H_->assemble(filtered);
     }
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b AMG setup"));
     amg_->compute(H, reuseHierarchy_ && amgReady_);

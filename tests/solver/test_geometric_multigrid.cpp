@@ -46,15 +46,7 @@ GeometricMultigridPreconditioner multigrid(const ContactQP& qp, long long coarse
 // grow by orders of magnitude on others.
 struct ContactBox {
   ContactBox(int dim, int cells)
-      : problem(buildProblem(parameters(dim, cells), Tpetra::getDefaultComm())), H(problem.qp.Q, problem.qp.A) {}
-  static Teuchos::ParameterList parameters(int dim, int cells) {
-    Teuchos::ParameterList p = boxProblem(dim, cells, 1);
-    p.sublist("Contact").set("boundary", dim == 2 ? "ymin" : "zmin");
-    Teuchos::ParameterList& top = p.sublist("Dirichlet").sublist(dim == 2 ? "ymax" : "zmax");
-    for (const char* c : {"x", "y", "z"})
-      if (c[0] != 'z' || dim == 3) top.set(std::string("displacement: ") + c, "0");
-    return p;
-  }
+      : problem(buildProblem(contactBoxProblem(dim, cells), Tpetra::getDefaultComm())), H(problem.qp.Q, problem.qp.A) {}
   // Step k: weights 10^(2k - 6 + (g % 5) / 2) times Q's largest diagonal entry on the
   // constraints g (their ids) with g % 3 != 0, and on all from step 6 on; 10^-2k before that.
   RCP<CrsMatrix> hessian(int step) {

@@ -30,6 +30,15 @@ Teuchos::ParameterList boxProblem(int dim, int cells, int degree) {
   return p;
 }
 
+Teuchos::ParameterList contactBoxProblem(int dim, int cells) {
+  Teuchos::ParameterList p = boxProblem(dim, cells, 1);
+  p.sublist("Contact").set("boundary", dim == 2 ? "ymin" : "zmin");
+  Teuchos::ParameterList& top = p.sublist("Dirichlet").sublist(dim == 2 ? "ymax" : "zmax");
+  for (const char* c : {"x", "y", "z"})
+    if (c[0] != 'z' || dim == 3) top.set(std::string("displacement: ") + c, "0");
+  return p;
+}
+
 int solveLinear(const ContactQP& qp, Vector& x, double tol) {
   MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nullspace, qp.coordinates);
   amg.compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));

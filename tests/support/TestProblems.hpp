@@ -18,6 +18,9 @@ Teuchos::ParameterList shippedProblem(const std::string& relativePath);
 // A box problem: no load, no boundary condition, no contact; the caller adds what it needs.
 Teuchos::ParameterList boxProblem(int dim, int cells, int degree);
 
+// A P1 box clamped on its top face, with contact on its bottom one and no load.
+Teuchos::ParameterList contactBoxProblem(int dim, int cells);
+
 // Solves Q x = b by CG + MueLu to a relative residual of tol; returns the iterations.
 int solveLinear(const ContactQP& qp, Vector& x, double tol);
 
