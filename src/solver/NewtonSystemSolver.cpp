@@ -64,11 +64,12 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "amg of Q", "amg of H"))));
   prec.set("amg of H: rebuild tolerance", 0.0,
            "\"amg of H\" is rebuilt when the relative weight D_i / (D_i + q_i) of some constraint i "
-           "(q_i = a_i^T diag(Q) a_i, its stiffness; D_i capped as \"amg of H: weight cap\" says) moved by more than this since the last build; "
-           "0 (the default) rebuilds at every Newton step, 1 never after the first; 0.9 rebuilds when a "
-           "constraint switches between free and firmly active and leaves the rest to the contact "
-           "correction, which on 2D P1 let the largest CG count per Newton system grow from 4 to 8 "
-           "with the mesh (4 to 6 rebuilt at every step; bench/results/preconditioners-forcing.md)",
+           "(q_i = a_i^T diag(Q) a_i, its stiffness; D_i capped as \"amg of H: weight cap\" says, so "
+           "below cap / (cap + 1)) moved by more than this since the last build; 0 (the default) rebuilds "
+           "at every Newton step, 1 never after the first. Without the cap, 0.9 (the default until "
+           "session 9) rebuilds when a constraint switches between free and firmly active and leaves the "
+           "rest to the contact correction; on 2D P1 the largest CG count per Newton system then grew from "
+           "4 to 8 with the mesh, against 4 to 5 with the defaults (bench/results/preconditioners-forcing.md)",
            rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
   prec.set("amg of H: weight cap", 10.0,
            "With a contact correction, \"amg of H\" is built for Q + A^T D' A with D'_i = min(D_i, cap q_i) "
@@ -76,9 +77,10 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            "of firmly active constraints, orders of magnitude above their stiffness q_i, stay out of the "
            "coarse levels, and the contact correction solves for them exactly. 0: no cap, the AMG sees H "
            "(it always does without a contact correction). Measured on the family (2 ranks, a rebuild at "
-           "every step; bench/results/preconditioners-forcing.md, against 0): CG iterations per Newton "
-           "system stay flat as mu falls (paper/G's last step 7 -> 5 against its first 4; paper/H 8 -> 6, "
-           "paper/I 10 -> 7), 5-10% fewer in total on the 2D family; 3 and 30 measured about as well",
+           "every step; bench/results/preconditioners-forcing*.md, against 0): the last Newton steps cost "
+           "what the first did (paper/G 4 -> 5 CG iterations for both systems of the first and last main "
+           "iteration, against 4 -> 7; paper/H 4 -> 6 against 4 -> 8; paper/I 5 -> 7 against 5 -> 10), "
+           "5-15% fewer in total on the P1 family; 3 and 30 did about as well (one-off runs)",
            rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1e300)));
   prec.set("contact correction", "multiplicative",
            "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
