@@ -80,7 +80,7 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            "every step; bench/results/preconditioners-forcing*.md, against 0): the last Newton steps cost "
            "what the first did (paper/G 4 -> 5 CG iterations for both systems of the first and last main "
            "iteration, against 4 -> 7; paper/H 4 -> 6 against 4 -> 8; paper/I 5 -> 7 against 5 -> 10), "
-           "5-15% fewer in total on the P1 family; 3 and 30 did about as well (one-off runs)",
+           "2-22% fewer in total on the P1 family; 3 and 30 did about as well (one-off runs)",
            rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1e300)));
   prec.set("contact correction", "multiplicative",
            "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
