@@ -54,4 +54,15 @@ void facetLumpedMass(const LagrangeBasis& basis, const double* vertexCoords, int
 void cellStress(const LagrangeBasis& basis, const double* vertexCoords, const IsotropicMaterial& material,
                 const double* localDisplacement, const double* xi, double* sigma);
 
+// A quadrature rule on local facet f of one cell, exact for polynomials of total degree
+// `degree` on the facet: physical points (dim coordinates each), weights carrying the
+// facet's true measure, and the values of all basis.size() functions at each point (zero
+// for nodes off the facet).
+struct FacetQuadrature {
+  std::vector<double> points, weights, phi;
+  int size() const { return static_cast<int>(weights.size()); }
+};
+void facetQuadrature(const LagrangeBasis& basis, const double* vertexCoords, int localFacet, int degree,
+                     FacetQuadrature& rule);
+
 }  // namespace signorini

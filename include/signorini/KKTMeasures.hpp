@@ -36,4 +36,7 @@ class ActiveSetCriterion {
   double forceScale_ = 1, displacementScale_ = 1;
 };
 
+// 1 on the constraints ActiveSetCriterion calls active at (v, lambda), 0 elsewhere, on A's range map.
+RCP<Vector> activeIndicator(const ContactQP& qp, const Vector& v, const Vector& lambda);
+
 }  // namespace signorini

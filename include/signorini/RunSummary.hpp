@@ -2,8 +2,10 @@
 // The machine-readable results of a run: summary.json (the paper's Table 2 counters, KKT
 // measures, times) and history.csv (one row per Newton step). Written by rank 0, each to a
 // temporary name then renamed, so no half-written file is ever left.
+#include <optional>
 #include <string>
 
+#include "signorini/ContactStatistics.hpp"
 #include "signorini/SolveResult.hpp"
 
 namespace signorini {
@@ -18,6 +20,7 @@ struct RunSummary {
   // Rank 0's serial mesh phase: global mesh, space and partition arrays (capacities), and
   // the growth of its peak resident set over that phase.
   double serialMeshMiB = 0, serialMeshPeakMiB = 0;
+  std::optional<ContactStatistics> contact;  // when the problem has a contact boundary
 };
 
 void writeSummaryJson(const RunSummary& summary, const std::string& path);

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include <MatrixMarket_Tpetra.hpp>
@@ -18,6 +19,7 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "signorini/ContactPressure.hpp"
 #include "signorini/ElasticityAssembler.hpp"
 #include "signorini/Error.hpp"
 #include "signorini/InteriorPointSolver.hpp"
@@ -36,6 +38,9 @@ Teuchos::ParameterList outputParameters() {
   p.set("directory", "results", "Directory of solution.pvtu, summary.json and history.csv (--output overrides)");
   p.set("write solution", true, "Write solution.pvtu with one .vtu per rank");
   p.set("write history", true, "Write history.csv, one row per Newton step");
+  p.set("write contact samples", false,
+        "Write contact.csv: the recovered contact pressure at quadrature points of the contact "
+        "boundary (coordinates, weight, pressure), for integrating errors against a reference");
   return p;
 }
 
@@ -125,7 +130,7 @@ double vonMises(const double* s, int dim, const IsotropicMaterial& material) {
                    3.0 * (sxy * sxy + syz * syz + szx * szx));
 }
 
-void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::string& directory) {
+void writeSolution(const AssembledProblem& p, const SolveResult& r, const Vector& pressure, const std::string& directory) {
   const DistributedSpace& ds = *p.space;
   const int dim = ds.dim();
   const auto& overlap = ds.overlapSpaceNodes();
@@ -144,9 +149,6 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::s
   p.qp.A->apply(*r.v, gap);
   gap.update(1.0, *p.qp.d, -1.0);
   const ActiveSetCriterion criterion(p.qp, *r.v, *r.lambda);
-  Vector pressure(cmap);  // -lambda_i / w_i
-  pressure.reciprocal(*contactNodeWeights(ds, p.definition, cmap));
-  pressure.elementWiseMultiply(-1.0, pressure, *r.lambda, 0.0);
   Import toWanted(cmap, wantedMap);
   Vector lambdaHere(wantedMap), gapHere(wantedMap), pressureHere(wantedMap);
   lambdaHere.doImport(*r.lambda, toWanted, Tpetra::INSERT);
@@ -195,6 +197,44 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::s
     rank.values.push_back(ds.comm()->getRank());
   }
   writeVtu(ds, {displacement, pressureField, force, gapField, active}, {mises, rank}, directory, "solution");
+}
+
+// contact.csv on rank 0: every rank's samples, gathered (the contact boundary is a surface).
+void writeContactSamples(const ContactPressureSamples& samples, const Comm& comm, const std::string& path) {
+  const int width = samples.dim + 2;
+  std::vector<double> packed;
+  for (std::size_t q = 0; q < samples.weights.size(); ++q) {
+    packed.insert(packed.end(), &samples.points[q * samples.dim], &samples.points[(q + 1) * samples.dim]);
+    packed.push_back(samples.weights[q]);
+    packed.push_back(samples.pressures[q]);
+  }
+  // Teuchos' gatherv only handles equal counts: every rank sends its block to rank 0.
+  int count = static_cast<int>(packed.size());
+  if (comm.getRank() != 0) {
+    Teuchos::send(comm, 1, &count, 0);
+    if (count > 0) Teuchos::send(comm, count, packed.data(), 0);
+    return;
+  }
+  std::vector<double> all = packed;
+  for (int rank = 1; rank < comm.getSize(); ++rank) {
+    Teuchos::receive(comm, rank, 1, &count);
+    std::vector<double> block(count);
+    if (count > 0) Teuchos::receive(comm, rank, count, block.data());
+    all.insert(all.end(), block.begin(), block.end());
+  }
+  std::ostringstream csv;
+  csv.precision(17);
+  csv << (samples.dim == 2 ? "x,y" : "x,y,z") << ",weight,pressure\n";
+  for (std::size_t i = 0; i < all.size(); i += width)
+    for (int k = 0; k < width; ++k) csv << all[i + k] << (k + 1 < width ? ',' : '\n');
+  writeFileAtomically(path, csv.str());
+}
+
+void logContact(const ContactStatistics& c, std::ostream& out) {
+  out << "Contact: force (";
+  for (int i = 0; i < c.dim; ++i) out << (i ? ", " : "") << c.force[i];
+  out << "), normal force " << c.normalForce << ", " << (c.dim == 2 ? "length " : "area ") << c.area
+      << ", peak pressure " << c.peakPressure << ", " << c.activeNodes << " active nodes\n";
 }
 
 std::string shortest(double x) {
@@ -360,7 +400,20 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   const std::string directory = cl.output.empty() ? output.get<std::string>("directory") : cl.output;
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 4 output"));
-    if (output.get<bool>("write solution")) writeSolution(problem, result, directory);
+    RCP<Vector> pressure;
+    std::optional<ContactStatistics> contact;
+    if (m > 0) {
+      const ContactPressure recovery(*problem.space, def, problem.qp.A->getRangeMap());
+      pressure = recovery.pressure(*result.lambda, *activeIndicator(problem.qp, *result.v, *result.lambda));
+      contact = contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, def.obstacleDirection,
+                                  result.activeConstraints);
+      if (root) logContact(*contact, out);
+      if (output.get<bool>("write contact samples"))
+        writeContactSamples(recovery.samples(*pressure), *comm, directory + "/contact.csv");
+    } else {
+      pressure = rcp(new Vector(problem.qp.A->getRangeMap()));
+    }
+    if (output.get<bool>("write solution")) writeSolution(problem, result, *pressure, directory);
     total.stop();
     RunSummary summary;
     summary.problem = def.name;
@@ -382,6 +435,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     summary.peakMemoryMiBMaxRank = maxOverRanks(*comm, rss);
     summary.serialMeshMiB = serialMeshMiB;
     summary.serialMeshPeakMiB = problem.serialMeshPeakMiB;
+    summary.contact = contact;
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &rss, &summary.peakMemoryMiBAllRanks);
     if (root) {
       writeSummaryJson(summary, directory + "/summary.json");

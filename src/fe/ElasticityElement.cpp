@@ -325,4 +325,22 @@ void facetLumpedMass(const LagrangeBasis& basis, const double* vertexCoords, int
   for (int a = 0; a < n; ++a) w[a] = area * diagonal[a] / trace;
 }
 
+void facetQuadrature(const LagrangeBasis& basis, const double* vertexCoords, int localFacet, int degree,
+                     FacetQuadrature& rule) {
+  requireElasticityDim(basis);
+  const int d = basis.dim();
+  if (localFacet < 0 || localFacet > d)
+    throw Error("facet quadrature: local facet must be 0.." + std::to_string(d) + ", got " + std::to_string(localFacet));
+  const LoadTabulation& tab = loadTabulation(basis, degree, localFacet);
+  const AffineMap map(d, vertexCoords);
+  const double measure = facetMeasure(d, vertexCoords, localFacet);
+  rule.points.resize(d * tab.size());
+  rule.weights.resize(tab.size());
+  for (int q = 0; q < tab.size(); ++q) {
+    map.map(&tab.points[q * d], &rule.points[q * d]);
+    rule.weights[q] = measure * tab.weights[q];
+  }
+  rule.phi = tab.phi;
+}
+
 }  // namespace signorini

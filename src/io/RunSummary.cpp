@@ -83,8 +83,16 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
                                            r.kkt.primalFeasibilityAbs, r.kkt.dualFeasibilityAbs) << ",\n"
     << "  \"inner_iterations\": [";
   for (std::size_t i = 0; i < r.innerIterations.size(); ++i) j << (i ? ", " : "") << r.innerIterations[i];
-  j << "],\n"
-    << "  \"memory_mib\": {\"max_rank\": " << number(s.peakMemoryMiBMaxRank)
+  j << "],\n";
+  if (s.contact) {
+    const ContactStatistics& c = *s.contact;
+    j << "  \"contact\": {\"force\": [";
+    for (int i = 0; i < c.dim; ++i) j << (i ? ", " : "") << number(c.force[i]);
+    j << "], \"normal_force\": " << number(c.normalForce) << ", \"" << (c.dim == 2 ? "length" : "area")
+      << "\": " << number(c.area) << ", \"peak_pressure\": " << number(c.peakPressure)
+      << ", \"active_nodes\": " << c.activeNodes << "},\n";
+  }
+  j << "  \"memory_mib\": {\"max_rank\": " << number(s.peakMemoryMiBMaxRank)
     << ", \"all_ranks\": " << number(s.peakMemoryMiBAllRanks) << "},\n"
     << "  \"serial_mesh_mib\": " << number(s.serialMeshMiB) << ",\n"
     << "  \"serial_mesh_peak_rss_mib\": " << number(s.serialMeshPeakMiB) << ",\n"

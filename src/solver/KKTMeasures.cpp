@@ -69,4 +69,18 @@ ActiveSetCriterion::ActiveSetCriterion(const ContactQP& qp, const Vector& v, con
   if (!(displacementScale_ > 0)) displacementScale_ = 1;
 }
 
+RCP<Vector> activeIndicator(const ContactQP& qp, const Vector& v, const Vector& lambda) {
+  Vector slack(qp.A->getRangeMap());
+  qp.A->apply(v, slack);
+  slack.update(1.0, *qp.d, -1.0);
+  const ActiveSetCriterion criterion(qp, v, lambda);
+  auto active = rcp(new Vector(qp.A->getRangeMap()));
+  auto l = lambda.getData();
+  auto g = slack.getData();
+  auto out = active->getDataNonConst();
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(out.size()); ++i)
+    out[i] = criterion.isActive(l[i], g[i]) ? 1.0 : 0.0;
+  return active;
+}
+
 }  // namespace signorini

@@ -1,0 +1,72 @@
+#pragma once
+// The contact pressure as a field on the contact boundary Gamma_c. The multipliers of the
+// node-wise constraints are nodal forces, f_i = -lambda_i; the pressure is their
+// boundary-L2 representative p_h = sum_j p_j phi_j, the solution of M p = f with the
+// consistent mass matrix M_ij = integral over Gamma_c of phi_i phi_j, restricted to the
+// loaded facets (those with an active node): p = 0 on the rest. On the whole of Gamma_c, the
+// projection of a pressure that drops to zero at the contact edge rings outside it
+// (alternating lobes of 10% of the peak on a P1 Hertz profile); restricted, p_h vanishes
+// where there is no contact. A uniform pressure is recovered exactly for every element
+// degree (unlike a division by lumped weights, which fails on P2 triangles, whose vertex
+// functions integrate to zero).
+#include <array>
+#include <vector>
+
+#include "signorini/ContactStatistics.hpp"
+#include "signorini/DistributedSpace.hpp"
+#include "signorini/ProblemDefinition.hpp"
+#include "signorini/TpetraTypes.hpp"
+
+namespace signorini {
+
+// Pressure values at quadrature points of the contact boundary (exact for degree 2k + 2),
+// this rank's facets: points (dim coordinates each), weights (true measure), pressures.
+struct ContactPressureSamples {
+  int dim = 0;
+  std::vector<double> points, weights, pressures;
+};
+
+class ContactPressure {
+ public:
+  // Collective. `constraintMap` is A's range map: one constraint per contact node, as the
+  // assembler numbers them. Assembles M once.
+  ContactPressure(const DistributedSpace& space, const ProblemDefinition& problem, const RCP<const Map>& constraintMap);
+
+  // p with M_LL p_L = -lambda_L (paper's sign, lambda <= 0) on the nodes L of the facets
+  // that have a node with active != 0, and p = 0 elsewhere, on the constraint map. Solved
+  // by CG on the symmetrically diagonal-scaled M to a relative residual of 1e-13.
+  // Collective. Throws Error if CG does not get there (a mass matrix: it always should).
+  RCP<Vector> pressure(const Vector& lambda, const Vector& active) const;
+
+  // Measure of the part of Gamma_c where p_h > threshold, integrated with a rule of degree 20
+  // per facet (the indicator is sampled, so the error is a fraction of a facet). Collective.
+  double measureAbove(const Vector& pressure, double threshold) const;
+
+  // p_h at the quadrature points of this rank's contact facets. Collective.
+  ContactPressureSamples samples(const Vector& pressure) const;
+
+  const CrsMatrix& massMatrix() const { return *mass_; }
+  int dim() const { return space_.dim(); }
+
+ private:
+  // Pressure values at this rank's facet nodes: overlap constraint values, by local index.
+  std::vector<double> overlapValues(const Vector& pressure) const;
+  // 1 on the owned constraints of facets with an active node, else 0.
+  RCP<Vector> loadedNodes(const Vector& active) const;
+  template <class Visit>
+  void forEachQuadraturePoint(const Vector& pressure, int degree, Visit&& visit) const;
+
+  const DistributedSpace& space_;
+  RCP<const Map> constraintMap_, overlapMap_;
+  RCP<CrsMatrix> mass_, scaledMass_;
+  RCP<Vector> scaling_;  // D^-1/2, D = diag(M)
+  std::vector<std::pair<long long, int>> facets_;  // (cell, local facet) of this rank's contact facets
+  std::vector<int> overlapIndex_;  // local index in overlapMap_ of each space node, -1 off Gamma_c
+};
+
+// The statistics of a solution with recovered pressure p. Collective.
+ContactStatistics contactStatistics(const ContactPressure& recovery, const Vector& pressure, const CrsMatrix& A,
+                                    const Vector& lambda, const std::array<double, 3>& obstacleDirection,
+                                    long long activeNodes);
+
+}  // namespace signorini

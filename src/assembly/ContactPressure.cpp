@@ -1,0 +1,271 @@
+#include "signorini/ContactPressure.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <Kokkos_DualView.hpp>
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_FECrsGraph.hpp>
+#include <Tpetra_FECrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/ElasticityAssembler.hpp"
+#include "signorini/ElasticityElement.hpp"
+#include "signorini/Error.hpp"
+#include "signorini/KrylovSolver.hpp"
+
+namespace signorini {
+namespace {
+
+using FEGraph = Tpetra::FECrsGraph<LocalOrdinal, GlobalOrdinal, Node>;
+using FEMatrix = Tpetra::FECrsMatrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
+
+constexpr double kSolveTolerance = 1e-13;
+
+// P M P + (I - P) for a 0/1 diagonal P: M on the selected rows and columns, identity on the rest.
+class RestrictedOperator : public Operator {
+ public:
+  RestrictedOperator(const RCP<const CrsMatrix>& M, const RCP<const Vector>& selected)
+      : M_(M), selected_(selected) {}
+  RCP<const Map> getDomainMap() const override { return M_->getDomainMap(); }
+  RCP<const Map> getRangeMap() const override { return M_->getRangeMap(); }
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
+             Scalar alpha = Teuchos::ScalarTraits<Scalar>::one(),
+             Scalar beta = Teuchos::ScalarTraits<Scalar>::zero()) const override {
+    MultiVector PX(X.getMap(), X.getNumVectors()), MPX(Y.getMap(), X.getNumVectors());
+    for (std::size_t k = 0; k < X.getNumVectors(); ++k)
+      PX.getVectorNonConst(k)->elementWiseMultiply(1.0, *selected_, *X.getVector(k), 0.0);
+    M_->apply(PX, MPX, mode);
+    for (std::size_t k = 0; k < X.getNumVectors(); ++k) {
+      const RCP<Vector> column = MPX.getVectorNonConst(k);
+      column->elementWiseMultiply(1.0, *selected_, *column, 0.0);  // P M P x
+    }
+    MPX.update(1.0, X, -1.0, PX, 1.0);                         // + (I - P) x
+    Y.update(alpha, MPX, beta);
+  }
+
+ private:
+  RCP<const CrsMatrix> M_;
+  RCP<const Vector> selected_;
+};
+constexpr int kMeasureDegree = 20;
+
+// Local nodes of facet f of a cell: those whose lattice index has no weight on vertex f.
+std::vector<int> facetNodes(const LagrangeBasis& basis, int facet) {
+  std::vector<int> nodes;
+  for (int a = 0; a < basis.size(); ++a)
+    if (basis.latticeIndices()[a][facet] == 0) nodes.push_back(a);
+  return nodes;
+}
+
+}  // namespace
+
+ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefinition& problem,
+                                 const RCP<const Map>& constraintMap)
+    : space_(ds), constraintMap_(constraintMap) {
+  const LagrangeSpace& space = ds.space();
+  const int dim = ds.dim();
+  if (!problem.contactBoundary.empty()) facets_ = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
+
+  // Constraint of each facet node; the overlap rows are the owned constraints, then the
+  // ghosts' in ascending order (FECrsGraph wants the owned map as a prefix).
+  const std::vector<long long> constraintOf = overlapNodeConstraints(ds, problem);
+  const auto& overlapNodes = ds.overlapSpaceNodes();
+  std::vector<long long> constraintOfNode(space.numNodes(), -1);
+  for (std::size_t i = 0; i < overlapNodes.size(); ++i) constraintOfNode[overlapNodes[i]] = constraintOf[i];
+  auto owned = constraintMap->getNodeElementList();
+  const std::size_t numOwned = owned.size();
+  std::vector<GlobalOrdinal> rows(owned.begin(), owned.end()), ghosts;
+  for (const auto& [cell, facet] : facets_)
+    for (int a : facetNodes(space.basis(), facet)) {
+      const long long k = constraintOfNode[space.cellNodes(cell)[a]];
+      if (k < 0) throw Error("contact pressure: a contact facet node has no constraint");
+      if (!constraintMap->isNodeGlobalElement(k)) ghosts.push_back(k);
+    }
+  std::sort(ghosts.begin(), ghosts.end());
+  ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
+  rows.insert(rows.end(), ghosts.begin(), ghosts.end());
+  overlapMap_ = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                            Teuchos::ArrayView<const GlobalOrdinal>(rows), 0, constraintMap->getComm()));
+  overlapIndex_.assign(space.numNodes(), -1);
+  for (long long node = 0; node < space.numNodes(); ++node)
+    if (constraintOfNode[node] >= 0 && overlapMap_->isNodeGlobalElement(constraintOfNode[node]))
+      overlapIndex_[node] = overlapMap_->getLocalElement(constraintOfNode[node]);
+
+  // Graph: every pair of nodes of a contact facet.
+  std::vector<std::vector<GlobalOrdinal>> columns(rows.size());
+  for (const auto& [cell, facet] : facets_) {
+    const auto nodes = facetNodes(space.basis(), facet);
+    for (int a : nodes)
+      for (int b : nodes)
+        columns[overlapIndex_[space.cellNodes(cell)[a]]].push_back(rows[overlapIndex_[space.cellNodes(cell)[b]]]);
+  }
+  Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("entries per row", rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    auto& c = columns[i];
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+    counts.view_host()(i) = std::max<std::size_t>(c.size(), 1);
+  }
+  counts.modify_host();
+  counts.sync_device();
+  auto graph = rcp(new FEGraph(constraintMap, overlapMap_, counts));
+  graph->beginAssembly();
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    if (!columns[i].empty()) graph->insertGlobalIndices(rows[i], columns[i].size(), columns[i].data());
+  // A constraint with no facet on any rank (cannot happen for nodes of contact facets) keeps a diagonal.
+  for (std::size_t i = 0; i < numOwned; ++i)
+    if (columns[i].empty()) graph->insertGlobalIndices(rows[i], 1, &rows[i]);
+  graph->endAssembly();
+
+  auto mass = rcp(new FEMatrix(graph));
+  mass->beginAssembly();
+  std::vector<double> coords((dim + 1) * dim);
+  FacetQuadrature rule;
+  const int n = space.nodesPerCell();
+  for (const auto& [cell, facet] : facets_) {
+    ds.mesh().cellVertexCoordinates(cell, coords.data());
+    facetQuadrature(space.basis(), coords.data(), facet, 2 * space.degree(), rule);
+    const auto nodes = facetNodes(space.basis(), facet);
+    for (int a : nodes) {
+      const GlobalOrdinal row = rows[overlapIndex_[space.cellNodes(cell)[a]]];
+      for (int b : nodes) {
+        double value = 0;
+        for (int q = 0; q < rule.size(); ++q) value += rule.weights[q] * rule.phi[q * n + a] * rule.phi[q * n + b];
+        const GlobalOrdinal col = rows[overlapIndex_[space.cellNodes(cell)[b]]];
+        mass->sumIntoGlobalValues(row, 1, &value, &col);
+      }
+    }
+  }
+  const double one = 1.0;
+  for (std::size_t i = 0; i < numOwned; ++i)
+    if (columns[i].empty()) mass->sumIntoGlobalValues(rows[i], 1, &one, &rows[i]);
+  mass->endAssembly();
+  mass_ = mass;
+
+  // Symmetric Jacobi scaling, applied to a copy: D^-1/2 M D^-1/2 has unit diagonal.
+  scaling_ = rcp(new Vector(constraintMap));
+  mass_->getLocalDiagCopy(*scaling_);
+  {
+    auto s = scaling_->getDataNonConst();
+    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(s.size()); ++i) {
+      if (!(s[i] > 0)) throw Error("contact pressure: the boundary mass matrix has a non-positive diagonal");
+      s[i] = 1.0 / std::sqrt(s[i]);
+    }
+  }
+  scaledMass_ = rcp(new CrsMatrix(*mass_, Teuchos::Copy));
+  scaledMass_->leftScale(*scaling_);
+  scaledMass_->rightScale(*scaling_);
+}
+
+RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
+  const LagrangeSpace& space = space_.space();
+  const std::vector<double> activeHere = overlapValues(active);
+  Vector loadedHere(overlapMap_);
+  for (const auto& [cell, facet] : facets_) {
+    const auto nodes = facetNodes(space.basis(), facet);
+    bool loaded = false;
+    for (int a : nodes) loaded = loaded || activeHere[overlapIndex_[space.cellNodes(cell)[a]]] != 0.0;
+    if (loaded)
+      for (int a : nodes) loadedHere.replaceLocalValue(overlapIndex_[space.cellNodes(cell)[a]], 1.0);
+  }
+  auto loaded = rcp(new Vector(constraintMap_));
+  loaded->doExport(loadedHere, Export(overlapMap_, constraintMap_), Tpetra::ADD);
+  auto data = loaded->getDataNonConst();
+  for (auto& x : data) x = x > 0 ? 1.0 : 0.0;
+  return loaded;
+}
+
+RCP<Vector> ContactPressure::pressure(const Vector& lambda, const Vector& active) const {
+  const RCP<const Vector> loaded = loadedNodes(active);
+  auto rhs = rcp(new Vector(constraintMap_));
+  rhs->elementWiseMultiply(-1.0, *scaling_, lambda, 0.0);
+  rhs->elementWiseMultiply(1.0, *loaded, *rhs, 0.0);
+  auto q = rcp(new Vector(constraintMap_));
+  if (rhs->normInf() > 0) {
+    auto M = rcp(new RestrictedOperator(scaledMass_, loaded));
+    const KrylovResult r = KrylovSolver().solve(M, Teuchos::null, rhs, q, kSolveTolerance, 1000);
+    if (!r.converged)
+      throw Error("contact pressure: CG on the boundary mass matrix stopped at relative residual " +
+                  std::to_string(r.relativeResidual) + " after " + std::to_string(r.iterations) + " iterations");
+  }
+  q->elementWiseMultiply(1.0, *scaling_, *q, 0.0);
+  return q;
+}
+
+std::vector<double> ContactPressure::overlapValues(const Vector& pressure) const {
+  Vector overlap(overlapMap_);
+  overlap.doImport(pressure, Import(constraintMap_, overlapMap_), Tpetra::INSERT);
+  auto data = overlap.getData();
+  return std::vector<double>(data.begin(), data.end());
+}
+
+template <class Visit>
+void ContactPressure::forEachQuadraturePoint(const Vector& pressure, int degree, Visit&& visit) const {
+  const LagrangeSpace& space = space_.space();
+  const int dim = space_.dim(), n = space.nodesPerCell();
+  const std::vector<double> values = overlapValues(pressure);
+  std::vector<double> coords((dim + 1) * dim);
+  FacetQuadrature rule;
+  for (const auto& [cell, facet] : facets_) {
+    space_.mesh().cellVertexCoordinates(cell, coords.data());
+    facetQuadrature(space.basis(), coords.data(), facet, degree, rule);
+    const auto nodes = facetNodes(space.basis(), facet);
+    for (int q = 0; q < rule.size(); ++q) {
+      double p = 0;
+      for (int a : nodes) p += rule.phi[q * n + a] * values[overlapIndex_[space.cellNodes(cell)[a]]];
+      visit(&rule.points[q * dim], rule.weights[q], p);
+    }
+  }
+}
+
+double ContactPressure::measureAbove(const Vector& pressure, double threshold) const {
+  double local = 0, global = 0;
+  forEachQuadraturePoint(pressure, kMeasureDegree, [&](const double*, double w, double p) {
+    if (p > threshold) local += w;
+  });
+  Teuchos::reduceAll(*constraintMap_->getComm(), Teuchos::REDUCE_SUM, 1, &local, &global);
+  return global;
+}
+
+ContactPressureSamples ContactPressure::samples(const Vector& pressure) const {
+  ContactPressureSamples s;
+  s.dim = space_.dim();
+  forEachQuadraturePoint(pressure, 2 * space_.space().degree() + 2, [&](const double* x, double w, double p) {
+    s.points.insert(s.points.end(), x, x + s.dim);
+    s.weights.push_back(w);
+    s.pressures.push_back(p);
+  });
+  return s;
+}
+
+ContactStatistics contactStatistics(const ContactPressure& recovery, const Vector& pressure, const CrsMatrix& A,
+                                    const Vector& lambda, const std::array<double, 3>& obstacleDirection,
+                                    long long activeNodes) {
+  ContactStatistics s;
+  s.dim = recovery.dim();
+  const Comm& comm = *A.getRangeMap()->getComm();
+  Vector force(A.getDomainMap());
+  A.apply(lambda, force, Teuchos::TRANS);
+  const auto map = A.getDomainMap();
+  const int dim = recovery.dim();  // dof = dim * node + component
+  auto f = force.getData();
+  std::array<double, 3> local{{0, 0, 0}};
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(f.size()); ++i) local[map->getGlobalElement(i) % dim] += f[i];
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, local.data(), s.force.data());
+  for (int c = 0; c < 3; ++c) s.normalForce += s.force[c] * obstacleDirection[c];
+  double peak = -std::numeric_limits<double>::infinity();
+  for (double p : pressure.getData()) peak = std::max(peak, p);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &peak, &s.peakPressure);
+  if (!std::isfinite(s.peakPressure)) s.peakPressure = 0;
+  s.area = recovery.measureAbove(pressure, 0.0);
+  s.activeNodes = activeNodes;
+  return s;
+}
+
+}  // namespace signorini
