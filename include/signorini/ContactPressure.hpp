@@ -38,9 +38,14 @@ class ContactPressure {
   // Collective. Throws Error if CG does not get there (a mass matrix: it always should).
   RCP<Vector> pressure(const Vector& lambda, const Vector& active) const;
 
-  // Measure of the part of Gamma_c where p_h > threshold, integrated with a rule of degree 20
-  // per facet (the indicator is sampled, so the error is a fraction of a facet). Collective.
-  double measureAbove(const Vector& pressure, double threshold) const;
+  // p_j = -lambda_j / w_j with the HRZ-lumped boundary weights w (row sums for P1) on the
+  // nodes of the loaded facets, 0 elsewhere. For P1 it is the multiplier of a dual mortar
+  // method with node-wise constraints. Collective.
+  RCP<Vector> lumpedPressure(const Vector& lambda, const Vector& active) const;
+
+  // The contact area: the lumped boundary measure (HRZ weights) of the active nodes, each
+  // node standing for its share of the boundary. Collective.
+  double activeMeasure(const Vector& active) const;
 
   // p_h at the quadrature points of this rank's contact facets. Collective.
   ContactPressureSamples samples(const Vector& pressure) const;
@@ -54,19 +59,21 @@ class ContactPressure {
   // 1 on the owned constraints of facets with an active node, else 0.
   RCP<Vector> loadedNodes(const Vector& active) const;
   template <class Visit>
-  void forEachQuadraturePoint(const Vector& pressure, int degree, Visit&& visit) const;
+  void forEachQuadraturePoint(const Vector& pressure, Visit&& visit) const;
 
   const DistributedSpace& space_;
   RCP<const Map> constraintMap_, overlapMap_;
   RCP<CrsMatrix> mass_, scaledMass_;
   RCP<Vector> scaling_;  // D^-1/2, D = diag(M)
+  RCP<Vector> lumpedWeights_;
   std::vector<std::pair<long long, int>> facets_;  // (cell, local facet) of this rank's contact facets
   std::vector<int> overlapIndex_;  // local index in overlapMap_ of each space node, -1 off Gamma_c
 };
 
-// The statistics of a solution with recovered pressure p. Collective.
+// The statistics of a solution with recovered pressure p and active constraints `active`
+// (1 or 0 per constraint). Collective.
 ContactStatistics contactStatistics(const ContactPressure& recovery, const Vector& pressure, const CrsMatrix& A,
-                                    const Vector& lambda, const std::array<double, 3>& obstacleDirection,
-                                    long long activeNodes);
+                                    const Vector& lambda, const Vector& active,
+                                    const std::array<double, 3>& obstacleDirection);
 
 }  // namespace signorini

@@ -53,7 +53,6 @@ class RestrictedOperator : public Operator {
   RCP<const CrsMatrix> M_;
   RCP<const Vector> selected_;
 };
-constexpr int kMeasureDegree = 20;
 
 // Local nodes of facet f of a cell: those whose lattice index has no weight on vertex f.
 std::vector<int> facetNodes(const LagrangeBasis& basis, int facet) {
@@ -158,6 +157,7 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
       s[i] = 1.0 / std::sqrt(s[i]);
     }
   }
+  lumpedWeights_ = contactNodeWeights(ds, problem, constraintMap);
   scaledMass_ = rcp(new CrsMatrix(*mass_, Teuchos::Copy));
   scaledMass_->leftScale(*scaling_);
   scaledMass_->rightScale(*scaling_);
@@ -198,6 +198,14 @@ RCP<Vector> ContactPressure::pressure(const Vector& lambda, const Vector& active
   return q;
 }
 
+RCP<Vector> ContactPressure::lumpedPressure(const Vector& lambda, const Vector& active) const {
+  auto p = rcp(new Vector(constraintMap_));
+  p->reciprocal(*lumpedWeights_);
+  p->elementWiseMultiply(-1.0, *p, lambda, 0.0);
+  p->elementWiseMultiply(1.0, *loadedNodes(active), *p, 0.0);
+  return p;
+}
+
 std::vector<double> ContactPressure::overlapValues(const Vector& pressure) const {
   Vector overlap(overlapMap_);
   overlap.doImport(pressure, Import(constraintMap_, overlapMap_), Tpetra::INSERT);
@@ -206,7 +214,7 @@ std::vector<double> ContactPressure::overlapValues(const Vector& pressure) const
 }
 
 template <class Visit>
-void ContactPressure::forEachQuadraturePoint(const Vector& pressure, int degree, Visit&& visit) const {
+void ContactPressure::forEachQuadraturePoint(const Vector& pressure, Visit&& visit) const {
   const LagrangeSpace& space = space_.space();
   const int dim = space_.dim(), n = space.nodesPerCell();
   const std::vector<double> values = overlapValues(pressure);
@@ -214,7 +222,7 @@ void ContactPressure::forEachQuadraturePoint(const Vector& pressure, int degree,
   FacetQuadrature rule;
   for (const auto& [cell, facet] : facets_) {
     space_.mesh().cellVertexCoordinates(cell, coords.data());
-    facetQuadrature(space.basis(), coords.data(), facet, degree, rule);
+    facetQuadrature(space.basis(), coords.data(), facet, 2 * space.degree() + 2, rule);
     const auto nodes = facetNodes(space.basis(), facet);
     for (int q = 0; q < rule.size(); ++q) {
       double p = 0;
@@ -224,19 +232,12 @@ void ContactPressure::forEachQuadraturePoint(const Vector& pressure, int degree,
   }
 }
 
-double ContactPressure::measureAbove(const Vector& pressure, double threshold) const {
-  double local = 0, global = 0;
-  forEachQuadraturePoint(pressure, kMeasureDegree, [&](const double*, double w, double p) {
-    if (p > threshold) local += w;
-  });
-  Teuchos::reduceAll(*constraintMap_->getComm(), Teuchos::REDUCE_SUM, 1, &local, &global);
-  return global;
-}
+double ContactPressure::activeMeasure(const Vector& active) const { return lumpedWeights_->dot(active); }
 
 ContactPressureSamples ContactPressure::samples(const Vector& pressure) const {
   ContactPressureSamples s;
   s.dim = space_.dim();
-  forEachQuadraturePoint(pressure, 2 * space_.space().degree() + 2, [&](const double* x, double w, double p) {
+  forEachQuadraturePoint(pressure, [&](const double* x, double w, double p) {
     s.points.insert(s.points.end(), x, x + s.dim);
     s.weights.push_back(w);
     s.pressures.push_back(p);
@@ -245,8 +246,8 @@ ContactPressureSamples ContactPressure::samples(const Vector& pressure) const {
 }
 
 ContactStatistics contactStatistics(const ContactPressure& recovery, const Vector& pressure, const CrsMatrix& A,
-                                    const Vector& lambda, const std::array<double, 3>& obstacleDirection,
-                                    long long activeNodes) {
+                                    const Vector& lambda, const Vector& active,
+                                    const std::array<double, 3>& obstacleDirection) {
   ContactStatistics s;
   s.dim = recovery.dim();
   const Comm& comm = *A.getRangeMap()->getComm();
@@ -263,8 +264,8 @@ ContactStatistics contactStatistics(const ContactPressure& recovery, const Vecto
   for (double p : pressure.getData()) peak = std::max(peak, p);
   Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &peak, &s.peakPressure);
   if (!std::isfinite(s.peakPressure)) s.peakPressure = 0;
-  s.area = recovery.measureAbove(pressure, 0.0);
-  s.activeNodes = activeNodes;
+  s.area = recovery.activeMeasure(active);
+  s.activeNodes = std::llround(active.norm1());
   return s;
 }
 

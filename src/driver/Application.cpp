@@ -12,6 +12,7 @@
 
 #include <MatrixMarket_Tpetra.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_Time.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
@@ -38,6 +39,10 @@ Teuchos::ParameterList outputParameters() {
   p.set("directory", "results", "Directory of solution.pvtu, summary.json and history.csv (--output overrides)");
   p.set("write solution", true, "Write solution.pvtu with one .vtu per rank");
   p.set("write history", true, "Write history.csv, one row per Newton step");
+  p.set("contact pressure", "consistent",
+        "\"consistent\": solve M p = -lambda with the boundary mass matrix M of the loaded "
+        "contact facets; \"lumped\": p = -lambda / w with HRZ-lumped boundary weights w",
+        rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("consistent", "lumped"))));
   p.set("write contact samples", false,
         "Write contact.csv: the recovered contact pressure at quadrature points of the contact "
         "boundary (coordinates, weight, pressure), for integrating errors against a reference");
@@ -403,10 +408,11 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     RCP<Vector> pressure;
     std::optional<ContactStatistics> contact;
     if (m > 0) {
+      const RCP<const Vector> active = activeIndicator(problem.qp, *result.v, *result.lambda);
       const ContactPressure recovery(*problem.space, def, problem.qp.A->getRangeMap());
-      pressure = recovery.pressure(*result.lambda, *activeIndicator(problem.qp, *result.v, *result.lambda));
-      contact = contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, def.obstacleDirection,
-                                  result.activeConstraints);
+      pressure = output.get<std::string>("contact pressure") == "lumped" ? recovery.lumpedPressure(*result.lambda, *active)
+                                                                         : recovery.pressure(*result.lambda, *active);
+      contact = contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.obstacleDirection);
       if (root) logContact(*contact, out);
       if (output.get<bool>("write contact samples"))
         writeContactSamples(recovery.samples(*pressure), *comm, directory + "/contact.csv");

@@ -45,8 +45,8 @@ TEST(ContactPressure, RecoversAUniformPressureToRoundOff) {
       expected.update(-1.0, *pressure, 1.0);
       EXPECT_LT(expected.normInf(), 1e-12) << "dim " << dim << " P" << degree;
 
-      const ContactStatistics stats = contactStatistics(recovery, *pressure, *p.qp.A, *face.lambda,
-                                                        p.definition.obstacleDirection, 0);
+      const ContactStatistics stats = contactStatistics(recovery, *pressure, *p.qp.A, *face.lambda, everyNode,
+                                                        p.definition.obstacleDirection);
       EXPECT_NEAR(stats.normalForce, 2.5, 1e-12) << "dim " << dim << " P" << degree;  // face of measure 1
       EXPECT_NEAR(stats.area, 1.0, 1e-12) << "dim " << dim << " P" << degree;
       EXPECT_NEAR(stats.peakPressure, 2.5, 1e-12) << "dim " << dim << " P" << degree;

@@ -1,0 +1,134 @@
+#!/usr/bin/env python3
+"""Hertz validation: refinement studies of a rigid cylinder (2D) and sphere (3D) pressed into
+an elastic block (examples/hertz/). For each run, the computed contact half-width or radius,
+peak pressure and the L2 error of the pressure on the contact boundary are compared with
+Hertz' solution for the computed total force. Writes bench/results/hertz.{json,md,png}.
+
+    scripts/hertz.py [--build build] [--np 2] [--quick]
+"""
+import argparse
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# (example, dimension, [(degree, cells), ...]) per study; the same nodes per row across degrees.
+STUDIES = {
+    "cylinder-2d": (2, {1: [(80, 40), (160, 80), (320, 160), (640, 320)],
+                        2: [(40, 20), (80, 40), (160, 80), (320, 160)],
+                        3: [(40, 20), (80, 40), (160, 80)]}),
+    "sphere-3d": (3, {1: [(16, 16, 8), (32, 32, 16), (48, 48, 24), (64, 64, 32)],
+                      2: [(8, 8, 4), (16, 16, 8), (24, 24, 12), (32, 32, 16)]}),
+}
+QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}}
+RECOVERIES = ["consistent", "lumped"]
+
+
+def hertz(dim, force, radius, e_star):
+    """Contact half-width/radius a and peak pressure p0 for the total force."""
+    if dim == 2:
+        a = math.sqrt(4.0 * force * radius / (math.pi * e_star))
+        return a, 2.0 * force / (math.pi * a)
+    a = (3.0 * force * radius / (4.0 * e_star)) ** (1.0 / 3.0)
+    return a, 3.0 * force / (2.0 * math.pi * a * a)
+
+
+def run(args, example, degree, cells, recovery, directory):
+    xml = os.path.join(ROOT, "examples", "hertz", example + ".xml")
+    cmd = ["mpirun", "-np", str(args.np), os.path.join(args.build, "bin", "signorini"), xml,
+           "--set", "Problem/mesh: cells={%s}" % ", ".join(map(str, cells)),
+           "--set", "Problem/element: degree=%d" % degree,
+           "--set", "Output/write solution=false", "--set", "Output/write history=false",
+           "--set", "Output/contact pressure=" + recovery, "--output", directory]
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    with open(os.path.join(directory, "summary.json")) as f:
+        summary = json.load(f)
+    samples = np.genfromtxt(os.path.join(directory, "contact.csv"), delimiter=",", names=True)
+    return summary, samples
+
+
+def measure(dim, summary, samples, center, radius, e_star):
+    contact = summary["contact"]
+    force = contact["normal_force"]
+    a, p0 = hertz(dim, force, radius, e_star)
+    r = np.abs(samples["x"] - center[0]) if dim == 2 else np.hypot(samples["x"] - center[0], samples["y"] - center[1])
+    exact = p0 * np.sqrt(np.maximum(0.0, 1.0 - (r / a) ** 2))
+    w, p = samples["weight"], samples["pressure"]
+    a_h = contact["length"] / 2.0 if dim == 2 else math.sqrt(contact["area"] / math.pi)
+    return {"force": force, "a": a_h, "a_hertz": a, "a_error": a_h / a - 1.0,
+            "p0": contact["peak_pressure"], "p0_hertz": p0, "p0_error": contact["peak_pressure"] / p0 - 1.0,
+            "l2_error": math.sqrt(np.sum(w * (p - exact) ** 2) / np.sum(w * exact ** 2))}
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--build", default=os.path.join(ROOT, "build"))
+    parser.add_argument("--np", type=int, default=2)
+    parser.add_argument("--quick", action="store_true", help="the two coarsest meshes of each study only")
+    parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "hertz"))
+    args = parser.parse_args()
+    e_star = 1.0 / (1.0 - 0.3 ** 2)
+    geometry = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0)}
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for example, (dim, plan) in STUDIES.items():
+            center, radius = geometry[example]
+            for degree, meshes in plan.items():
+                for cells in meshes[:QUICK[example][degree]] if args.quick else meshes:
+                    for recovery in RECOVERIES:
+                        summary, samples = run(args, example, degree, cells, recovery, tmp)
+                        row = {"example": example, "d": dim, "degree": degree, "cells": list(cells),
+                               "h": 1.0 / cells[0] * (2.0 if dim == 2 else 1.0), "n": summary["n"],
+                               "recovery": recovery, "converged": summary["converged"],
+                               "seconds": summary["time"]["total"]}
+                        row.update(measure(dim, summary, samples, center, radius, e_star))
+                        rows.append(row)
+                        print("%-12s P%d %-14s %-10s a %+6.2f%%  p0 %+6.2f%%  L2 %.4f" % (
+                            example, degree, cells, recovery, 100 * row["a_error"], 100 * row["p0_error"],
+                            row["l2_error"]), flush=True)
+    with open(args.out + ".json", "w") as f:
+        json.dump({"rows": rows}, f, indent=1)
+    write_table(rows, args.out + ".md")
+    plot(rows, args.out + ".png")
+
+
+def write_table(rows, path):
+    lines = ["| example | P | cells | n | recovery | a / a_Hertz - 1 | p0 / p0_Hertz - 1 | L2 error of p |",
+             "|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        lines.append("| %s | %d | %s | %d | %s | %+.2f%% | %+.2f%% | %.4f |" % (
+            r["example"], r["degree"], "x".join(map(str, r["cells"])), r["n"], r["recovery"],
+            100 * r["a_error"], 100 * r["p0_error"], r["l2_error"]))
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def plot(rows, path):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, example in zip(axes, STUDIES):
+        for degree in sorted({r["degree"] for r in rows if r["example"] == example}):
+            for recovery, style in zip(RECOVERIES, ["-o", "--s"]):
+                sel = [r for r in rows if r["example"] == example and r["degree"] == degree and r["recovery"] == recovery]
+                if sel:
+                    ax.loglog([r["h"] / r["degree"] for r in sel], [r["l2_error"] for r in sel], style,
+                              label="P%d %s" % (degree, recovery))
+        ax.set_title(example)
+        ax.set_xlabel("node spacing h / k")
+        ax.set_ylabel("relative L2 error of the contact pressure")
+        ax.legend(fontsize=7)
+        ax.grid(True, which="both", alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+if __name__ == "__main__":
+    sys.exit(main())
