@@ -1,0 +1,90 @@
+// Hertz contact on meshes small enough for every run: the rigid cylinder (plane strain) and
+// sphere of examples/hertz, compared with Hertz' solution for the computed force. The full
+// refinement study is scripts/hertz.py.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_XMLParameterListHelpers.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/ContactPressure.hpp"
+#include "signorini/InteriorPointSolver.hpp"
+#include "signorini/KKTMeasures.hpp"
+#include "support/TestProblems.hpp"
+
+namespace {
+
+using namespace signorini;
+
+struct HertzErrors {
+  double radius, peak, l2;  // relative to Hertz for the computed force
+};
+
+HertzErrors solveHertz(const std::string& example, int degree, const Teuchos::Array<int>& cells) {
+  auto file = Teuchos::getParametersFromXmlFile(signorini::testing::sourceDir() + "/examples/hertz/" + example + ".xml");
+  Teuchos::ParameterList problem = file->sublist("Problem");
+  problem.set("mesh: cells", cells);
+  problem.set("element: degree", degree);
+  AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+  const SolveResult r = InteriorPointSolver(Teuchos::ParameterList()).solve(p.qp);
+  EXPECT_TRUE(r.converged()) << r.message;
+
+  const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
+  const RCP<Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
+  const RCP<Vector> pressure = recovery.pressure(*r.lambda, *active);
+  const ContactStatistics s = contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active,
+                                                p.definition.obstacleDirection);
+  const int dim = p.definition.dim;
+  const double eStar = 1.0 / (1.0 - 0.3 * 0.3), R = 1.0, P = s.normalForce;
+  double a, p0, measured;
+  if (dim == 2) {
+    a = std::sqrt(4.0 * P * R / (M_PI * eStar));
+    p0 = 2.0 * P / (M_PI * a);
+    measured = s.area / 2.0;
+  } else {
+    a = std::cbrt(3.0 * P * R / (4.0 * eStar));
+    p0 = 3.0 * P / (2.0 * M_PI * a * a);
+    measured = std::sqrt(s.area / M_PI);
+  }
+  // Centre of the indenter: x = 1 in 2D, (0.5, 0.5) in 3D.
+  const ContactPressureSamples samples = recovery.samples(*pressure);
+  double local[2] = {0, 0}, global[2];
+  for (std::size_t q = 0; q < samples.weights.size(); ++q) {
+    const double* x = &samples.points[q * dim];
+    const double r2 = dim == 2 ? (x[0] - 1) * (x[0] - 1) : (x[0] - 0.5) * (x[0] - 0.5) + (x[1] - 0.5) * (x[1] - 0.5);
+    const double exact = p0 * std::sqrt(std::max(0.0, 1.0 - r2 / (a * a)));
+    local[0] += samples.weights[q] * (samples.pressures[q] - exact) * (samples.pressures[q] - exact);
+    local[1] += samples.weights[q] * exact * exact;
+  }
+  Teuchos::reduceAll(*p.space->comm(), Teuchos::REDUCE_SUM, 2, local, global);
+  return {measured / a - 1.0, s.peakPressure / p0 - 1.0, std::sqrt(global[0] / global[1])};
+}
+
+TEST(Hertz, CylinderInPlaneStrainConvergesToHertz) {
+  for (int degree : {1, 2}) {
+    const int n = degree == 1 ? 80 : 40;
+    const HertzErrors coarse = solveHertz("cylinder-2d", degree, Teuchos::tuple<int>(n, n / 2));
+    const HertzErrors fine = solveHertz("cylinder-2d", degree, Teuchos::tuple<int>(2 * n, n));
+    EXPECT_LT(std::abs(fine.radius), 0.04) << "P" << degree;
+    EXPECT_LT(std::abs(fine.peak), 0.02) << "P" << degree;
+    EXPECT_LT(fine.l2, 0.05) << "P" << degree;
+    EXPECT_LT(std::abs(fine.radius), std::abs(coarse.radius)) << "P" << degree;
+    EXPECT_LT(std::abs(fine.peak), std::abs(coarse.peak)) << "P" << degree;
+    EXPECT_LT(fine.l2, coarse.l2) << "P" << degree;
+  }
+}
+
+TEST(Hertz, SphereContactRadiusConvergesToHertz) {
+  // Only the radius: with node-wise constraints on this mesh the peak pressure does not
+  // converge yet (scripts/hertz.py measures it).
+  const HertzErrors coarse = solveHertz("sphere-3d", 1, Teuchos::tuple<int>(16, 16, 8));
+  const HertzErrors fine = solveHertz("sphere-3d", 1, Teuchos::tuple<int>(32, 32, 16));
+  EXPECT_LT(std::abs(fine.radius), 0.05);
+  EXPECT_LT(std::abs(fine.radius), std::abs(coarse.radius));
+}
+
+}  // namespace
