@@ -39,10 +39,11 @@ Teuchos::ParameterList outputParameters() {
   p.set("directory", "results", "Directory of solution.pvtu, summary.json and history.csv (--output overrides)");
   p.set("write solution", true, "Write solution.pvtu with one .vtu per rank");
   p.set("write history", true, "Write history.csv, one row per Newton step");
-  p.set("contact pressure", "consistent",
+  p.set("contact pressure", "auto",
         "\"consistent\": solve M p = -lambda with the boundary mass matrix M of the loaded "
-        "contact facets; \"lumped\": p = -lambda / w with HRZ-lumped boundary weights w",
-        rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("consistent", "lumped"))));
+        "contact facets; \"lumped\": p = -lambda / w with HRZ-lumped boundary weights w; "
+        "\"auto\": lumped for P1, consistent for P2 and P3 (closest to Hertz, doc/hertz-validation.md)",
+        rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("auto", "consistent", "lumped"))));
   p.set("write contact samples", false,
         "Write contact.csv: the recovered contact pressure at quadrature points of the contact "
         "boundary (coordinates, weight, pressure), for integrating errors against a reference");
@@ -410,8 +411,9 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     if (m > 0) {
       const RCP<const Vector> active = activeIndicator(problem.qp, *result.v, *result.lambda);
       const ContactPressure recovery(*problem.space, def, problem.qp.A->getRangeMap());
-      pressure = output.get<std::string>("contact pressure") == "lumped" ? recovery.lumpedPressure(*result.lambda, *active)
-                                                                         : recovery.pressure(*result.lambda, *active);
+      const std::string how = output.get<std::string>("contact pressure");
+      const bool lumped = how == "lumped" || (how == "auto" && def.degree == 1);
+      pressure = lumped ? recovery.lumpedPressure(*result.lambda, *active) : recovery.pressure(*result.lambda, *active);
       contact = contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.obstacleDirection);
       if (root) logContact(*contact, out);
       if (output.get<bool>("write contact samples"))
