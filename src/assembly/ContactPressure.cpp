@@ -254,10 +254,9 @@ ContactStatistics contactStatistics(const ContactPressure& recovery, const Vecto
   Vector force(A.getDomainMap());
   A.apply(lambda, force, Teuchos::TRANS);
   const auto map = A.getDomainMap();
-  const int dim = recovery.dim();  // dof = dim * node + component
   auto f = force.getData();
-  std::array<double, 3> local{{0, 0, 0}};
-  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(f.size()); ++i) local[map->getGlobalElement(i) % dim] += f[i];
+  std::array<double, 3> local{{0, 0, 0}};  // dof = dim * node + component
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(f.size()); ++i) local[map->getGlobalElement(i) % s.dim] += f[i];
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, local.data(), s.force.data());
   for (int c = 0; c < 3; ++c) s.normalForce += s.force[c] * obstacleDirection[c];
   double peak = -std::numeric_limits<double>::infinity();

@@ -136,7 +136,9 @@ double vonMises(const double* s, int dim, const IsotropicMaterial& material) {
                    3.0 * (sxy * sxy + syz * syz + szx * szx));
 }
 
-void writeSolution(const AssembledProblem& p, const SolveResult& r, const Vector& pressure, const std::string& directory) {
+// `pressure` and `active` (1 or 0) are on the constraint map.
+void writeSolution(const AssembledProblem& p, const SolveResult& r, const Vector& pressure, const Vector& active,
+                   const std::string& directory) {
   const DistributedSpace& ds = *p.space;
   const int dim = ds.dim();
   const auto& overlap = ds.overlapSpaceNodes();
@@ -154,35 +156,35 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const Vector
   Vector gap(cmap);
   p.qp.A->apply(*r.v, gap);
   gap.update(1.0, *p.qp.d, -1.0);
-  const ActiveSetCriterion criterion(p.qp, *r.v, *r.lambda);
   Import toWanted(cmap, wantedMap);
-  Vector lambdaHere(wantedMap), gapHere(wantedMap), pressureHere(wantedMap);
+  Vector lambdaHere(wantedMap), gapHere(wantedMap), pressureHere(wantedMap), activeHere(wantedMap);
   lambdaHere.doImport(*r.lambda, toWanted, Tpetra::INSERT);
   gapHere.doImport(gap, toWanted, Tpetra::INSERT);
   pressureHere.doImport(pressure, toWanted, Tpetra::INSERT);
+  activeHere.doImport(active, toWanted, Tpetra::INSERT);
 
   NodeField displacement{"displacement", dim, {}}, force{"contact force", 1, {}}, pressureField{"contact pressure", 1, {}},
-      gapField{"gap", 1, {}}, active{"active", 1, {}};
+      gapField{"gap", 1, {}}, activeField{"active", 1, {}};
   auto ud = u.getData();
   displacement.values.assign(ud.begin(), ud.end());
   auto ld = lambdaHere.getData();
   auto gd = gapHere.getData();
   auto pd = pressureHere.getData();
+  auto ad = activeHere.getData();
   std::size_t next = 0;
   for (long long k : constraintOf) {
     if (k < 0) {
       force.values.push_back(0.0);
       pressureField.values.push_back(0.0);
       gapField.values.push_back(0.0);
-      active.values.push_back(0.0);
+      activeField.values.push_back(0.0);
       continue;
     }
-    const double l = ld[next], g = gd[next], pn = pd[next];
+    force.values.push_back(-ld[next]);
+    pressureField.values.push_back(pd[next]);
+    gapField.values.push_back(gd[next]);
+    activeField.values.push_back(ad[next]);
     ++next;
-    force.values.push_back(-l);
-    pressureField.values.push_back(pn);
-    gapField.values.push_back(g);
-    active.values.push_back(criterion.isActive(l, g) ? 1.0 : 0.0);
   }
 
   CellField rank{"rank", 1, {}}, mises{"von Mises stress", 1, {}};
@@ -202,7 +204,7 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const Vector
     mises.values.push_back(vonMises(sigma.data(), dim, p.definition.material));
     rank.values.push_back(ds.comm()->getRank());
   }
-  writeVtu(ds, {displacement, pressureField, force, gapField, active}, {mises, rank}, directory, "solution");
+  writeVtu(ds, {displacement, pressureField, force, gapField, activeField}, {mises, rank}, directory, "solution");
 }
 
 // contact.csv on rank 0: every rank's samples, gathered (the contact boundary is a surface).
@@ -406,10 +408,10 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   const std::string directory = cl.output.empty() ? output.get<std::string>("directory") : cl.output;
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 4 output"));
-    RCP<Vector> pressure;
+    const RCP<const Vector> active = activeIndicator(problem.qp, *result.v, *result.lambda);
+    RCP<Vector> pressure = rcp(new Vector(problem.qp.A->getRangeMap()));
     std::optional<ContactStatistics> contact;
     if (m > 0) {
-      const RCP<const Vector> active = activeIndicator(problem.qp, *result.v, *result.lambda);
       const ContactPressure recovery(*problem.space, def, problem.qp.A->getRangeMap());
       const std::string how = output.get<std::string>("contact pressure");
       const bool lumped = how == "lumped" || (how == "auto" && def.degree == 1);
@@ -418,10 +420,8 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
       if (root) logContact(*contact, out);
       if (output.get<bool>("write contact samples"))
         writeContactSamples(recovery.samples(*pressure), *comm, directory + "/contact.csv");
-    } else {
-      pressure = rcp(new Vector(problem.qp.A->getRangeMap()));
     }
-    if (output.get<bool>("write solution")) writeSolution(problem, result, *pressure, directory);
+    if (output.get<bool>("write solution")) writeSolution(problem, result, *pressure, *active, directory);
     total.stop();
     RunSummary summary;
     summary.problem = def.name;

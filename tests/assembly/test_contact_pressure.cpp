@@ -2,6 +2,8 @@
 // assembler's traction load of a known pressure on the contact face.
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
@@ -18,6 +20,8 @@ using namespace signorini;
 struct LoadedFace {
   AssembledProblem problem;
   RCP<Vector> lambda;
+  std::unique_ptr<ContactPressure> recovery;
+  RCP<Vector> everyNode;  // every constraint active
 };
 
 LoadedFace loadedBottomFace(int dim, int degree, const std::string& pressure) {
@@ -25,9 +29,13 @@ LoadedFace loadedBottomFace(int dim, int degree, const std::string& pressure) {
   const std::string bottom = dim == 2 ? "ymin" : "zmin";
   list.sublist("Traction").sublist(bottom).set(dim == 2 ? "traction: y" : "traction: z", pressure);
   list.sublist("Contact").set("boundary", bottom);
-  LoadedFace face{buildProblem(list, Tpetra::getDefaultComm()), Teuchos::null};
+  LoadedFace face{buildProblem(list, Tpetra::getDefaultComm()), Teuchos::null, nullptr, Teuchos::null};
   face.lambda = rcp(new Vector(face.problem.qp.A->getRangeMap()));
   face.problem.qp.A->apply(*face.problem.qp.b, *face.lambda);
+  const AssembledProblem& p = face.problem;
+  face.recovery = std::make_unique<ContactPressure>(*p.space, p.definition, p.qp.A->getRangeMap());
+  face.everyNode = rcp(new Vector(p.qp.A->getRangeMap()));
+  face.everyNode->putScalar(1.0);
   return face;
 }
 
@@ -36,16 +44,14 @@ TEST(ContactPressure, RecoversAUniformPressureToRoundOff) {
     for (int degree : {1, 2, 3}) {
       LoadedFace face = loadedBottomFace(dim, degree, "2.5");
       const AssembledProblem& p = face.problem;
-      const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
-      Vector everyNode(p.qp.A->getRangeMap());
-      everyNode.putScalar(1.0);
-      const RCP<Vector> pressure = recovery.pressure(*face.lambda, everyNode);
+      const ContactPressure& recovery = *face.recovery;
+      const RCP<Vector> pressure = recovery.pressure(*face.lambda, *face.everyNode);
       Vector expected(pressure->getMap());
       expected.putScalar(2.5);
       expected.update(-1.0, *pressure, 1.0);
       EXPECT_LT(expected.normInf(), 1e-12) << "dim " << dim << " P" << degree;
 
-      const ContactStatistics stats = contactStatistics(recovery, *pressure, *p.qp.A, *face.lambda, everyNode,
+      const ContactStatistics stats = contactStatistics(recovery, *pressure, *p.qp.A, *face.lambda, *face.everyNode,
                                                         p.definition.obstacleDirection);
       EXPECT_NEAR(stats.normalForce, 2.5, 1e-12) << "dim " << dim << " P" << degree;  // face of measure 1
       EXPECT_NEAR(stats.area, 1.0, 1e-12) << "dim " << dim << " P" << degree;
@@ -65,12 +71,8 @@ TEST(ContactPressure, RecoversALinearPressureExactly) {
   for (int dim : {2, 3})
     for (int degree : {1, 2, 3}) {
       LoadedFace face = loadedBottomFace(dim, degree, "1 + x");
-      const AssembledProblem& p = face.problem;
-      const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
-      Vector everyNode(p.qp.A->getRangeMap());
-      everyNode.putScalar(1.0);
-      const RCP<Vector> pressure = recovery.pressure(*face.lambda, everyNode);
-      const ContactPressureSamples samples = recovery.samples(*pressure);
+      const RCP<Vector> pressure = face.recovery->pressure(*face.lambda, *face.everyNode);
+      const ContactPressureSamples samples = face.recovery->samples(*pressure);
       double worst = 0;
       for (std::size_t q = 0; q < samples.weights.size(); ++q)
         worst = std::max(worst, std::abs(samples.pressures[q] - (1.0 + samples.points[q * dim])));
@@ -83,7 +85,7 @@ TEST(ContactPressure, VanishesOffTheLoadedFacets) {
   // M p = f on the nodes of those facets.
   LoadedFace face = loadedBottomFace(2, 2, "1");
   const AssembledProblem& p = face.problem;
-  const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
+  const ContactPressure& recovery = *face.recovery;
   Vector active(p.qp.A->getRangeMap());
   Vector x(p.qp.A->getRangeMap());  // node x coordinate per constraint: -A applied to (x, 0) displacements
   {
