@@ -27,7 +27,13 @@ STUDIES = {
                       2: [(8, 8, 4), (16, 16, 8), (24, 24, 12), (32, 32, 16)]}),
 }
 QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}}
-RECOVERIES = ["consistent", "lumped"]
+# (Contact/formulation, Output/contact pressure): the nodal constraints with both pressure
+# recoveries, and weighted gaps, whose multipliers are the pressure.
+VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("weighted gap", "auto")]
+
+
+def label(formulation, recovery):
+    return formulation if formulation != "nodal" else "nodal, " + recovery
 
 
 def hertz(dim, force, radius, e_star):
@@ -39,12 +45,13 @@ def hertz(dim, force, radius, e_star):
     return a, 3.0 * force / (2.0 * math.pi * a * a)
 
 
-def run(args, example, degree, cells, recovery, directory):
+def run(args, example, degree, cells, formulation, recovery, directory):
     xml = os.path.join(ROOT, "examples", "hertz", example + ".xml")
     cmd = ["mpirun", "-np", str(args.np), os.path.join(args.build, "bin", "signorini"), xml,
            "--set", "Problem/mesh: cells={%s}" % ", ".join(map(str, cells)),
            "--set", "Problem/element: degree=%d" % degree,
            "--set", "Output/write solution=false", "--set", "Output/write history=false",
+           "--set", "Problem/Contact/formulation=" + formulation,
            "--set", "Output/contact pressure=" + recovery, "--output", directory]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(directory, "summary.json")) as f:
@@ -75,36 +82,59 @@ def main():
     args = parser.parse_args()
     e_star = 1.0 / (1.0 - 0.3 ** 2)
     geometry = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0)}
-    rows = []
+    rows, profiles = [], {}
     with tempfile.TemporaryDirectory() as tmp:
         for example, (dim, plan) in STUDIES.items():
             center, radius = geometry[example]
             for degree, meshes in plan.items():
                 for cells in meshes[:QUICK[example][degree]] if args.quick else meshes:
-                    for recovery in RECOVERIES:
-                        summary, samples = run(args, example, degree, cells, recovery, tmp)
+                    for formulation, recovery in VARIANTS:
+                        summary, samples = run(args, example, degree, cells, formulation, recovery, tmp)
                         row = {"example": example, "d": dim, "degree": degree, "cells": list(cells),
                                "h": 1.0 / cells[0] * (2.0 if dim == 2 else 1.0), "n": summary["n"],
-                               "recovery": recovery, "converged": summary["converged"],
-                               "seconds": summary["time"]["total"]}
+                               "m": summary["m"], "formulation": formulation, "recovery": recovery,
+                               "converged": summary["converged"], "seconds": summary["time"]["total"]}
                         row.update(measure(dim, summary, samples, center, radius, e_star))
                         rows.append(row)
-                        print("%-12s P%d %-14s %-10s a %+6.2f%%  p0 %+6.2f%%  L2 %.4f" % (
-                            example, degree, cells, recovery, 100 * row["a_error"], 100 * row["p0_error"],
-                            row["l2_error"]), flush=True)
+                        profiles[(example, degree, formulation, recovery)] = profile(
+                            dim, samples, center, row["a_hertz"], row["p0_hertz"])
+                        print("%-12s P%d %-14s %-24s a %+6.2f%%  p0 %+6.2f%%  L2 %.4f" % (
+                            example, degree, cells, label(formulation, recovery), 100 * row["a_error"],
+                            100 * row["p0_error"], row["l2_error"]), flush=True)
+    add_orders(rows)
     with open(args.out + ".json", "w") as f:
         json.dump({"rows": rows}, f, indent=1)
     write_table(rows, args.out + ".md")
     plot(rows, args.out + ".png")
+    plot_profiles(profiles, args.out + "-profiles.png")
+
+
+def profile(dim, samples, center, a, p0):
+    """Samples of the finest run as (r / a, p / p0), r the distance to the axis."""
+    r = np.abs(samples["x"] - center[0]) if dim == 2 else np.hypot(samples["x"] - center[0], samples["y"] - center[1])
+    keep = r < 1.5 * a
+    return (r[keep] / a).tolist(), (samples["pressure"][keep] / p0).tolist()
+
+
+def add_orders(rows):
+    """Observed order of the L2 error between consecutive meshes of a series."""
+    series = {}
+    for r in rows:
+        series.setdefault((r["example"], r["degree"], r["formulation"], r["recovery"]), []).append(r)
+    for runs in series.values():
+        runs[0]["l2_order"] = None
+        for coarse, fine in zip(runs, runs[1:]):
+            fine["l2_order"] = math.log(coarse["l2_error"] / fine["l2_error"]) / math.log(coarse["h"] / fine["h"])
 
 
 def write_table(rows, path):
-    lines = ["| example | P | cells | n | recovery | a / a_Hertz - 1 | p0 / p0_Hertz - 1 | L2 error of p |",
-             "|---|---|---|---|---|---|---|---|"]
+    lines = ["| example | P | cells | n | constraints | a / a_Hertz - 1 | p0 / p0_Hertz - 1 | L2 error of p | order |",
+             "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        lines.append("| %s | %d | %s | %d | %s | %+.2f%% | %+.2f%% | %.4f |" % (
-            r["example"], r["degree"], "x".join(map(str, r["cells"])), r["n"], r["recovery"],
-            100 * r["a_error"], 100 * r["p0_error"], r["l2_error"]))
+        order = "" if r["l2_order"] is None else "%.2f" % r["l2_order"]
+        lines.append("| %s | %d | %s | %d | %s | %+.2f%% | %+.2f%% | %.4f | %s |" % (
+            r["example"], r["degree"], "x".join(map(str, r["cells"])), r["n"], label(r["formulation"], r["recovery"]),
+            100 * r["a_error"], 100 * r["p0_error"], r["l2_error"], order))
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 
@@ -116,16 +146,40 @@ def plot(rows, path):
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
     for ax, example in zip(axes, STUDIES):
         for degree in sorted({r["degree"] for r in rows if r["example"] == example}):
-            for recovery, style in zip(RECOVERIES, ["-o", "--s"]):
-                sel = [r for r in rows if r["example"] == example and r["degree"] == degree and r["recovery"] == recovery]
+            for (formulation, recovery), style in zip(VARIANTS, ["-o", "--s", ":^"]):
+                sel = [r for r in rows if r["example"] == example and r["degree"] == degree
+                       and r["formulation"] == formulation and r["recovery"] == recovery]
                 if sel:
                     ax.loglog([r["h"] / r["degree"] for r in sel], [r["l2_error"] for r in sel], style,
-                              label="P%d %s" % (degree, recovery))
+                              label="P%d %s" % (degree, label(formulation, recovery)))
         ax.set_title(example)
         ax.set_xlabel("node spacing h / k")
         ax.set_ylabel("relative L2 error of the contact pressure")
         ax.legend(fontsize=7)
         ax.grid(True, which="both", alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+def plot_profiles(profiles, path):
+    """Computed pressure against Hertz' p0 sqrt(1 - r^2/a^2) on the finest P2 meshes."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    for ax, example in zip(axes, STUDIES):
+        for (formulation, recovery), marker in zip(VARIANTS, ["o", "s", "^"]):
+            key = (example, 2, formulation, recovery)
+            if key in profiles:
+                r, p = profiles[key]
+                ax.plot(r, p, marker, markersize=2, alpha=0.5, linestyle="none", label=label(formulation, recovery))
+        t = np.linspace(0.0, 1.5, 301)
+        ax.plot(t, np.sqrt(np.maximum(0.0, 1.0 - t * t)), "k-", label="Hertz")
+        ax.set_title(example + ", P2, finest mesh")
+        ax.set_xlabel("r / a (Hertz)")
+        ax.set_ylabel("p / p0 (Hertz)")
+        ax.legend(fontsize=7)
+        ax.grid(True, alpha=0.3)
     fig.tight_layout()
     fig.savefig(path, dpi=120)
 

@@ -4,6 +4,7 @@
 // never formed into Q.
 #include <Tpetra_Operator.hpp>
 
+#include <memory>
 #include <vector>
 
 #include "signorini/TpetraTypes.hpp"
@@ -29,8 +30,10 @@ class BarrierHessianOperator : public Operator {
 
   // Q + A^T D A as an assembled matrix (needs Q to be a CrsMatrix): for preconditioners
   // and tests, never for applying H. When every entry of A^T D A falls on an entry of Q's
-  // graph in a row this rank owns (contact constraints couple the DOFs of one node), the
-  // result shares Q's graph and costs a copy of Q's values; otherwise it is a general sum.
+  // graph in a row this rank owns (nodal constraints couple the DOFs of one node), the
+  // result shares Q's graph and costs a copy of Q's values; otherwise (weighted gaps couple
+  // the nodes around a contact vertex) (A^T D) A is a sparse product that keeps its pattern
+  // from the first call, added at known positions into the fixed pattern of Q + A^T A.
   RCP<CrsMatrix> assemble() const;
   // Q + A^T D A with other weights D than the operator's (on A's range map).
   RCP<CrsMatrix> assemble(const Vector& D) const;
@@ -55,6 +58,10 @@ class BarrierHessianOperator : public Operator {
   mutable std::vector<int> constraint_;
   mutable std::vector<double> coefficient_;
   bool findPositionsInQPattern(const CrsMatrix& Q) const;
+
+  struct ProductPattern;
+  mutable std::shared_ptr<ProductPattern> product_;
+  RCP<CrsMatrix> assembleByProduct(const CrsMatrix& Q, const Vector& D) const;
 };
 
 }  // namespace signorini

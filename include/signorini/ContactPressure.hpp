@@ -9,11 +9,15 @@
 // where there is no contact. A uniform pressure is recovered exactly for every element
 // degree (unlike a division by lumped weights, which fails on P2 triangles, whose vertex
 // functions integrate to zero).
+// With weighted gaps (ContactFormulation::weightedGap) the multipliers already are the
+// coefficients of the pressure in the piecewise-linear basis of the contact vertices:
+// p = -lambda, and M is that basis' mass matrix.
 #include <array>
 #include <vector>
 
 #include "signorini/ContactStatistics.hpp"
 #include "signorini/DistributedSpace.hpp"
+#include "signorini/LagrangeBasis.hpp"
 #include "signorini/ProblemDefinition.hpp"
 #include "signorini/TpetraTypes.hpp"
 
@@ -28,7 +32,7 @@ struct ContactPressureSamples {
 
 class ContactPressure {
  public:
-  // Collective. `constraintMap` is A's range map: one constraint per contact node, as the
+  // Collective. `constraintMap` is A's range map: one constraint per constraint node, as the
   // assembler numbers them. Assembles M once.
   ContactPressure(const DistributedSpace& space, const ProblemDefinition& problem, const RCP<const Map>& constraintMap);
 
@@ -40,12 +44,17 @@ class ContactPressure {
 
   // p_j = -lambda_j / w_j with the HRZ-lumped boundary weights w (row sums for P1) on the
   // nodes of the loaded facets, 0 elsewhere. For P1 it is the multiplier of a dual mortar
-  // method with node-wise constraints. Collective.
+  // method with node-wise constraints. With weighted gaps, the same as pressure(). Collective.
   RCP<Vector> lumpedPressure(const Vector& lambda, const Vector& active) const;
 
   // The contact area: the lumped boundary measure (HRZ weights) of the active nodes, each
   // node standing for its share of the boundary. Collective.
   double activeMeasure(const Vector& active) const;
+
+  // A field on the constraints (pressure, active indicator) at the overlap nodes of the
+  // space, in overlapSpaceNodes() order: its value at constraint nodes, its linear
+  // interpolant at the other nodes of Gamma_c (weighted gaps), 0 off Gamma_c. Collective.
+  std::vector<double> overlapNodeValues(const Vector& values) const;
 
   // p_h at the quadrature points of this rank's contact facets. Collective.
   ContactPressureSamples samples(const Vector& pressure) const;
@@ -62,11 +71,15 @@ class ContactPressure {
   void forEachQuadraturePoint(const Vector& pressure, Visit&& visit) const;
 
   const DistributedSpace& space_;
+  LagrangeBasis basis_;  // of the multipliers on a facet (see contactMultiplierBasis)
+  bool weightedGap_;
   RCP<const Map> constraintMap_, overlapMap_;
   RCP<CrsMatrix> mass_, scaledMass_;
   RCP<Vector> scaling_;  // D^-1/2, D = diag(M)
   RCP<Vector> lumpedWeights_;
   std::vector<std::pair<long long, int>> facets_;  // (cell, local facet) of this rank's contact facets
+  std::vector<long long> overlapNodeConstraint_;  // per overlap space node, -1 for none
+  std::vector<long long> contactNodes_;           // space nodes of Gamma_c, sorted
   std::vector<int> overlapIndex_;  // local index in overlapMap_ of each space node, -1 off Gamma_c
 };
 

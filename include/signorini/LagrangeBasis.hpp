@@ -24,6 +24,9 @@ class LagrangeBasis {
   // vertex), then face nodes; within a group the support sets ascend lexicographically.
   const std::vector<std::array<int, 4>>& latticeIndices() const { return lattice_; }
 
+  // The local nodes on the facet opposite vertex `facet` (lattice weight 0 there), ascending.
+  std::vector<int> facetNodes(int facet) const;
+
   // Reference coordinates of a local node (entries past dim are 0).
   std::array<double, 3> referencePoint(int node) const;
 

@@ -74,4 +74,7 @@ class NewtonSystemSolver {
   bool amgReady_ = false;
 };
 
+// q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i, on A's row map.
+RCP<Vector> constraintStiffness(const CrsMatrix& Q, const CrsMatrix& A);
+
 }  // namespace signorini

@@ -19,6 +19,14 @@ struct BoundaryField {
   std::vector<std::optional<Expression>> components;  // dim entries
 };
 
+// How the non-penetration condition -n_o . u <= g is imposed on the contact boundary.
+//  nodal:        at every node of Gamma_c (the paper's constraints; P_k nodes, P_k multipliers);
+//  weightedGap:  integral of phi_j (g + n_o . u) >= 0 for the piecewise-linear hat phi_j of
+//                every vertex j of Gamma_c (a P_k-P1 mortar discretisation): every
+//                constraint has the positive weight integral of phi_j, and the multipliers
+//                are the nodal values of the contact pressure.
+enum class ContactFormulation { nodal, weightedGap };
+
 struct ProblemDefinition {
   std::string name;
   std::string meshType;  // "box" or "gmsh"
@@ -34,6 +42,7 @@ struct ProblemDefinition {
   std::string contactBoundary;
   std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  // unit, from obstacle into body
   std::optional<Expression> gap;
+  ContactFormulation contactFormulation = ContactFormulation::nodal;
 
   static Teuchos::ParameterList validParameters();
   // `dim` of a Gmsh mesh is only known once it is read: pass it then (0 = from the list).

@@ -18,6 +18,7 @@
 #include "signorini/ElasticityElement.hpp"
 #include "signorini/Error.hpp"
 #include "signorini/KrylovSolver.hpp"
+#include "signorini/LagrangeBasis.hpp"
 
 namespace signorini {
 namespace {
@@ -54,34 +55,30 @@ class RestrictedOperator : public Operator {
   RCP<const Vector> selected_;
 };
 
-// Local nodes of facet f of a cell: those whose lattice index has no weight on vertex f.
-std::vector<int> facetNodes(const LagrangeBasis& basis, int facet) {
-  std::vector<int> nodes;
-  for (int a = 0; a < basis.size(); ++a)
-    if (basis.latticeIndices()[a][facet] == 0) nodes.push_back(a);
-  return nodes;
-}
-
 }  // namespace
 
 ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefinition& problem,
                                  const RCP<const Map>& constraintMap)
-    : space_(ds), constraintMap_(constraintMap) {
+    : space_(ds),
+      basis_(contactMultiplierBasis(ds.space(), problem)),
+      weightedGap_(problem.contactFormulation == ContactFormulation::weightedGap),
+      constraintMap_(constraintMap) {
   const LagrangeSpace& space = ds.space();
   const int dim = ds.dim();
   if (!problem.contactBoundary.empty()) facets_ = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
 
   // Constraint of each facet node; the overlap rows are the owned constraints, then the
   // ghosts' in ascending order (FECrsGraph wants the owned map as a prefix).
-  const std::vector<long long> constraintOf = overlapNodeConstraints(ds, problem);
+  overlapNodeConstraint_ = overlapNodeConstraints(ds, problem);
+  if (!problem.contactBoundary.empty()) contactNodes_ = ds.boundaryNodes(ds.mesh().tag(problem.contactBoundary));
   const auto& overlapNodes = ds.overlapSpaceNodes();
   std::vector<long long> constraintOfNode(space.numNodes(), -1);
-  for (std::size_t i = 0; i < overlapNodes.size(); ++i) constraintOfNode[overlapNodes[i]] = constraintOf[i];
+  for (std::size_t i = 0; i < overlapNodes.size(); ++i) constraintOfNode[overlapNodes[i]] = overlapNodeConstraint_[i];
   auto owned = constraintMap->getNodeElementList();
   const std::size_t numOwned = owned.size();
   std::vector<GlobalOrdinal> rows(owned.begin(), owned.end()), ghosts;
   for (const auto& [cell, facet] : facets_)
-    for (int a : facetNodes(space.basis(), facet)) {
+    for (int a : basis_.facetNodes(facet)) {
       const long long k = constraintOfNode[space.cellNodes(cell)[a]];
       if (k < 0) throw Error("contact pressure: a contact facet node has no constraint");
       if (!constraintMap->isNodeGlobalElement(k)) ghosts.push_back(k);
@@ -99,7 +96,7 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   // Graph: every pair of nodes of a contact facet.
   std::vector<std::vector<GlobalOrdinal>> columns(rows.size());
   for (const auto& [cell, facet] : facets_) {
-    const auto nodes = facetNodes(space.basis(), facet);
+    const auto nodes = basis_.facetNodes(facet);
     for (int a : nodes)
       for (int b : nodes)
         columns[overlapIndex_[space.cellNodes(cell)[a]]].push_back(rows[overlapIndex_[space.cellNodes(cell)[b]]]);
@@ -126,11 +123,11 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   mass->beginAssembly();
   std::vector<double> coords((dim + 1) * dim);
   FacetQuadrature rule;
-  const int n = space.nodesPerCell();
+  const int n = basis_.size();
   for (const auto& [cell, facet] : facets_) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
-    facetQuadrature(space.basis(), coords.data(), facet, 2 * space.degree(), rule);
-    const auto nodes = facetNodes(space.basis(), facet);
+    facetQuadrature(basis_, coords.data(), facet, 2 * basis_.degree(), rule);
+    const auto nodes = basis_.facetNodes(facet);
     for (int a : nodes) {
       const GlobalOrdinal row = rows[overlapIndex_[space.cellNodes(cell)[a]]];
       for (int b : nodes) {
@@ -168,7 +165,7 @@ RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
   const std::vector<double> activeHere = overlapValues(active);
   Vector loadedHere(overlapMap_);
   for (const auto& [cell, facet] : facets_) {
-    const auto nodes = facetNodes(space.basis(), facet);
+    const auto nodes = basis_.facetNodes(facet);
     bool loaded = false;
     for (int a : nodes) loaded = loaded || activeHere[overlapIndex_[space.cellNodes(cell)[a]]] != 0.0;
     if (loaded)
@@ -183,6 +180,11 @@ RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
 
 RCP<Vector> ContactPressure::pressure(const Vector& lambda, const Vector& active) const {
   const RCP<const Vector> loaded = loadedNodes(active);
+  if (weightedGap_) {  // the multipliers are the pressure's coefficients
+    auto p = rcp(new Vector(constraintMap_));
+    p->elementWiseMultiply(-1.0, *loaded, lambda, 0.0);
+    return p;
+  }
   auto rhs = rcp(new Vector(constraintMap_));
   rhs->elementWiseMultiply(-1.0, *scaling_, lambda, 0.0);
   rhs->elementWiseMultiply(1.0, *loaded, *rhs, 0.0);
@@ -199,6 +201,7 @@ RCP<Vector> ContactPressure::pressure(const Vector& lambda, const Vector& active
 }
 
 RCP<Vector> ContactPressure::lumpedPressure(const Vector& lambda, const Vector& active) const {
+  if (weightedGap_) return pressure(lambda, active);
   auto p = rcp(new Vector(constraintMap_));
   p->reciprocal(*lumpedWeights_);
   p->elementWiseMultiply(-1.0, *p, lambda, 0.0);
@@ -216,20 +219,64 @@ std::vector<double> ContactPressure::overlapValues(const Vector& pressure) const
 template <class Visit>
 void ContactPressure::forEachQuadraturePoint(const Vector& pressure, Visit&& visit) const {
   const LagrangeSpace& space = space_.space();
-  const int dim = space_.dim(), n = space.nodesPerCell();
+  const int dim = space_.dim(), n = basis_.size();
   const std::vector<double> values = overlapValues(pressure);
   std::vector<double> coords((dim + 1) * dim);
   FacetQuadrature rule;
   for (const auto& [cell, facet] : facets_) {
     space_.mesh().cellVertexCoordinates(cell, coords.data());
-    facetQuadrature(space.basis(), coords.data(), facet, 2 * space.degree() + 2, rule);
-    const auto nodes = facetNodes(space.basis(), facet);
+    facetQuadrature(basis_, coords.data(), facet, 2 * space.degree() + 2, rule);
+    const auto nodes = basis_.facetNodes(facet);
     for (int q = 0; q < rule.size(); ++q) {
       double p = 0;
       for (int a : nodes) p += rule.phi[q * n + a] * values[overlapIndex_[space.cellNodes(cell)[a]]];
       visit(&rule.points[q * dim], rule.weights[q], p);
     }
   }
+}
+
+std::vector<double> ContactPressure::overlapNodeValues(const Vector& values) const {
+  const auto& overlapNodes = space_.overlapSpaceNodes();
+  std::vector<GlobalOrdinal> wanted;
+  for (long long k : overlapNodeConstraint_)
+    if (k >= 0) wanted.push_back(k);
+  auto wantedMap = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                               Teuchos::ArrayView<const GlobalOrdinal>(wanted), 0, constraintMap_->getComm()));
+  Vector here(wantedMap);
+  here.doImport(values, Import(constraintMap_, wantedMap), Tpetra::INSERT);
+  auto data = here.getData();
+  std::vector<double> result(overlapNodes.size(), 0.0);
+  std::vector<int> localIndex(space_.space().numNodes(), -1);
+  std::size_t next = 0;
+  for (std::size_t i = 0; i < overlapNodes.size(); ++i) {
+    localIndex[overlapNodes[i]] = static_cast<int>(i);
+    if (overlapNodeConstraint_[i] >= 0) result[i] = data[next++];
+  }
+  if (!weightedGap_) return result;
+  // The other nodes of Gamma_c lie on a contact edge or facet of every cell that holds
+  // them, whose vertices all carry constraints: interpolate linearly from those.
+  const LagrangeSpace& space = space_.space();
+  const auto& lattice = space.basis().latticeIndices();
+  std::vector<char> done(overlapNodes.size(), 0);
+  for (long long node : contactNodes_) {
+    const int i = localIndex[node];
+    if (i >= 0 && overlapNodeConstraint_[i] >= 0) done[i] = 1;
+  }
+  std::vector<char> onContact(space.numNodes(), 0);
+  for (long long node : contactNodes_) onContact[node] = 1;
+  for (long long cell = 0; cell < space_.mesh().numCells(); ++cell) {
+    const long long* nodes = space.cellNodes(cell);
+    for (int b = 0; b < space.nodesPerCell(); ++b) {
+      const int i = localIndex[nodes[b]];
+      if (!onContact[nodes[b]] || done[i]) continue;
+      double value = 0;
+      for (int v = 0; v <= space.dim(); ++v)
+        if (lattice[b][v] > 0) value += lattice[b][v] * result[localIndex[nodes[v]]];
+      result[i] = value / space.degree();
+      done[i] = 1;
+    }
+  }
+  return result;
 }
 
 double ContactPressure::activeMeasure(const Vector& active) const { return lumpedWeights_->dot(active); }

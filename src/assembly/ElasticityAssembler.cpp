@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
 
 #include <Kokkos_DualView.hpp>
 #include <Teuchos_CommHelpers.hpp>
@@ -117,16 +118,142 @@ void eliminatePrescribed(const std::vector<char>& fixed, const std::vector<doubl
   }
 }
 
+struct ContactConstraints {
+  RCP<CrsMatrix> A;
+  RCP<Vector> d;
+};
+
+// Row i: -n_o . u(x) <= g(x) at the i-th owned contact node x, only the nonzero components of n_o.
+ContactConstraints nodalConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
+                                    const OwnedContactNodes& contact, const RCP<const Map>& constraintMap) {
+  const int dim = ds.dim();
+  auto A = rcp(new CrsMatrix(constraintMap, dim));
+  auto d = rcp(new Vector(constraintMap));
+  auto dData = d->getDataNonConst();
+  std::vector<GlobalOrdinal> cols(dim);
+  std::vector<double> vals(dim);
+  for (std::size_t i = 0; i < contact.nodes.size(); ++i) {
+    const long long node = contact.nodes[i];
+    int count = 0;
+    for (int c = 0; c < dim; ++c)
+      if (problem.obstacleDirection[c] != 0.0) {
+        cols[count] = dim * ds.globalNode(node) + c;
+        vals[count++] = -problem.obstacleDirection[c];
+      }
+    A->insertGlobalValues(contact.first + i, count, vals.data(), cols.data());
+    dData[i] = (*problem.gap)(&ds.space().nodeCoordinates()[dim * node], dim);
+  }
+  A->fillComplete(ds.ownedDofMap(), constraintMap);
+  return {A, d};
+}
+
+// Row j, for the hat function phi_j of contact vertex j: the integral over Gamma_c of
+// phi_j (-n_o . u) <= the integral of phi_j g. Each rank integrates its own contact facets
+// (every global facet is on one rank) into the rows of their vertices, owned or not, and
+// the sums go to the owners.
+ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
+                                          const RCP<const Map>& constraintMap) {
+  const LagrangeSpace& space = ds.space();
+  const LagrangeBasis hat = contactMultiplierBasis(space, problem);
+  const int dim = ds.dim(), npc = space.nodesPerCell();
+  const auto facets = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
+
+  const std::vector<long long> overlapConstraint = overlapNodeConstraints(ds, problem);
+  std::vector<long long> constraintOf(space.numNodes(), -1);
+  for (std::size_t i = 0; i < overlapConstraint.size(); ++i)
+    constraintOf[ds.overlapSpaceNodes()[i]] = overlapConstraint[i];
+
+  std::vector<int> components;
+  for (int c = 0; c < dim; ++c)
+    if (problem.obstacleDirection[c] != 0.0) components.push_back(c);
+  // Rows: the owned constraints, then the others this rank's facets touch (FECrsGraph wants
+  // the owned rows as a prefix); columns: the facet's DOFs in the obstacle direction.
+  auto owned = constraintMap->getNodeElementList();
+  std::vector<GlobalOrdinal> rows(owned.begin(), owned.end()), ghosts;
+  std::map<GlobalOrdinal, std::vector<GlobalOrdinal>> columns;
+  for (const auto& [cell, facet] : facets) {
+    const long long* nodes = space.cellNodes(cell);
+    for (int a : hat.facetNodes(facet)) {
+      const long long row = constraintOf[nodes[a]];
+      if (row < 0) throw Error("weighted gap: a contact vertex has no constraint");
+      if (!constraintMap->isNodeGlobalElement(row)) ghosts.push_back(row);
+      auto& cols = columns[row];
+      for (int b : space.basis().facetNodes(facet))
+        for (int c : components) cols.push_back(dim * ds.globalNode(nodes[b]) + c);
+    }
+  }
+  std::sort(ghosts.begin(), ghosts.end());
+  ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
+  rows.insert(rows.end(), ghosts.begin(), ghosts.end());
+  auto overlapRows = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                 Teuchos::ArrayView<const GlobalOrdinal>(rows), 0, constraintMap->getComm()));
+  Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("entries per row", rows.size());
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    auto& cols = columns[rows[i]];
+    std::sort(cols.begin(), cols.end());
+    cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+    counts.view_host()(i) = cols.size();
+  }
+  counts.modify_host();
+  counts.sync_device();
+  auto graph = rcp(new FEGraph(constraintMap, overlapRows, counts, Teuchos::null, ds.ownedDofMap(), constraintMap));
+  graph->beginAssembly();
+  for (const auto& [row, cols] : columns) graph->insertGlobalIndices(row, cols.size(), cols.data());
+  graph->endAssembly();
+
+  auto A = rcp(new FEMatrix(graph));
+  Vector dOverlap(overlapRows);
+  std::vector<double> coords((dim + 1) * dim);
+  FacetQuadrature rule, hatRule;
+  const int degree = std::max(space.degree() + 1, problem.loadQuadratureDegree);
+  A->beginAssembly();
+  for (const auto& [cell, facet] : facets) {
+    ds.mesh().cellVertexCoordinates(cell, coords.data());
+    facetQuadrature(space.basis(), coords.data(), facet, degree, rule);
+    facetQuadrature(hat, coords.data(), facet, degree, hatRule);
+    const long long* nodes = space.cellNodes(cell);
+    for (int a : hat.facetNodes(facet)) {
+      const GlobalOrdinal row = constraintOf[nodes[a]];
+      double gap = 0;
+      for (int q = 0; q < rule.size(); ++q)
+        gap += rule.weights[q] * hatRule.phi[q * hat.size() + a] * (*problem.gap)(&rule.points[q * dim], dim);
+      dOverlap.sumIntoGlobalValue(row, gap);
+      for (int b : space.basis().facetNodes(facet)) {
+        double weight = 0;  // integral of phi_a N_b
+        for (int q = 0; q < rule.size(); ++q)
+          weight += rule.weights[q] * hatRule.phi[q * hat.size() + a] * rule.phi[q * npc + b];
+        for (int c : components) {
+          const GlobalOrdinal col = dim * ds.globalNode(nodes[b]) + c;
+          const double value = -problem.obstacleDirection[c] * weight;
+          A->sumIntoGlobalValues(row, 1, &value, &col);
+        }
+      }
+    }
+  }
+  A->endAssembly();
+  auto d = rcp(new Vector(constraintMap));
+  d->doExport(dOverlap, Export(overlapRows, constraintMap), Tpetra::ADD);
+  return {A, d};
+}
+
 }  // namespace
 
-// One constraint per contact node, numbered in the order of the renumbered nodes. Ranks own
-// contiguous node ranges in rank order, so a rank's constraints start after the contact
-// nodes of the ranks before it.
+LagrangeBasis contactMultiplierBasis(const LagrangeSpace& space, const ProblemDefinition& problem) {
+  return LagrangeBasis(space.dim(), problem.contactFormulation == ContactFormulation::weightedGap ? 1 : space.degree());
+}
+
+// One constraint per constraint node, numbered in the order of the renumbered nodes. Ranks
+// own contiguous node ranges in rank order, so a rank's constraints start after the
+// constraint nodes of the ranks before it.
 OwnedContactNodes ownedContactNodes(const DistributedSpace& ds, const ProblemDefinition& problem) {
   OwnedContactNodes result;
+  // Vertices come first in the space, with node id == vertex id.
+  const long long lastNode = problem.contactFormulation == ContactFormulation::weightedGap
+                                 ? ds.mesh().numVertices()
+                                 : std::numeric_limits<long long>::max();
   if (!problem.contactBoundary.empty())
     for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contactBoundary)))
-      if (ds.ownsNode(node)) result.nodes.push_back(node);
+      if (ds.ownsNode(node) && node < lastNode) result.nodes.push_back(node);
   std::sort(result.nodes.begin(), result.nodes.end(),
             [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
   const long long count = static_cast<long long>(result.nodes.size());
@@ -153,16 +280,17 @@ std::vector<long long> overlapNodeConstraints(const DistributedSpace& ds, const 
 RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefinition& problem,
                                const RCP<const Map>& constraintMap) {
   const LagrangeSpace& space = ds.space();
-  const int dim = ds.dim(), npc = space.nodesPerCell();
+  const LagrangeBasis basis = contactMultiplierBasis(space, problem);
+  const int dim = ds.dim();
   auto weights = rcp(new Vector(constraintMap));
   if (problem.contactBoundary.empty()) return weights;
   Vector overlap(ds.overlapNodeMap()), owned(ds.ownedNodeMap());
   std::vector<double> coords((dim + 1) * dim), w;
   for (const auto& [cell, facet] : space.boundaryFacets(ds.mesh().tag(problem.contactBoundary))) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
-    facetLumpedMass(space.basis(), coords.data(), facet, w);
+    facetLumpedMass(basis, coords.data(), facet, w);
     const long long* nodes = space.cellNodes(cell);
-    for (int a = 0; a < npc; ++a)
+    for (int a = 0; a < basis.size(); ++a)
       if (w[a] != 0.0) overlap.sumIntoGlobalValue(ds.globalNode(nodes[a]), w[a]);
   }
   owned.doExport(overlap, Export(ds.overlapNodeMap(), ds.ownedNodeMap()), Tpetra::ADD);
@@ -261,25 +389,9 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   for (std::size_t k = 0; k < ownedConstraints.size(); ++k) ownedConstraints[k] = contact.first + k;
   auto constraintMap = rcp(new Map(contact.numGlobal, Teuchos::ArrayView<const GlobalOrdinal>(ownedConstraints),
                                    0, ds.comm()));
-  auto A = rcp(new CrsMatrix(constraintMap, dim));
-  auto d = rcp(new Vector(constraintMap));
-  {
-    auto dData = d->getDataNonConst();
-    std::vector<GlobalOrdinal> cols(dim);
-    std::vector<double> vals(dim);
-    for (std::size_t i = 0; i < ownedConstraints.size(); ++i) {
-      const long long node = contact.nodes[i];
-      int count = 0;  // only the nonzero components of -n_o
-      for (int c = 0; c < dim; ++c)
-        if (problem.obstacleDirection[c] != 0.0) {
-          cols[count] = dim * ds.globalNode(node) + c;
-          vals[count++] = -problem.obstacleDirection[c];
-        }
-      A->insertGlobalValues(ownedConstraints[i], count, vals.data(), cols.data());
-      dData[i] = (*problem.gap)(&space.nodeCoordinates()[dim * node], dim);
-    }
-  }
-  A->fillComplete(ds.ownedDofMap(), constraintMap);
+  const ContactConstraints constraints = problem.contactFormulation == ContactFormulation::weightedGap
+                                             ? weightedGapConstraints(ds, problem, constraintMap)
+                                             : nodalConstraints(ds, problem, contact, constraintMap);
 
   auto coordinates = rcp(new MultiVector(ds.ownedNodeMap(), dim));
   for (int c = 0; c < dim; ++c) {
@@ -290,8 +402,8 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   ContactQP qp;
   qp.Q = K;
   qp.b = b;
-  qp.A = A;
-  qp.d = d;
+  qp.A = constraints.A;
+  qp.d = constraints.d;
   qp.nullspace = rigidBodyModes(ds.ownedDofMap(), *coordinates);
   qp.coordinates = coordinates;
   qp.blockSize = dim;

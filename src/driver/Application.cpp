@@ -42,7 +42,8 @@ Teuchos::ParameterList outputParameters() {
   p.set("contact pressure", "auto",
         "\"consistent\": solve M p = -lambda with the boundary mass matrix M of the loaded "
         "contact facets; \"lumped\": p = -lambda / w with HRZ-lumped boundary weights w; "
-        "\"auto\": lumped for P1, consistent for P2 and P3 (closest to Hertz, doc/hertz-validation.md)",
+        "\"auto\": lumped for P1, consistent for P2 and P3 (closest to Hertz, doc/hertz-validation.md). "
+        "Nodal constraints only: with weighted gaps p = -lambda",
         rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("auto", "consistent", "lumped"))));
   p.set("write contact samples", false,
         "Write contact.csv: the recovered contact pressure at quadrature points of the contact "
@@ -136,55 +137,44 @@ double vonMises(const double* s, int dim, const IsotropicMaterial& material) {
                    3.0 * (sxy * sxy + syz * syz + szx * szx));
 }
 
-// `pressure` and `active` (1 or 0) are on the constraint map.
-void writeSolution(const AssembledProblem& p, const SolveResult& r, const Vector& pressure, const Vector& active,
-                   const std::string& directory) {
+// Contact fields at the nodes: force (A^T lambda) . n_o, the nodal share of the contact
+// force; the gap g + n_o . u on Gamma_c; and, from `recovery` (null without contact), the
+// pressure and the active indicator (1 or 0 per constraint, on the constraint map).
+void writeSolution(const AssembledProblem& p, const SolveResult& r, const ContactPressure* recovery,
+                   const Vector& pressure, const Vector& active, const std::string& directory) {
   const DistributedSpace& ds = *p.space;
+  const ProblemDefinition& def = p.definition;
   const int dim = ds.dim();
   const auto& overlap = ds.overlapSpaceNodes();
-  Vector u(ds.overlapDofMap());
-  u.doImport(*r.v, Import(ds.ownedDofMap(), ds.overlapDofMap()), Tpetra::INSERT);
+  const Import toOverlap(ds.ownedDofMap(), ds.overlapDofMap());
+  Vector u(ds.overlapDofMap()), force(ds.ownedDofMap()), forceHere(ds.overlapDofMap());
+  u.doImport(*r.v, toOverlap, Tpetra::INSERT);
+  p.qp.A->apply(*r.lambda, force, Teuchos::TRANS);
+  forceHere.doImport(force, toOverlap, Tpetra::INSERT);
 
-  // Constraint values at the overlap nodes: contact force (-lambda), gap (d - A v), active.
-  const std::vector<long long> constraintOf = overlapNodeConstraints(ds, p.definition);
-  std::vector<GlobalOrdinal> wanted;
-  for (long long k : constraintOf)
-    if (k >= 0) wanted.push_back(k);
-  const auto cmap = p.qp.A->getRangeMap();
-  auto wantedMap = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                               Teuchos::ArrayView<const GlobalOrdinal>(wanted), 0, cmap->getComm()));
-  Vector gap(cmap);
-  p.qp.A->apply(*r.v, gap);
-  gap.update(1.0, *p.qp.d, -1.0);
-  Import toWanted(cmap, wantedMap);
-  Vector lambdaHere(wantedMap), gapHere(wantedMap), pressureHere(wantedMap), activeHere(wantedMap);
-  lambdaHere.doImport(*r.lambda, toWanted, Tpetra::INSERT);
-  gapHere.doImport(gap, toWanted, Tpetra::INSERT);
-  pressureHere.doImport(pressure, toWanted, Tpetra::INSERT);
-  activeHere.doImport(active, toWanted, Tpetra::INSERT);
-
-  NodeField displacement{"displacement", dim, {}}, force{"contact force", 1, {}}, pressureField{"contact pressure", 1, {}},
-      gapField{"gap", 1, {}}, activeField{"active", 1, {}};
+  NodeField displacement{"displacement", dim, {}}, forceField{"contact force", 1, {}},
+      pressureField{"contact pressure", 1, {}}, gapField{"gap", 1, {}}, activeField{"active", 1, {}};
   auto ud = u.getData();
+  auto fd = forceHere.getData();
   displacement.values.assign(ud.begin(), ud.end());
-  auto ld = lambdaHere.getData();
-  auto gd = gapHere.getData();
-  auto pd = pressureHere.getData();
-  auto ad = activeHere.getData();
-  std::size_t next = 0;
-  for (long long k : constraintOf) {
-    if (k < 0) {
-      force.values.push_back(0.0);
-      pressureField.values.push_back(0.0);
-      gapField.values.push_back(0.0);
-      activeField.values.push_back(0.0);
-      continue;
+  std::vector<char> onContact(ds.space().numNodes(), 0);
+  if (!def.contactBoundary.empty())
+    for (long long node : ds.boundaryNodes(ds.mesh().tag(def.contactBoundary))) onContact[node] = 1;
+  for (std::size_t i = 0; i < overlap.size(); ++i) {
+    double normalForce = 0, normalDisplacement = 0;
+    for (int c = 0; c < dim; ++c) {
+      normalForce += fd[dim * i + c] * def.obstacleDirection[c];
+      normalDisplacement += ud[dim * i + c] * def.obstacleDirection[c];
     }
-    force.values.push_back(-ld[next]);
-    pressureField.values.push_back(pd[next]);
-    gapField.values.push_back(gd[next]);
-    activeField.values.push_back(ad[next]);
-    ++next;
+    forceField.values.push_back(normalForce);
+    const double* x = &ds.space().nodeCoordinates()[dim * overlap[i]];
+    gapField.values.push_back(onContact[overlap[i]] ? (*def.gap)(x, dim) + normalDisplacement : 0.0);
+  }
+  pressureField.values.assign(overlap.size(), 0.0);
+  activeField.values.assign(overlap.size(), 0.0);
+  if (recovery) {
+    pressureField.values = recovery->overlapNodeValues(pressure);
+    activeField.values = recovery->overlapNodeValues(active);
   }
 
   CellField rank{"rank", 1, {}}, mises{"von Mises stress", 1, {}};
@@ -204,7 +194,7 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const Vector
     mises.values.push_back(vonMises(sigma.data(), dim, p.definition.material));
     rank.values.push_back(ds.comm()->getRank());
   }
-  writeVtu(ds, {displacement, pressureField, force, gapField, activeField}, {mises, rank}, directory, "solution");
+  writeVtu(ds, {displacement, pressureField, forceField, gapField, activeField}, {mises, rank}, directory, "solution");
 }
 
 // contact.csv on rank 0: every rank's samples, gathered (the contact boundary is a surface).
@@ -411,17 +401,19 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     const RCP<const Vector> active = activeIndicator(problem.qp, *result.v, *result.lambda);
     RCP<Vector> pressure = rcp(new Vector(problem.qp.A->getRangeMap()));
     std::optional<ContactStatistics> contact;
+    std::optional<ContactPressure> recovery;
     if (m > 0) {
-      const ContactPressure recovery(*problem.space, def, problem.qp.A->getRangeMap());
+      recovery.emplace(*problem.space, def, problem.qp.A->getRangeMap());
       const std::string how = output.get<std::string>("contact pressure");
       const bool lumped = how == "lumped" || (how == "auto" && def.degree == 1);
-      pressure = lumped ? recovery.lumpedPressure(*result.lambda, *active) : recovery.pressure(*result.lambda, *active);
-      contact = contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.obstacleDirection);
+      pressure = lumped ? recovery->lumpedPressure(*result.lambda, *active) : recovery->pressure(*result.lambda, *active);
+      contact = contactStatistics(*recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.obstacleDirection);
       if (root) logContact(*contact, out);
       if (output.get<bool>("write contact samples"))
-        writeContactSamples(recovery.samples(*pressure), *comm, directory + "/contact.csv");
+        writeContactSamples(recovery->samples(*pressure), *comm, directory + "/contact.csv");
     }
-    if (output.get<bool>("write solution")) writeSolution(problem, result, *pressure, *active, directory);
+    if (output.get<bool>("write solution"))
+      writeSolution(problem, result, recovery ? &*recovery : nullptr, *pressure, *active, directory);
     total.stop();
     RunSummary summary;
     summary.problem = def.name;

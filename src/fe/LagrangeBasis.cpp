@@ -94,4 +94,11 @@ void LagrangeBasis::gradients(const double* xi, double* dphi) const {
   }
 }
 
+std::vector<int> LagrangeBasis::facetNodes(int facet) const {
+  std::vector<int> nodes;
+  for (int a = 0; a < size(); ++a)
+    if (lattice_[a][facet] == 0) nodes.push_back(a);
+  return nodes;
+}
+
 }  // namespace signorini

@@ -109,6 +109,12 @@ ParameterList ProblemDefinition::validParameters() {
   contact.set("gap: center", Array<double>(), "Center of the paraboloid");
   contact.set("gap: radius", 1.0, "Radius of curvature of the paraboloid", range(1e-300, 1e300));
   contact.set("gap: expression", "0", "Gap as an expression of x, y, z");
+  contact.set("formulation", "nodal",
+              "\"nodal\": -n.u <= g at every node of the contact boundary (the paper's constraints); "
+              "\"weighted gap\": the integral of phi_j (g + n.u) >= 0 for the linear hat phi_j of every "
+              "vertex of the contact boundary, whose multipliers are the contact pressure's nodal values "
+              "(sound for P2 and P3, where the nodal constraints at the vertices of a facet carry no force)",
+              choices({"nodal", "weighted gap"}));
   return p;
 }
 
@@ -185,6 +191,9 @@ ProblemDefinition ProblemDefinition::fromParameters(const ParameterList& user, i
       text = contact.get<std::string>("gap: expression");
     }
     def.gap.emplace(text, "Problem/Contact/gap");
+    def.contactFormulation = contact.get<std::string>("formulation") == "weighted gap"
+                                 ? ContactFormulation::weightedGap
+                                 : ContactFormulation::nodal;
   }
   return def;
 }

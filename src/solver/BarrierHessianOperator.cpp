@@ -1,9 +1,12 @@
 #include "signorini/BarrierHessianOperator.hpp"
 
+#include <algorithm>
+
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
+#include <Tpetra_RowMatrixTransposer.hpp>
 #include <Tpetra_Vector.hpp>
 #include <Teuchos_CommHelpers.hpp>
 
@@ -84,11 +87,111 @@ RCP<CrsMatrix> BarrierHessianOperator::assemble(const Vector& D) const {
     H->fillComplete(Q->getDomainMap(), Q->getRangeMap());
     return H;
   }
-  CrsMatrix DA(*A_, Teuchos::Copy);
-  DA.leftScale(D);
-  auto AtDA = rcp(new CrsMatrix(A_->getDomainMap(), 0));
-  Tpetra::MatrixMatrix::Multiply(*A_, true, DA, false, *AtDA);
-  return Tpetra::MatrixMatrix::add(1.0, false, *Q, 1.0, false, *AtDA);
+  return assembleByProduct(*Q, D);
+}
+
+struct BarrierHessianOperator::ProductPattern {
+  RCP<const CrsMatrix> At;       // A^T: rows on Q's row map, columns the constraints that touch them
+  RCP<const Import> toAtColumns;  // A's range map -> At's column map
+  RCP<CrsMatrix> AtDA;           // its pattern is fixed by the first product
+  RCP<const CrsMatrix::crs_graph_type> graph;  // of Q + A^T A
+  std::vector<std::size_t> qPosition, productPosition;  // entry of Q, of AtDA -> entry of graph
+};
+
+namespace {
+
+using Graph = CrsMatrix::crs_graph_type;
+
+// The union of the patterns of Q and M, both with rows on Q's row map.
+RCP<const Graph> unionPattern(const CrsMatrix& Q, const CrsMatrix& M) {
+  const auto rowMap = Q.getRowMap();
+  const LocalOrdinal rows = static_cast<LocalOrdinal>(rowMap->getNodeNumElements());
+  std::vector<std::vector<GlobalOrdinal>> columns(rows);
+  for (const CrsMatrix* matrix : {&Q, &M}) {
+    const auto m = matrix->getLocalMatrixHost();
+    const auto& mRows = *matrix->getRowMap();
+    const auto& mCols = *matrix->getColMap();
+    for (LocalOrdinal r = 0; r < static_cast<LocalOrdinal>(m.numRows()); ++r) {
+      auto& row = columns[rowMap->getLocalElement(mRows.getGlobalElement(r))];
+      for (auto e = m.graph.row_map(r); e < m.graph.row_map(r + 1); ++e)
+        row.push_back(mCols.getGlobalElement(m.graph.entries(e)));
+    }
+  }
+  Teuchos::Array<std::size_t> counts(rows);
+  for (LocalOrdinal r = 0; r < rows; ++r) {
+    std::sort(columns[r].begin(), columns[r].end());
+    columns[r].erase(std::unique(columns[r].begin(), columns[r].end()), columns[r].end());
+    counts[r] = columns[r].size();
+  }
+  auto graph = rcp(new Graph(rowMap, counts()));
+  for (LocalOrdinal r = 0; r < rows; ++r)
+    graph->insertGlobalIndices(rowMap->getGlobalElement(r), Teuchos::ArrayView<const GlobalOrdinal>(columns[r]));
+  graph->fillComplete(Q.getDomainMap(), Q.getRangeMap());
+  return graph;
+}
+
+// For each local entry of M, its position in the local entries of `pattern`, which holds
+// every entry of M in a row this rank owns (fill complete: rows sorted).
+std::vector<std::size_t> positionsIn(const Graph& pattern, const CrsMatrix& M) {
+  const auto p = pattern.getLocalGraphHost();
+  const auto m = M.getLocalMatrixHost();
+  const auto& pRows = *pattern.getRowMap();
+  const auto& pCols = *pattern.getColMap();
+  const auto& mRows = *M.getRowMap();
+  const auto& mCols = *M.getColMap();
+  std::vector<std::size_t> position(m.values.extent(0));
+  for (LocalOrdinal r = 0; r < static_cast<LocalOrdinal>(m.numRows()); ++r) {
+    const LocalOrdinal row = pRows.getLocalElement(mRows.getGlobalElement(r));
+    const auto begin = &p.entries(p.row_map(row));
+    const auto end = begin + (p.row_map(row + 1) - p.row_map(row));
+    for (auto e = m.graph.row_map(r); e < m.graph.row_map(r + 1); ++e) {
+      const LocalOrdinal col = pCols.getLocalElement(mCols.getGlobalElement(m.graph.entries(e)));
+      const auto at = std::lower_bound(begin, end, col);
+      if (at == end || *at != col) throw Error("BarrierHessianOperator: an entry is missing from the pattern of Q + A^T A");
+      position[e] = p.row_map(row) + (at - begin);
+    }
+  }
+  return position;
+}
+
+}  // namespace
+
+RCP<CrsMatrix> BarrierHessianOperator::assembleByProduct(const CrsMatrix& Q, const Vector& D) const {
+  using Values = typename CrsMatrix::local_matrix_device_type::values_type;
+  const bool first = !product_;
+  if (first) {
+    product_ = std::make_shared<ProductPattern>();
+    product_->At = Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node>(A_).createTranspose();
+    product_->toAtColumns = rcp(new Import(A_->getRangeMap(), product_->At->getColMap()));
+    product_->AtDA = rcp(new CrsMatrix(product_->At->getRowMap(), 0));
+  }
+  ProductPattern& pp = *product_;
+  // A^T D: A^T's values scaled by the weight of their column.
+  Vector weights(pp.At->getColMap());
+  weights.doImport(D, *pp.toAtColumns, Tpetra::INSERT);
+  const auto at = pp.At->getLocalMatrixHost();
+  Values scaled(Kokkos::view_alloc(Kokkos::WithoutInitializing, "A^T D values"), at.values.extent(0));
+  const auto w = weights.getData();
+  for (std::size_t e = 0; e < scaled.extent(0); ++e) scaled(e) = at.values(e) * w[at.graph.entries(e)];
+  CrsMatrix AtD(pp.At->getCrsGraph(), scaled);
+  AtD.fillComplete(pp.At->getDomainMap(), pp.At->getRangeMap());
+  if (first) {
+    // The pattern of A^T A (the product skips zero weights: none here), then of Q + A^T A.
+    Tpetra::MatrixMatrix::Multiply(*pp.At, false, *A_, false, *pp.AtDA);
+    pp.graph = unionPattern(Q, *pp.AtDA);
+    pp.qPosition = positionsIn(*pp.graph, Q);
+    pp.productPosition = positionsIn(*pp.graph, *pp.AtDA);
+  }
+  pp.AtDA->resumeFill();  // a filled result: the product reuses its pattern
+  Tpetra::MatrixMatrix::Multiply(AtD, false, *A_, false, *pp.AtDA);
+  Values values("H values", pp.graph->getNodeNumEntries());
+  const auto q = Q.getLocalMatrixHost().values;
+  const auto product = pp.AtDA->getLocalMatrixHost().values;
+  for (std::size_t e = 0; e < pp.qPosition.size(); ++e) values(pp.qPosition[e]) += q(e);
+  for (std::size_t e = 0; e < pp.productPosition.size(); ++e) values(pp.productPosition[e]) += product(e);
+  auto H = rcp(new CrsMatrix(pp.graph, values));
+  H->fillComplete(Q.getDomainMap(), Q.getRangeMap());
+  return H;
 }
 
 RCP<BarrierHessianOperator> BarrierHessianOperator::onContactColumns() const {

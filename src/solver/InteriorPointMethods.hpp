@@ -24,14 +24,19 @@ double maxStepToBoundary(const Vector& x, const Vector& dx);
 double objective(const ContactQP& qp, const Vector& v, const Vector& Qv);
 
 // Scales of the problem from one rough unconstrained solve Q v_hat = b, used to build
-// starting points: a displacement scale and an energy scale, both positive.
+// starting points: a displacement scale and an energy scale, both positive. A body that
+// only its contact holds (Q singular) is solved with every constraint held by a spring.
 struct ProblemScales {
   double displacement = 1.0;
   double energy = 1.0;
   int krylovIterations = 0;
 };
-// `newton` must have its weights set to zero (H = Q).
+// `newton` must have its weights set to zero (H = Q); they are zero again on return.
 ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0);
+
+// True if Q maps one of the rigid body modes (qp.nullspace; none given: false) to zero
+// (to round-off): no Dirichlet condition holds the body in that direction. Collective.
+bool hasRigidBodyMotion(const ContactQP& qp);
 
 // Adds the end-of-solve data (objective, multipliers, KKT measures, active set) to `result`.
 void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, const Vector& slack,

@@ -169,12 +169,30 @@ RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0) {
   return v;
 }
 
+bool hasRigidBodyMotion(const ContactQP& qp) {
+  if (qp.nullspace.is_null()) return false;
+  MultiVector Qr(qp.Q->getRangeMap(), qp.nullspace->getNumVectors());
+  qp.Q->apply(*qp.nullspace, Qr);
+  std::vector<double> modeNorms(qp.nullspace->getNumVectors()), residualNorms(modeNorms.size());
+  qp.nullspace->normInf(modeNorms);
+  Qr.normInf(residualNorms);
+  const double scale = qp.Qmatrix() ? qp.Qmatrix()->getFrobeniusNorm() : 1.0;
+  for (std::size_t k = 0; k < modeNorms.size(); ++k)
+    if (residualNorms[k] <= 1e-12 * scale * modeNorms[k]) return true;
+  return false;
+}
+
 ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0) {
   // r = b - Q v0; Q w = r roughly; v_hat = v0 + w.
   Vector r(*qp.b, Teuchos::Copy), w(qp.Q->getDomainMap());
   qp.Q->apply(v0, r, Teuchos::NO_TRANS, -1.0, 1.0);
   ProblemScales scales;
+  // Q is singular when only the contact holds the body: then estimate with every constraint
+  // held by a spring of its own stiffness q_i.
+  const bool springs = qp.A->getGlobalNumRows() > 0 && qp.Qmatrix() && hasRigidBodyMotion(qp);
+  if (springs) newton.setWeights(*constraintStiffness(*qp.Qmatrix(), *qp.A));
   scales.krylovIterations = newton.solve(r, w, 1e-2 * r.norm2()).iterations;
+  if (springs) newton.setWeights(Vector(qp.A->getRangeMap()));
   w.update(1.0, v0, 1.0);
   Vector c(qp.A->getRangeMap());
   qp.A->apply(w, c);

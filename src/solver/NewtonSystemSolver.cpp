@@ -14,9 +14,7 @@
 #include "signorini/SubspaceCorrectedPreconditioner.hpp"
 
 namespace signorini {
-namespace {
 
-// q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i.
 RCP<Vector> constraintStiffness(const CrsMatrix& Q, const CrsMatrix& A) {
   Vector diagonal(Q.getRowMap());
   Q.getLocalDiagCopy(diagonal);
@@ -33,8 +31,6 @@ RCP<Vector> constraintStiffness(const CrsMatrix& Q, const CrsMatrix& A) {
   }
   return q;
 }
-
-}  // namespace
 
 Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   Teuchos::ParameterList p;

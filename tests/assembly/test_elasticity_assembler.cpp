@@ -2,7 +2,9 @@
 // with a one-rank assembly, rigid body modes, patch test and convergence orders.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
@@ -200,6 +202,52 @@ TEST(ElasticityAssembler, ContactRowsAreMinusTheObstacleDirection) {
   rowSums.update(-1.0, minusOne, 1.0);
   EXPECT_EQ(rowSums.normInf(), 0.0);
   EXPECT_EQ(p.qp.d->normInf(), 0.0);
+}
+
+// Weighted gaps: row j is the integral of phi_j (-n_o . u) over the contact face, phi_j the
+// hat function of contact vertex j, and d_j the integral of phi_j g. On the unit face of a
+// box, for u = -n_o f with f linear (interpolated exactly by every degree), the rows sum to
+// the integral of f, and for f = 1 each row is positive (its weight).
+TEST(ElasticityAssembler, WeightedGapRowsIntegrateAgainstTheVertexHats) {
+  for (int dim : {2, 3})
+    for (int degree : {1, 2, 3}) {
+      const std::string what = "dim " + std::to_string(dim) + " P" + std::to_string(degree);
+      const int cells = dim == 2 ? 5 : 3;
+      Teuchos::ParameterList problem = signorini::testing::boxProblem(dim, cells, degree);
+      problem.sublist("Contact").set("boundary", dim == 2 ? "ymin" : "zmin");
+      problem.sublist("Contact").set("gap: value", 0.25);
+      problem.sublist("Contact").set("formulation", "weighted gap");
+      AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+      const ContactQP& qp = p.qp;
+      EXPECT_EQ(qp.A->getGlobalNumRows(), static_cast<std::size_t>(std::pow(cells + 1, dim - 1))) << what;
+
+      // u = -n_o f: f = 1, then f = 1 + x (+ 2y), from the node coordinates.
+      const int axis = dim - 1;  // n_o = e_axis
+      Vector u(qp.A->getDomainMap()), rows(qp.A->getRangeMap());
+      auto x = qp.coordinates;
+      const auto setField = [&](bool linear) {
+        auto data = u.getDataNonConst();
+        for (std::size_t node = 0; node < x->getLocalLength(); ++node) {
+          double f = 1.0;
+          if (linear) f += x->getData(0)[node] + (dim == 3 ? 2.0 * x->getData(1)[node] : 0.0);
+          for (int c = 0; c < dim; ++c) data[dim * node + c] = c == axis ? -f : 0.0;
+        }
+      };
+      setField(false);
+      qp.A->apply(u, rows);
+      double localSmallest = std::numeric_limits<double>::infinity(), smallest = 0;
+      for (double w : rows.getData()) localSmallest = std::min(localSmallest, w);
+      Teuchos::reduceAll(*qp.A->getComm(), Teuchos::REDUCE_MIN, 1, &localSmallest, &smallest);
+      EXPECT_GT(smallest, 0.0) << what;  // every constraint has a positive weight
+      EXPECT_NEAR(rows.meanValue() * rows.getGlobalLength(), 1.0, 1e-12) << what;  // the face's measure
+      Vector d(rows, Teuchos::Copy);  // d = 0.25 * the weights for a constant gap
+      d.update(1.0, *qp.d, -0.25);
+      EXPECT_LT(d.normInf(), 1e-14) << what;
+
+      setField(true);
+      qp.A->apply(u, rows);
+      EXPECT_NEAR(rows.meanValue() * rows.getGlobalLength(), dim == 2 ? 1.5 : 2.5, 1e-12) << what;
+    }
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/BarrierHessianOperator.hpp"
@@ -23,12 +24,16 @@ namespace {
 using namespace signorini;
 using namespace signorini::testing;
 
-// 1 on the DOFs that appear in A, 0 elsewhere.
+// 1 on the DOFs that appear in A, 0 elsewhere: the columns of A's nonzero entries (a
+// weighted-gap column may sum to zero).
 Vector contactIndicator(const ContactQP& qp) {
-  Vector ones(qp.A->getRangeMap()), indicator(qp.A->getDomainMap());
-  ones.putScalar(1.0);
-  // |A|^T 1 is nonzero exactly on the columns of A (the family's A has entries -1).
-  qp.A->apply(ones, indicator, Teuchos::TRANS);
+  Vector onColumns(qp.A->getColMap()), indicator(qp.A->getDomainMap());
+  const auto a = qp.A->getLocalMatrixHost();
+  auto c = onColumns.getDataNonConst();
+  for (std::size_t e = 0; e < a.values.extent(0); ++e)
+    if (a.values(e) != 0.0) c[a.graph.entries(e)] = 1.0;
+  indicator.doExport(onColumns, Tpetra::Export<LocalOrdinal, GlobalOrdinal, Node>(qp.A->getColMap(), qp.A->getDomainMap()),
+                     Tpetra::ADD);
   auto d = indicator.getDataNonConst();
   for (long i = 0; i < d.size(); ++i) d[i] = d[i] != 0.0 ? 1.0 : 0.0;
   return indicator;
@@ -40,8 +45,21 @@ struct WeightedProblem {
   RCP<ContactSubspaceSolver> S;
 };
 
-WeightedProblem weightedProblem(const char* name) {
-  WeightedProblem s{buildProblem(shippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm()), {}, {}};
+// Problem `name` of the family, with its nodal constraints or with weighted gaps, whose
+// rows couple the DOFs around a contact vertex.
+struct Case {
+  const char* name;
+  const char* formulation;
+};
+const Case kCases[] = {{"M", "nodal"}, {"B", "nodal"}, {"H", "nodal"},
+                       {"B", "weighted gap"}, {"H", "weighted gap"}, {"C", "weighted gap"}};
+
+std::string describe(const Case& c) { return std::string(c.name) + " " + c.formulation; }
+
+WeightedProblem weightedProblem(const Case& c) {
+  Teuchos::ParameterList problem = shippedProblem(std::string("paper/") + c.name);
+  problem.sublist("Contact").set("formulation", c.formulation);
+  WeightedProblem s{buildProblem(problem, Tpetra::getDefaultComm()), {}, {}};
   const ContactQP& qp = s.problem.qp;
   s.H = rcp(new BarrierHessianOperator(qp.Q, qp.A));
   s.S = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A));
@@ -54,11 +72,15 @@ WeightedProblem weightedProblem(const char* name) {
 
 // y = S r solves the subspace equations P^T H y = P^T r exactly and vanishes off the subspace.
 TEST(ContactSubspaceSolver, SolvesTheSubspaceEquations) {
-  for (const char* name : {"M", "B", "H"}) {
-    WeightedProblem s = weightedProblem(name);
+  for (const Case& c : kCases) {
+    WeightedProblem s = weightedProblem(c);
+    const std::string name = describe(c);
     const ContactQP& qp = s.problem.qp;
-    EXPECT_EQ(s.S->dimension(), static_cast<long long>(qp.A->getGlobalNumRows())) << name;
     const Vector indicator = contactIndicator(qp);
+    EXPECT_EQ(s.S->dimension(), std::llround(indicator.norm1())) << name;
+    if (std::string(c.formulation) == "nodal") {
+      EXPECT_EQ(s.S->dimension(), static_cast<long long>(qp.A->getGlobalNumRows())) << name;
+    }
     Vector r(qp.Q->getDomainMap()), y(qp.Q->getDomainMap()), Hy(qp.Q->getDomainMap()), off(qp.Q->getDomainMap());
     r.randomize();
     s.S->apply(r, y);
@@ -79,8 +101,9 @@ TEST(ContactSubspaceSolver, SolvesTheSubspaceEquations) {
 // the subspace (for x on the contact DOFs, M^-1 H x = x) and unchanged when its residuals
 // come from H P P^T.
 TEST(SubspaceCorrectedPreconditioner, SymmetricPositiveDefiniteAndExactOnTheSubspace) {
-  for (const char* name : {"G", "B"}) {
-    WeightedProblem s = weightedProblem(name);
+  for (const Case& c : {Case{"G", "nodal"}, Case{"B", "nodal"}, Case{"H", "weighted gap"}}) {
+    WeightedProblem s = weightedProblem(c);
+    const std::string name = describe(c);
     const ContactQP& qp = s.problem.qp;
     MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nullspace, qp.coordinates);
     amg.compute(s.H->assemble());
@@ -115,8 +138,9 @@ TEST(SubspaceCorrectedPreconditioner, SymmetricPositiveDefiniteAndExactOnTheSubs
 
 // H P P^T applies H to vectors on the contact DOFs, and its transpose gives H's contact rows.
 TEST(BarrierHessianOperator, ContactColumnsGiveHOnTheSubspace) {
-  for (const char* name : {"M", "B", "H"}) {
-    WeightedProblem s = weightedProblem(name);
+  for (const Case& c : kCases) {
+    WeightedProblem s = weightedProblem(c);
+    const std::string name = describe(c);
     const ContactQP& qp = s.problem.qp;
     const RCP<BarrierHessianOperator> HP = s.H->onContactColumns();
     const Vector indicator = contactIndicator(qp);

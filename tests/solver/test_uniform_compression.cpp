@@ -1,7 +1,8 @@
 // An analytic contact solution: a block between frictionless side walls, pressed by a
 // uniform traction p = 1 on its top onto a rigid plane at gap 0. The stress is uniform
 // (sigma_dd = -1), the whole bottom is in contact, the contact pressure is 1 everywhere,
-// and every element degree reproduces it exactly: so does the consistent pressure recovery.
+// and every element degree reproduces it exactly: so does the consistent pressure recovery
+// of nodal constraints, and so do the multipliers of weighted gaps.
 #include <gtest/gtest.h>
 
 #include <Tpetra_Core.hpp>
@@ -20,8 +21,12 @@ using namespace signorini;
 
 TEST(UniformCompression, ContactPressureIsTheAppliedTraction) {
   const char* axes = "xyz";
+  for (const char* formulation : {"nodal", "weighted gap"})
   for (int dim : {2, 3})
     for (int degree : {1, 2, 3}) {
+      const std::string what = std::string(formulation) + " dim " + std::to_string(dim) + " P" + std::to_string(degree);
+      // Only nodal constraints at the vertices of P2 triangles are degenerate (below).
+      const bool degenerate = std::string(formulation) == "nodal" && dim == 3 && degree == 2;
       Teuchos::ParameterList problem = signorini::testing::boxProblem(dim, dim == 2 ? 4 : 2, degree);
       const char* sides[2][2] = {{"xmin", "xmax"}, {"ymin", "ymax"}};
       for (int c = 0; c < dim - 1; ++c)
@@ -29,12 +34,13 @@ TEST(UniformCompression, ContactPressureIsTheAppliedTraction) {
           problem.sublist("Dirichlet").sublist(side).set(std::string("displacement: ") + axes[c], "0");
       problem.sublist("Traction").sublist(dim == 2 ? "ymax" : "zmax").set(std::string("traction: ") + axes[dim - 1], "-1");
       problem.sublist("Contact").set("boundary", dim == 2 ? "ymin" : "zmin");
+      problem.sublist("Contact").set("formulation", formulation);
       AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
 
       Teuchos::ParameterList params;
       params.set("kkt: tolerance", 1e-11);
       SolveResult r = InteriorPointSolver(params).solve(p.qp);
-      ASSERT_TRUE(r.converged()) << "dim " << dim << " P" << degree << ": " << r.message;
+      ASSERT_TRUE(r.converged()) << what << ": " << r.message;
       // The whole bottom touches the plane. P2 vertices of triangles carry no consistent
       // nodal force: their constraints are degenerate (lambda = 0 and gap = 0 at the
       // solution), where an interior point method only drives the gap to ~sqrt(mu), so their
@@ -42,22 +48,25 @@ TEST(UniformCompression, ContactPressureIsTheAppliedTraction) {
       Vector gap(p.qp.A->getRangeMap());
       p.qp.A->apply(*r.v, gap);
       gap.update(1.0, *p.qp.d, -1.0);
-      const double gapTolerance = dim == 3 && degree == 2 ? 1e-5 : 1e-9;
-      EXPECT_LT(gap.normInf(), gapTolerance * r.v->normInf()) << "dim " << dim << " P" << degree;
+      const double gapTolerance = degenerate ? 1e-5 : 1e-9;
+      EXPECT_LT(gap.normInf(), gapTolerance * r.v->normInf()) << what;
 
       const RCP<Vector> w = contactNodeWeights(*p.space, p.definition, p.qp.A->getRangeMap());
-      EXPECT_NEAR(w->norm1(), 1.0, 1e-12);  // the bottom face has measure 1
-      EXPECT_NEAR(-r.lambda->meanValue() * r.lambda->getGlobalLength(), 1.0, 1e-8);  // total force
-      if (degree == 1) {
-        EXPECT_EQ(r.activeConstraints, static_cast<long long>(p.qp.d->getGlobalLength())) << "dim " << dim;
+      EXPECT_NEAR(w->norm1(), 1.0, 1e-12) << what;  // the bottom face has measure 1
+      if (std::string(formulation) == "nodal") {  // total force: the multipliers are nodal forces
+        EXPECT_NEAR(-r.lambda->meanValue() * r.lambda->getGlobalLength(), 1.0, 1e-8) << what;
+      }
+      if (degree == 1 || std::string(formulation) == "weighted gap") {
+        EXPECT_EQ(r.activeConstraints, static_cast<long long>(p.qp.d->getGlobalLength())) << what;
       }
 
       // M p = -lambda on the whole face (every node loaded) gives p = 1 at every node, for
-      // every degree: the nodal forces of a uniform pressure are M 1. The degenerate P2
+      // every degree: the nodal forces of a uniform pressure are M 1 (with weighted gaps,
+      // p = -lambda). The degenerate P2
       // vertex constraints keep multipliers of ~sqrt(mu) where the exact ones are 0, so the
       // recovered pressure is as accurate as those (the recovery itself is exact to round-off:
       // tests/assembly/test_contact_pressure.cpp).
-      const double pressureTolerance = dim == 3 && degree == 2 ? 1e-4 : 1e-8;
+      const double pressureTolerance = degenerate ? 1e-4 : 1e-8;
       const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
       Vector everyNode(p.qp.A->getRangeMap());
       everyNode.putScalar(1.0);
@@ -65,21 +74,21 @@ TEST(UniformCompression, ContactPressureIsTheAppliedTraction) {
       Vector one(pressure->getMap());
       one.putScalar(1.0);
       pressure->update(-1.0, one, 1.0);
-      EXPECT_LT(pressure->normInf(), pressureTolerance) << "dim " << dim << " P" << degree;
+      EXPECT_LT(pressure->normInf(), pressureTolerance) << what;
       pressure->update(1.0, one, 1.0);
       // Restricted to the loaded facets, as runs do: the same here, as every facet is loaded.
       const RCP<Vector> restricted = recovery.pressure(*r.lambda, *activeIndicator(p.qp, *r.v, *r.lambda));
       restricted->update(-1.0, one, 1.0);
-      EXPECT_LT(restricted->normInf(), pressureTolerance) << "dim " << dim << " P" << degree;
+      EXPECT_LT(restricted->normInf(), pressureTolerance) << what;
       const ContactStatistics stats = contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda,
                                                         *activeIndicator(p.qp, *r.v, *r.lambda), p.definition.obstacleDirection);
-      EXPECT_NEAR(stats.normalForce, 1.0, 1e-8) << "dim " << dim << " P" << degree;
-      EXPECT_NEAR(stats.force[0], 0.0, 1e-12);
+      EXPECT_NEAR(stats.normalForce, 1.0, 1e-8) << what;
+      EXPECT_NEAR(stats.force[0], 0.0, 1e-12) << what;
       // The degenerate P2 vertex constraints are not all counted active (lambda ~ slack ~ sqrt(mu)).
-      if (!(dim == 3 && degree == 2)) {
-        EXPECT_NEAR(stats.area, 1.0, 1e-12) << "dim " << dim << " P" << degree;
+      if (!degenerate) {
+        EXPECT_NEAR(stats.area, 1.0, 1e-12) << what;
       }
-      EXPECT_NEAR(stats.peakPressure, 1.0, pressureTolerance) << "dim " << dim << " P" << degree;
+      EXPECT_NEAR(stats.peakPressure, 1.0, pressureTolerance) << what;
     }
 }
 
