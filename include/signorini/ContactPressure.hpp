@@ -10,18 +10,20 @@
 // degree (unlike a division by lumped weights, which fails on P2 triangles, whose vertex
 // functions integrate to zero).
 // With weighted gaps (ContactFormulation::weightedGap) the multipliers already are the
-// coefficients of the pressure in the piecewise-linear basis of the contact vertices:
-// p = -lambda, and M is that basis' mass matrix.
+// pressure's coefficients, p = -sum lambda_a psi_a in the multiplier basis psi
+// (ContactMultiplierBasis: phi itself but for P2 tetrahedra), and need no solve.
 #include <array>
+#include <memory>
 #include <vector>
 
 #include "signorini/ContactStatistics.hpp"
 #include "signorini/DistributedSpace.hpp"
-#include "signorini/LagrangeBasis.hpp"
 #include "signorini/ProblemDefinition.hpp"
 #include "signorini/TpetraTypes.hpp"
 
 namespace signorini {
+
+class ContactMultiplierBasis;
 
 // Pressure values at quadrature points of the contact boundary (exact for degree 2k + 2),
 // this rank's facets: points (dim coordinates each), weights (true measure), pressures.
@@ -52,8 +54,7 @@ class ContactPressure {
   double activeMeasure(const Vector& active) const;
 
   // A field on the constraints (pressure, active indicator) at the overlap nodes of the
-  // space, in overlapSpaceNodes() order: its value at constraint nodes, its linear
-  // interpolant at the other nodes of Gamma_c (weighted gaps), 0 off Gamma_c. Collective.
+  // space, in overlapSpaceNodes() order, 0 off Gamma_c. Collective.
   std::vector<double> overlapNodeValues(const Vector& values) const;
 
   // p_h at the quadrature points of this rank's contact facets. Collective.
@@ -63,6 +64,8 @@ class ContactPressure {
   int dim() const { return space_.dim(); }
 
  private:
+  // The nodal values of sum_a c_a psi_a (weighted gaps), on the constraint map.
+  RCP<Vector> nodalValues(const Vector& coefficients) const;
   // Pressure values at this rank's facet nodes: overlap constraint values, by local index.
   std::vector<double> overlapValues(const Vector& pressure) const;
   // 1 on the owned constraints of facets with an active node, else 0.
@@ -71,7 +74,7 @@ class ContactPressure {
   void forEachQuadraturePoint(const Vector& pressure, Visit&& visit) const;
 
   const DistributedSpace& space_;
-  LagrangeBasis basis_;  // of the multipliers on a facet (see contactMultiplierBasis)
+  std::shared_ptr<const ContactMultiplierBasis> multipliers_;
   bool weightedGap_;
   RCP<const Map> constraintMap_, overlapMap_;
   RCP<CrsMatrix> mass_, scaledMass_;
@@ -79,7 +82,6 @@ class ContactPressure {
   RCP<Vector> lumpedWeights_;
   std::vector<std::pair<long long, int>> facets_;  // (cell, local facet) of this rank's contact facets
   std::vector<long long> overlapNodeConstraint_;  // per overlap space node, -1 for none
-  std::vector<long long> contactNodes_;           // space nodes of Gamma_c, sorted
   std::vector<int> overlapIndex_;  // local index in overlapMap_ of each space node, -1 off Gamma_c
 };
 

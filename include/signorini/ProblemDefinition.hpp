@@ -19,12 +19,13 @@ struct BoundaryField {
   std::vector<std::optional<Expression>> components;  // dim entries
 };
 
-// How the non-penetration condition -n_o . u <= g is imposed on the contact boundary.
-//  nodal:        at every node of Gamma_c (the paper's constraints; P_k nodes, P_k multipliers);
-//  weightedGap:  integral of phi_j (g + n_o . u) >= 0 for the piecewise-linear hat phi_j of
-//                every vertex j of Gamma_c (a P_k-P1 mortar discretisation): every
-//                constraint has the positive weight integral of phi_j, and the multipliers
-//                are the nodal values of the contact pressure.
+// How the non-penetration condition -n_o . u <= g is imposed on the contact boundary, one
+// constraint per node of Gamma_c in both cases.
+//  nodal:        at the node (the paper's constraints);
+//  weightedGap:  integral of psi_j (g + n_o . u) >= 0 with the multiplier function psi_j of
+//                node j (ContactMultiplierBasis): every constraint has the positive weight
+//                integral of psi_j, also at the vertices of P2 triangles, whose nodal
+//                constraints carry no force; the multipliers are the pressure's coefficients.
 enum class ContactFormulation { nodal, weightedGap };
 
 struct ProblemDefinition {

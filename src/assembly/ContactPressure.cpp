@@ -20,6 +20,8 @@
 #include "signorini/KrylovSolver.hpp"
 #include "signorini/LagrangeBasis.hpp"
 
+#include "ContactMultiplierBasis.hpp"
+
 namespace signorini {
 namespace {
 
@@ -60,7 +62,7 @@ class RestrictedOperator : public Operator {
 ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefinition& problem,
                                  const RCP<const Map>& constraintMap)
     : space_(ds),
-      basis_(contactMultiplierBasis(ds.space(), problem)),
+      multipliers_(std::make_shared<ContactMultiplierBasis>(ds.space().basis(), problem.contactFormulation)),
       weightedGap_(problem.contactFormulation == ContactFormulation::weightedGap),
       constraintMap_(constraintMap) {
   const LagrangeSpace& space = ds.space();
@@ -70,7 +72,6 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   // Constraint of each facet node; the overlap rows are the owned constraints, then the
   // ghosts' in ascending order (FECrsGraph wants the owned map as a prefix).
   overlapNodeConstraint_ = overlapNodeConstraints(ds, problem);
-  if (!problem.contactBoundary.empty()) contactNodes_ = ds.boundaryNodes(ds.mesh().tag(problem.contactBoundary));
   const auto& overlapNodes = ds.overlapSpaceNodes();
   std::vector<long long> constraintOfNode(space.numNodes(), -1);
   for (std::size_t i = 0; i < overlapNodes.size(); ++i) constraintOfNode[overlapNodes[i]] = overlapNodeConstraint_[i];
@@ -78,7 +79,7 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   const std::size_t numOwned = owned.size();
   std::vector<GlobalOrdinal> rows(owned.begin(), owned.end()), ghosts;
   for (const auto& [cell, facet] : facets_)
-    for (int a : basis_.facetNodes(facet)) {
+    for (int a : space.basis().facetNodes(facet)) {
       const long long k = constraintOfNode[space.cellNodes(cell)[a]];
       if (k < 0) throw Error("contact pressure: a contact facet node has no constraint");
       if (!constraintMap->isNodeGlobalElement(k)) ghosts.push_back(k);
@@ -96,7 +97,7 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   // Graph: every pair of nodes of a contact facet.
   std::vector<std::vector<GlobalOrdinal>> columns(rows.size());
   for (const auto& [cell, facet] : facets_) {
-    const auto nodes = basis_.facetNodes(facet);
+    const auto nodes = space.basis().facetNodes(facet);
     for (int a : nodes)
       for (int b : nodes)
         columns[overlapIndex_[space.cellNodes(cell)[a]]].push_back(rows[overlapIndex_[space.cellNodes(cell)[b]]]);
@@ -123,11 +124,11 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   mass->beginAssembly();
   std::vector<double> coords((dim + 1) * dim);
   FacetQuadrature rule;
-  const int n = basis_.size();
+  const int n = space.nodesPerCell();
   for (const auto& [cell, facet] : facets_) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
-    facetQuadrature(basis_, coords.data(), facet, 2 * basis_.degree(), rule);
-    const auto nodes = basis_.facetNodes(facet);
+    facetQuadrature(space.basis(), coords.data(), facet, 2 * space.degree(), rule);
+    const auto nodes = space.basis().facetNodes(facet);
     for (int a : nodes) {
       const GlobalOrdinal row = rows[overlapIndex_[space.cellNodes(cell)[a]]];
       for (int b : nodes) {
@@ -160,12 +161,34 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   scaledMass_->rightScale(*scaling_);
 }
 
+RCP<Vector> ContactPressure::nodalValues(const Vector& coefficients) const {
+  auto values = rcp(new Vector(constraintMap_));
+  if (!multipliers_->transformed()) {
+    values->assign(coefficients);
+    return values;
+  }
+  // The value at node b of sum_a c_a psi_a is sum_a c_a T_ab, the same from every facet of b.
+  const LagrangeSpace& space = space_.space();
+  const std::vector<double> c = overlapValues(coefficients);
+  Vector here(overlapMap_);
+  for (const auto& [cell, facet] : facets_) {
+    const auto nodes = space.basis().facetNodes(facet);
+    for (int b : nodes) {
+      double value = 0;
+      for (int a : nodes) value += c[overlapIndex_[space.cellNodes(cell)[a]]] * multipliers_->coefficient(facet, a, b);
+      here.replaceLocalValue(overlapIndex_[space.cellNodes(cell)[b]], value);
+    }
+  }
+  values->doExport(here, Export(overlapMap_, constraintMap_), Tpetra::REPLACE);
+  return values;
+}
+
 RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
   const LagrangeSpace& space = space_.space();
   const std::vector<double> activeHere = overlapValues(active);
   Vector loadedHere(overlapMap_);
   for (const auto& [cell, facet] : facets_) {
-    const auto nodes = basis_.facetNodes(facet);
+    const auto nodes = space.basis().facetNodes(facet);
     bool loaded = false;
     for (int a : nodes) loaded = loaded || activeHere[overlapIndex_[space.cellNodes(cell)[a]]] != 0.0;
     if (loaded)
@@ -180,9 +203,9 @@ RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
 
 RCP<Vector> ContactPressure::pressure(const Vector& lambda, const Vector& active) const {
   const RCP<const Vector> loaded = loadedNodes(active);
-  if (weightedGap_) {  // the multipliers are the pressure's coefficients
-    auto p = rcp(new Vector(constraintMap_));
-    p->elementWiseMultiply(-1.0, *loaded, lambda, 0.0);
+  if (weightedGap_) {  // -lambda: the pressure's coefficients in the basis psi
+    auto p = nodalValues(lambda);
+    p->elementWiseMultiply(-1.0, *loaded, *p, 0.0);
     return p;
   }
   auto rhs = rcp(new Vector(constraintMap_));
@@ -219,14 +242,14 @@ std::vector<double> ContactPressure::overlapValues(const Vector& pressure) const
 template <class Visit>
 void ContactPressure::forEachQuadraturePoint(const Vector& pressure, Visit&& visit) const {
   const LagrangeSpace& space = space_.space();
-  const int dim = space_.dim(), n = basis_.size();
+  const int dim = space_.dim(), n = space.nodesPerCell();
   const std::vector<double> values = overlapValues(pressure);
   std::vector<double> coords((dim + 1) * dim);
   FacetQuadrature rule;
   for (const auto& [cell, facet] : facets_) {
     space_.mesh().cellVertexCoordinates(cell, coords.data());
-    facetQuadrature(basis_, coords.data(), facet, 2 * space.degree() + 2, rule);
-    const auto nodes = basis_.facetNodes(facet);
+    facetQuadrature(space.basis(), coords.data(), facet, 2 * space.degree() + 2, rule);
+    const auto nodes = space.basis().facetNodes(facet);
     for (int q = 0; q < rule.size(); ++q) {
       double p = 0;
       for (int a : nodes) p += rule.phi[q * n + a] * values[overlapIndex_[space.cellNodes(cell)[a]]];
@@ -246,36 +269,9 @@ std::vector<double> ContactPressure::overlapNodeValues(const Vector& values) con
   here.doImport(values, Import(constraintMap_, wantedMap), Tpetra::INSERT);
   auto data = here.getData();
   std::vector<double> result(overlapNodes.size(), 0.0);
-  std::vector<int> localIndex(space_.space().numNodes(), -1);
   std::size_t next = 0;
-  for (std::size_t i = 0; i < overlapNodes.size(); ++i) {
-    localIndex[overlapNodes[i]] = static_cast<int>(i);
+  for (std::size_t i = 0; i < overlapNodes.size(); ++i)
     if (overlapNodeConstraint_[i] >= 0) result[i] = data[next++];
-  }
-  if (!weightedGap_) return result;
-  // The other nodes of Gamma_c lie on a contact edge or facet of every cell that holds
-  // them, whose vertices all carry constraints: interpolate linearly from those.
-  const LagrangeSpace& space = space_.space();
-  const auto& lattice = space.basis().latticeIndices();
-  std::vector<char> done(overlapNodes.size(), 0);
-  for (long long node : contactNodes_) {
-    const int i = localIndex[node];
-    if (i >= 0 && overlapNodeConstraint_[i] >= 0) done[i] = 1;
-  }
-  std::vector<char> onContact(space.numNodes(), 0);
-  for (long long node : contactNodes_) onContact[node] = 1;
-  for (long long cell = 0; cell < space_.mesh().numCells(); ++cell) {
-    const long long* nodes = space.cellNodes(cell);
-    for (int b = 0; b < space.nodesPerCell(); ++b) {
-      const int i = localIndex[nodes[b]];
-      if (!onContact[nodes[b]] || done[i]) continue;
-      double value = 0;
-      for (int v = 0; v <= space.dim(); ++v)
-        if (lattice[b][v] > 0) value += lattice[b][v] * result[localIndex[nodes[v]]];
-      result[i] = value / space.degree();
-      done[i] = 1;
-    }
-  }
   return result;
 }
 

@@ -18,6 +18,8 @@
 #include "signorini/Error.hpp"
 #include "signorini/RigidBodyModes.hpp"
 
+#include "ContactMultiplierBasis.hpp"
+
 namespace signorini {
 namespace {
 
@@ -147,14 +149,14 @@ ContactConstraints nodalConstraints(const DistributedSpace& ds, const ProblemDef
   return {A, d};
 }
 
-// Row j, for the hat function phi_j of contact vertex j: the integral over Gamma_c of
-// phi_j (-n_o . u) <= the integral of phi_j g. Each rank integrates its own contact facets
-// (every global facet is on one rank) into the rows of their vertices, owned or not, and
-// the sums go to the owners.
+// Row j, for the multiplier function psi_j of contact node j: the integral over Gamma_c of
+// psi_j (-n_o . u) <= the integral of psi_j g. Each rank integrates its own contact facets
+// (every global facet is on one rank) into the rows of their nodes, owned or not, and the
+// sums go to the owners.
 ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
                                           const RCP<const Map>& constraintMap) {
   const LagrangeSpace& space = ds.space();
-  const LagrangeBasis hat = contactMultiplierBasis(space, problem);
+  const ContactMultiplierBasis psi(space.basis(), problem.contactFormulation);
   const int dim = ds.dim(), npc = space.nodesPerCell();
   const auto facets = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
 
@@ -173,9 +175,9 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
   std::map<GlobalOrdinal, std::vector<GlobalOrdinal>> columns;
   for (const auto& [cell, facet] : facets) {
     const long long* nodes = space.cellNodes(cell);
-    for (int a : hat.facetNodes(facet)) {
+    for (int a : space.basis().facetNodes(facet)) {
       const long long row = constraintOf[nodes[a]];
-      if (row < 0) throw Error("weighted gap: a contact vertex has no constraint");
+      if (row < 0) throw Error("weighted gap: a contact node has no constraint");
       if (!constraintMap->isNodeGlobalElement(row)) ghosts.push_back(row);
       auto& cols = columns[row];
       for (int b : space.basis().facetNodes(facet))
@@ -204,24 +206,26 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
   auto A = rcp(new FEMatrix(graph));
   Vector dOverlap(overlapRows);
   std::vector<double> coords((dim + 1) * dim);
-  FacetQuadrature rule, hatRule;
-  const int degree = std::max(space.degree() + 1, problem.loadQuadratureDegree);
+  FacetQuadrature rule;
+  std::vector<double> psiValues;
+  const int degree = std::max(2 * space.degree(), problem.loadQuadratureDegree);
   A->beginAssembly();
   for (const auto& [cell, facet] : facets) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
     facetQuadrature(space.basis(), coords.data(), facet, degree, rule);
-    facetQuadrature(hat, coords.data(), facet, degree, hatRule);
     const long long* nodes = space.cellNodes(cell);
-    for (int a : hat.facetNodes(facet)) {
+    const std::vector<int> facetNodes = space.basis().facetNodes(facet);
+    for (int a : facetNodes) {
       const GlobalOrdinal row = constraintOf[nodes[a]];
+      psiValues.resize(rule.size());
+      for (int q = 0; q < rule.size(); ++q) psiValues[q] = psi.value(facet, a, &rule.phi[q * npc]);
       double gap = 0;
       for (int q = 0; q < rule.size(); ++q)
-        gap += rule.weights[q] * hatRule.phi[q * hat.size() + a] * (*problem.gap)(&rule.points[q * dim], dim);
+        gap += rule.weights[q] * psiValues[q] * (*problem.gap)(&rule.points[q * dim], dim);
       dOverlap.sumIntoGlobalValue(row, gap);
-      for (int b : space.basis().facetNodes(facet)) {
-        double weight = 0;  // integral of phi_a N_b
-        for (int q = 0; q < rule.size(); ++q)
-          weight += rule.weights[q] * hatRule.phi[q * hat.size() + a] * rule.phi[q * npc + b];
+      for (int b : facetNodes) {
+        double weight = 0;  // integral of psi_a N_b
+        for (int q = 0; q < rule.size(); ++q) weight += rule.weights[q] * psiValues[q] * rule.phi[q * npc + b];
         for (int c : components) {
           const GlobalOrdinal col = dim * ds.globalNode(nodes[b]) + c;
           const double value = -problem.obstacleDirection[c] * weight;
@@ -238,22 +242,14 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
 
 }  // namespace
 
-LagrangeBasis contactMultiplierBasis(const LagrangeSpace& space, const ProblemDefinition& problem) {
-  return LagrangeBasis(space.dim(), problem.contactFormulation == ContactFormulation::weightedGap ? 1 : space.degree());
-}
-
-// One constraint per constraint node, numbered in the order of the renumbered nodes. Ranks
-// own contiguous node ranges in rank order, so a rank's constraints start after the
-// constraint nodes of the ranks before it.
+// One constraint per contact node, numbered in the order of the renumbered nodes. Ranks own
+// contiguous node ranges in rank order, so a rank's constraints start after the contact
+// nodes of the ranks before it.
 OwnedContactNodes ownedContactNodes(const DistributedSpace& ds, const ProblemDefinition& problem) {
   OwnedContactNodes result;
-  // Vertices come first in the space, with node id == vertex id.
-  const long long lastNode = problem.contactFormulation == ContactFormulation::weightedGap
-                                 ? ds.mesh().numVertices()
-                                 : std::numeric_limits<long long>::max();
   if (!problem.contactBoundary.empty())
     for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contactBoundary)))
-      if (ds.ownsNode(node) && node < lastNode) result.nodes.push_back(node);
+      if (ds.ownsNode(node)) result.nodes.push_back(node);
   std::sort(result.nodes.begin(), result.nodes.end(),
             [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
   const long long count = static_cast<long long>(result.nodes.size());
@@ -280,17 +276,26 @@ std::vector<long long> overlapNodeConstraints(const DistributedSpace& ds, const 
 RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefinition& problem,
                                const RCP<const Map>& constraintMap) {
   const LagrangeSpace& space = ds.space();
-  const LagrangeBasis basis = contactMultiplierBasis(space, problem);
-  const int dim = ds.dim();
+  const int dim = ds.dim(), npc = space.nodesPerCell();
+  const bool weighted = problem.contactFormulation == ContactFormulation::weightedGap;
+  const ContactMultiplierBasis psi(space.basis(), problem.contactFormulation);
   auto weights = rcp(new Vector(constraintMap));
   if (problem.contactBoundary.empty()) return weights;
   Vector overlap(ds.overlapNodeMap()), owned(ds.ownedNodeMap());
   std::vector<double> coords((dim + 1) * dim), w;
+  FacetQuadrature rule;
   for (const auto& [cell, facet] : space.boundaryFacets(ds.mesh().tag(problem.contactBoundary))) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
-    facetLumpedMass(basis, coords.data(), facet, w);
+    if (weighted) {  // the integrals of psi
+      facetQuadrature(space.basis(), coords.data(), facet, space.degree(), rule);
+      w.assign(npc, 0.0);
+      for (int a : space.basis().facetNodes(facet))
+        for (int q = 0; q < rule.size(); ++q) w[a] += rule.weights[q] * psi.value(facet, a, &rule.phi[q * npc]);
+    } else {
+      facetLumpedMass(space.basis(), coords.data(), facet, w);
+    }
     const long long* nodes = space.cellNodes(cell);
-    for (int a = 0; a < basis.size(); ++a)
+    for (int a = 0; a < npc; ++a)
       if (w[a] != 0.0) overlap.sumIntoGlobalValue(ds.globalNode(nodes[a]), w[a]);
   }
   owned.doExport(overlap, Export(ds.overlapNodeMap(), ds.ownedNodeMap()), Tpetra::ADD);

@@ -111,9 +111,9 @@ ParameterList ProblemDefinition::validParameters() {
   contact.set("gap: expression", "0", "Gap as an expression of x, y, z");
   contact.set("formulation", "nodal",
               "\"nodal\": -n.u <= g at every node of the contact boundary (the paper's constraints); "
-              "\"weighted gap\": the integral of phi_j (g + n.u) >= 0 for the linear hat phi_j of every "
-              "vertex of the contact boundary, whose multipliers are the contact pressure's nodal values "
-              "(sound for P2 and P3, where the nodal constraints at the vertices of a facet carry no force)",
+              "\"weighted gap\": the integral of psi_j (g + n.u) >= 0 for every node j, psi_j its shape "
+              "function (P2 triangles: a transformed basis with positive integrals); the multipliers are "
+              "the pressure's coefficients",
               choices({"nodal", "weighted gap"}));
   return p;
 }

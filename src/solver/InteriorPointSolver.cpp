@@ -36,44 +36,24 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
   p.set("kkt: tolerance", 1e-8, "Stop when every relative KKT measure is at most this", range(1e-16, 1.0));
   p.set("maximum iterations", 200, "Main iterations allowed", range(1, 100000));
   p.set("forcing: type", "reduction",
-        "Truncated Newton forcing: \"reduction\" (every Krylov solve reduces the residual of its "
-        "starting vector by eta, or that of zero if the start is worse, and reaches at least the "
-        "adaptive forcing's residual scale times \"forcing: reduction safeguard\": the starts, "
-        "projected on earlier solutions, get closer as the method converges, and the directions "
-        "more accurate with them), \"adaptive\" (the residual allowed follows the barrier "
-        "parameter, never above eta ||g||), \"constant\" (||H dv + g|| <= eta ||g||), "
-        "\"eisenstat-walker\" (choice 2 of Eisenstat and Walker, at most eta), or \"relative\" "
-        "(every Krylov solve reduces its residual to eta ||right-hand side||: the same linear "
-        "problem at every mu, for measuring preconditioners). \"reduction\" against \"adaptive\", "
-        "measured on the family (2 ranks, bench/results/preconditioners-forcing.md): about as many "
-        "CG iterations per Newton system on every member and at every mu, one main iteration fewer "
-        "on most members, the same solve time within 12% on the large ones, more CG iterations on "
-        "the small ones",
+        "Truncated Newton forcing: \"reduction\" (each Krylov solve reduces its starting residual by "
+        "eta, and reaches the adaptive residual scale times forcing: reduction safeguard), \"adaptive\" "
+        "(follows the barrier parameter), \"constant\", \"eisenstat-walker\" or \"relative\"; "
+        "see doc/algorithms.md",
         choices({"reduction", "adaptive", "constant", "eisenstat-walker", "relative"}));
   p.set("forcing: eta", 0.1, "Reduction of each solve's starting residual, constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
   p.set("forcing: safety", 0.3,
-        "Adaptive forcing: fraction of the current residual scale (measured on the family: 0.3 needs "
-        "15-35% fewer Krylov iterations than 0.1 from 2D nx = 200 and 3D nx = 40 on, for one to three more main "
-        "iterations; in 2D, 0.5 needs more main iterations than it saves, in 3D it saves more; "
-        "bench/results/forcing.md). Below 1, so that every step reduces the dual residual: at 1 "
-        "it stagnated on 3D P1 problems",
+        "Adaptive forcing: the residual allowed as a fraction of the current residual scale; below 1 so "
+        "that every step reduces the dual residual",
         range(1e-6, 0.9));
   p.set("forcing: tail safety", 0.01,
-        "Adaptive forcing of the primal-dual method once complementarity and feasibility meet the KKT "
-        "target and only stationarity is left (the active set has settled): used instead of forcing: "
-        "safety, the dual residual falls by about this much per main iteration. The tail's Newton systems "
-        "start close to their solutions (Krylov/initial guess: previous solutions), so two digits per "
-        "step cost about what one did, and the main-iteration count stops following where CG happened "
-        "to stop: with 0.1, paper/E took 8, 9, 9 and 10 main iterations on 1 to 4 ranks, with 0.01 8, 8, "
-        "8 and 9",
+        "Adaptive forcing of the primal-dual method once only stationarity is left (the active set has "
+        "settled): used instead of forcing: safety, the dual residual falls by about this much per main "
+        "iteration",
         range(1e-6, 0.9));
   p.set("forcing: reduction safeguard", 1.0,
         "Forcing \"reduction\": every solve also reaches this times the adaptive forcing's residual "
-        "scale (primal-dual: max(||r_d||, ||b|| mu/mu0)), so that the dual residual follows mu where the "
-        "starting vectors stop improving. Without it, the barrier parameter vanished before the KKT "
-        "target in two tests (no contact correction; degenerate 3D P2 constraints). It binds in the "
-        "middle steps of the large 2D members: CG iterations at 2D nx = 800, 88 without it, 92 with 3, "
-        "103 with 1 (one-off runs, 2 ranks)",
+        "scale, so that the dual residual follows mu where the starting vectors stop improving",
         range(1e-6, 1e6));
   p.set("starting point: complementarity", 1.0,
         "Initial s^T y as a multiple of the energy scale |b^T v_hat| of the unconstrained solution "
@@ -85,10 +65,8 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
         choices({"mehrotra", "fixed"}));
   p.set("primal-dual: mu factor", 0.2, "Fixed centering: factor of mu per iteration", range(1e-6, 0.999));
   p.set("primal-dual: corrector from predictor", true,
-        "Mehrotra: start the corrector's Krylov solve from the predictor's step instead of zero "
-        "(the two right-hand sides differ by the centering and second-order terms only; measured: "
-        "10-25% fewer Krylov iterations on the family, from zero). With Solver/Krylov/initial guess: previous "
-        "solutions > 0, the default, the predictor's step is among the projection's vectors either way");
+        "Mehrotra: start the corrector's Krylov solve from the predictor's step instead of zero (the "
+        "right-hand sides differ by the centering and second-order terms only)");
   p.set("primal-dual: fraction to boundary", 0.995, "Step kept this fraction inside s > 0, y > 0", range(0.5, 0.99999));
   p.set("primal-dual: armijo", 0.01, "Fixed centering: Armijo constant of the merit backtracking", range(1e-8, 0.5));
 

@@ -26,7 +26,7 @@ struct FamilyMember {
   long long n, m;
 };
 
-// shared/problem-set.md
+// doc/benchmark-family.md
 const FamilyMember kFamily[] = {{"A", 50, 5},     {"B", 375, 25},     {"C", 1995, 81},   {"D", 13203, 289},
                                 {"E", 3993, 121}, {"F", 24783, 441},  {"G", 882, 21},    {"H", 3362, 41},
                                 {"I", 7442, 61},  {"J", 20402, 101},  {"K", 5202, 51},   {"L", 27783, 441},
@@ -204,10 +204,11 @@ TEST(ElasticityAssembler, ContactRowsAreMinusTheObstacleDirection) {
   EXPECT_EQ(p.qp.d->normInf(), 0.0);
 }
 
-// Weighted gaps: row j is the integral of phi_j (-n_o . u) over the contact face, phi_j the
-// hat function of contact vertex j, and d_j the integral of phi_j g. On the unit face of a
-// box, for u = -n_o f with f linear (interpolated exactly by every degree), the rows sum to
-// the integral of f, and for f = 1 each row is positive (its weight).
+// Weighted gaps: row j is the integral of psi_j (-n_o . u) over the contact face, psi_j the
+// multiplier function of contact node j, and d_j the integral of psi_j g. On the unit face
+// of a box, for u = -n_o f with f linear (interpolated exactly by every degree), the rows
+// sum to the integral of f, and for f = 1 each row is positive (its weight), P2 vertices of
+// triangles included.
 TEST(ElasticityAssembler, WeightedGapRowsIntegrateAgainstTheVertexHats) {
   for (int dim : {2, 3})
     for (int degree : {1, 2, 3}) {
@@ -219,7 +220,7 @@ TEST(ElasticityAssembler, WeightedGapRowsIntegrateAgainstTheVertexHats) {
       problem.sublist("Contact").set("formulation", "weighted gap");
       AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
       const ContactQP& qp = p.qp;
-      EXPECT_EQ(qp.A->getGlobalNumRows(), static_cast<std::size_t>(std::pow(cells + 1, dim - 1))) << what;
+      EXPECT_EQ(qp.A->getGlobalNumRows(), static_cast<std::size_t>(std::pow(degree * cells + 1, dim - 1))) << what;
 
       // u = -n_o f: f = 1, then f = 1 + x (+ 2y), from the node coordinates.
       const int axis = dim - 1;  // n_o = e_axis

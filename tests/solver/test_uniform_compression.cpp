@@ -62,7 +62,7 @@ TEST(UniformCompression, ContactPressureIsTheAppliedTraction) {
 
       // M p = -lambda on the whole face (every node loaded) gives p = 1 at every node, for
       // every degree: the nodal forces of a uniform pressure are M 1 (with weighted gaps,
-      // p = -lambda). The degenerate P2
+      // p = -sum lambda_j psi_j). The degenerate P2
       // vertex constraints keep multipliers of ~sqrt(mu) where the exact ones are 0, so the
       // recovered pressure is as accurate as those (the recovery itself is exact to round-off:
       // tests/assembly/test_contact_pressure.cpp).
