@@ -7,7 +7,9 @@ across the 2D and 3D P1 sequences, with the AMG's operator complexity and times.
 
 Writes bench/results/amg-variants.{json,md}. The first Newton systems have D close to zero,
 so their counts measure the AMG of the elasticity operator itself, which is where the
-mesh dependence of the default configuration comes from (bench/results/preconditioners.md).
+mesh dependence of MueLu's hierarchy alone ("hierarchy" = "algebraic") comes from
+(bench/results/preconditioners.md). The hierarchy is not set here: on box meshes MueLu
+then runs below the geometric levels.
 """
 import argparse
 import json

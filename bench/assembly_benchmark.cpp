@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   problem.set("mesh: dimension", dim);
   problem.set("mesh: cells", Teuchos::Array<int>(1, nx));
   problem.set("element: degree", degree);
-  // The family's load and boundary conditions (shared/problem-set.md).
+  // The family's load and boundary conditions (doc/benchmark-family.md).
   const char* axes[] = {"x", "y", "z"};
   const std::string t4x = "(8*(2*x-1)^4 - 8*(2*x-1)^2 + 1)", t4y = "(8*(2*y-1)^4 - 8*(2*y-1)^2 + 1)";
   problem.set(std::string("body force: ") + axes[dim - 1], dim == 2 ? "-" + t4x : "-(" + t4x + " + " + t4y + ")/2");

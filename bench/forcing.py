@@ -5,10 +5,10 @@ safety asks each system for fewer digits and the interior point method for more 
 
     /usr/bin/python3 bench/forcing.py [--ranks N] [--safety 0.1,0.2,...] [--problems XML,...]
 
-Writes bench/results/forcing.{json,md}; every run selects the adaptive forcing (the default
-until session 8, when "reduction" replaced it) and uses the default configuration otherwise.
-The stored results include safety 1.0, measured before the parameter was limited to 0.9
-(at 1 a step need not reduce the dual residual, and it stagnated on 3D P1).
+Writes bench/results/forcing.{json,md}; every run selects the adaptive forcing and uses the
+default configuration otherwise. The stored results include safety 1.0, beyond the range the
+parameter accepts (at most 0.9): at 1 a step need not reduce the dual residual, and it
+stagnated on 3D P1.
 """
 import argparse
 import json

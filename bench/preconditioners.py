@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Krylov iterations per Newton step against mu, for each preconditioner configuration, on
-sequences of the benchmark family (issue: Krylov iterations independent of mesh size and mu).
+sequences of the benchmark family (doc/benchmark-family.md; goal: Krylov iterations
+independent of mesh size and mu).
 
     /usr/bin/python3 bench/preconditioners.py [--ranks N] [--sequence all|2d,3d,2d-p2,2d-p3,3d-p2]
         [--max-nx N] [--name BASENAME]
@@ -9,13 +10,13 @@ sequences of the benchmark family (issue: Krylov iterations independent of mesh 
 
 For every (problem, configuration, forcing) it runs build/bin/signorini, reads summary.json
 and history.csv, and writes into bench/results: preconditioners.json (every run, with its
-per-step history), preconditioners.md (one row per run, then the issue's three ratios per
+per-step history), preconditioners.md (one row per run, then three ratios per
 configuration and sequence) and preconditioners.png (Krylov iterations per Newton step
 against mu, one panel per sequence and configuration).
 
 Forcing "reduction" is the solver's default: every Krylov solve reduces the residual of its
-starting vector (the projection on earlier solutions) by 0.1. Forcing "adaptive" (the default
-until session 8) lets the Krylov tolerance follow mu, so its counts also measure how much
+starting vector (the projection on earlier solutions) by 0.1. Forcing "adaptive" lets the
+Krylov tolerance follow mu, so its counts also measure how much
 accuracy each step asks for. Forcing "relative" solves every Newton system to the same
 relative residual (1e-8): the same linear problem at every mu, which isolates the
 preconditioner's dependence on mu and on the mesh.
@@ -36,8 +37,8 @@ ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIR
            OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
 P = "Solver/Preconditioner/"
 A = {P + "hierarchy": "algebraic"}  # MueLu's smoothed aggregation alone
-UNFILTERED = {P + "amg of H: weight cap": "0"}  # the AMG sees H itself, as until session 10
-LAGGED = {**UNFILTERED, P + "amg of H: rebuild tolerance": "0.9"}  # the default rebuild rule until session 9
+UNFILTERED = {P + "amg of H: weight cap": "0"}  # no filtering: the AMG sees H itself
+LAGGED = {**UNFILTERED, P + "amg of H: rebuild tolerance": "0.9"}  # rebuilt only when constraints switch
 CONFIGS = {
     # The default configuration: geometric levels on the box meshes above MueLu, AMG of
     # Q + A^T D' A with D' capped at 10 times the constraint stiffness (filtering), rebuilt at
@@ -45,24 +46,23 @@ CONFIGS = {
     # contact correction; each Newton system starts from the projection on the two previous
     # solutions, corrected on the contact DOFs.
     "default": {},
-    # The default of session 9: the AMG built for H itself.
+    # The AMG built for H itself, without the weight cap.
     "unfiltered": UNFILTERED,
-    # The default until session 9: the AMG of H itself, rebuilt only when constraints switch
-    # between free and firmly active.
+    # The AMG of H itself, rebuilt only when constraints switch between free and firmly active.
     "lagged rebuild": LAGGED,
-    # The default of session 6: the projected start is not corrected on the contact DOFs.
+    # The lagged rebuild with the projected start not corrected on the contact DOFs.
     "without contact-corrected start": {**LAGGED, "Solver/Krylov/initial guess: contact correction": "false"},
-    # The default of session 5: Newton systems from zero (the corrector from the predictor's
+    # The lagged rebuild with Newton systems from zero (the corrector from the predictor's
     # step), tail safety 0.1.
-    "without projection (session 5 default)": {**LAGGED, "Solver/Krylov/initial guess: previous solutions": "0",
-                                               "Solver/Krylov/initial guess: contact correction": "false",
-                                               "Solver/forcing: tail safety": "0.1"},
-    # The default of session 4: the same with MueLu's hierarchy alone, and the forcing's
-    # tail safety equal to its safety (0.3).
-    "algebraic (previous default)": {**A, **LAGGED, "Solver/forcing: tail safety": "0.3",
-                                     "Solver/Krylov/initial guess: previous solutions": "0",
-                                     "Solver/Krylov/initial guess: contact correction": "false"},
-    # Variants of the algebraic hierarchy (bench/results/preconditioners.md, session 4).
+    "without projection": {**LAGGED, "Solver/Krylov/initial guess: previous solutions": "0",
+                           "Solver/Krylov/initial guess: contact correction": "false",
+                           "Solver/forcing: tail safety": "0.1"},
+    # The same with MueLu's hierarchy alone, and the forcing's tail safety equal to its
+    # safety (0.3).
+    "algebraic (from zero)": {**A, **LAGGED, "Solver/forcing: tail safety": "0.3",
+                              "Solver/Krylov/initial guess: previous solutions": "0",
+                              "Solver/Krylov/initial guess: contact correction": "false"},
+    # Variants of the algebraic hierarchy (bench/results/preconditioners.md).
     "amg of Q": {**A, P + "type": "amg of Q", P + "contact correction": "none"},
     "amg of H": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0", P + "contact correction": "none"},
     "amg of H + additive": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0",
@@ -72,19 +72,20 @@ CONFIGS = {
     "amg of Q + multiplicative": {**A, P + "type": "amg of Q", P + "contact correction": "multiplicative"},
     "lagged amg of H + multiplicative": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0.9",
                                          P + "contact correction": "multiplicative"},
-    # The algebraic default with a stronger cycle: fewer Krylov iterations, each dearer.
-    "default + W-cycle": {**A, **LAGGED, P + "MueLu/cycle type": "W", P + "MueLu/smoother: params/chebyshev: degree": "3",
+    # The lagged algebraic configuration with a stronger cycle: fewer Krylov iterations, each dearer.
+    "algebraic + W-cycle": {**A, **LAGGED, P + "MueLu/cycle type": "W", P + "MueLu/smoother: params/chebyshev: degree": "3",
                           P + "MueLu/aggregation: drop tol": "0.02"},
-    # The algebraic defaults before the forcing safety went from 0.1 to 0.3 and the corrector
-    # started from the predictor's step.
-    "previous default": {**A, **LAGGED, "Solver/forcing: safety": "0.1", "Solver/primal-dual: corrector from predictor": "false"},
+    # The lagged algebraic configuration with forcing safety 0.1 and the corrector started
+    # from zero.
+    "algebraic (safety 0.1)": {**A, **LAGGED, "Solver/forcing: safety": "0.1", "Solver/primal-dual: corrector from predictor": "false"},
 }
 # Not measured with the fixed forcing "relative": "without projection", "without contact-corrected
-# start" and "previous default" change the forcing and the starting vectors, not the
-# preconditioner (with forcing "relative" they solve the default's linear problems, from
-# other starting vectors; session 5's runs of them are in preconditioners-geometric.json);
-# the W-cycle, to keep the benchmark's time within an hour. The variants of session 4 run with today's defaults for what they do not set.
-ADAPTIVE_ONLY = {"previous default", "default + W-cycle", "without projection (session 5 default)",
+# start" and "algebraic (safety 0.1)" change the forcing and the starting vectors, not the
+# preconditioner (with forcing "relative" they solve the same linear problems from other
+# starting vectors; "algebraic (from zero)" in preconditioners-geometric.json has those runs);
+# the W-cycle, to keep the benchmark's time within an hour. Every configuration runs with the
+# solver's defaults for what it does not set.
+ADAPTIVE_ONLY = {"algebraic (safety 0.1)", "algebraic + W-cycle", "without projection",
                  "without contact-corrected start"}
 FORCING = {
     "reduction": {},  # the default: each solve reduces its start's residual by 0.1
@@ -116,7 +117,7 @@ def run(xml, settings, ranks, out, reuse):
 
 
 def ratios(records):
-    """The issue's measures over one sequence: spread of the largest count per Newton system,
+    """Three measures over one sequence: spread of the largest count per Newton system,
     spread of the totals, and last over first Newton step (largest over the sequence)."""
     maxima = [r["summary"]["max_krylov_per_newton"] for r in records]
     totals = [r["summary"]["krylov_iterations"] for r in records]
@@ -182,7 +183,7 @@ def main():
         rows.append(f"| {r['sequence']} | {r['nx']} | {s['n']} | {r['config']} | {r['forcing']} | {s['outer_iterations']} | "
                     f"{s['krylov_iterations']} | {s['max_krylov_per_newton']} | {h[0]['krylov']} / {h[-1]['krylov']} | "
                     f"{s['preconditioner_setups']} | {s['time']['solve']:.2f} |")
-    rows += ["", "Ratios over each sequence (issue targets: 1.5, 2, 1.5); a Newton step of the primal-dual "
+    rows += ["", "Ratios over each sequence (targets: 1.5, 2, 1.5); a Newton step of the primal-dual "
              "method solves two systems (predictor and corrector).", "",
              "| sequence | nx range | configuration | forcing | max per system: max / min | total: max / min | "
              "last / first step (worst) |", "|---|---|---|---|---|---|---|"]

@@ -1,13 +1,13 @@
 #!/usr/bin/python3
-"""The README's preconditioning table, from the JSON that bench/preconditioners.py wrote:
+"""The preconditioning table of doc/benchmarks.md, from the JSON that bench/preconditioners.py wrote:
 
     /usr/bin/python3 bench/readme_table.py
 
-One row per member (preconditioners-forcing{,-p2p3}.json, one run): the default
-configuration with the default forcing ("reduction"), with the adaptive forcing (the default
-until session 8) and with every Newton system solved to 1e-8 ("relative"); then the AMG built for H itself
-without the weight cap (session 9's default), and rebuilt only when constraints switch (the
-default until session 9), where that run has them.
+One row per member (preconditioners-forcing{,-p2p3}.json, one run each): the default
+configuration with the default forcing ("reduction"), with the adaptive forcing and with
+every Newton system solved to 1e-8 ("relative"); then the AMG built for H itself without the
+weight cap ("unfiltered"), and in addition rebuilt only when constraints switch ("lagged
+rebuild"), where the JSON has them.
 """
 import json
 import os

@@ -1,6 +1,5 @@
 #!/usr/bin/env bash
-# Assembly time and memory of ~1 million unknown members of the family (issue: "assembly of
-# 3D P1 with about 1 million unknowns takes seconds"), on 1 and 2 ranks.
+# Assembly time and memory of ~1 million unknown members of the family, on 1 and 2 ranks.
 # Writes bench/results/assembly.json (a list of records from signorini_bench_assembly).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,6 +1,6 @@
 #pragma once
 // The box [0,L0]x[0,L1](x[0,L2]) cut into `cells` boxes per direction, each box into
-// simplices as shared/problem-set.md says (the subdivision of makeBoxMesh), seen as a P1
+// simplices as doc/benchmark-family.md says (the subdivision of makeBoxMesh), seen as a P1
 // space: which simplex holds a point, and with which weights the vertex values interpolate
 // there. The geometric multigrid levels of a box mesh are such grids.
 #include <array>

@@ -1,7 +1,7 @@
 #pragma once
 // Geometric multigrid for a space on a box mesh (makeBoxMesh): below the fine space lies a
 // sequence of box grids with half the cells of the one above (a P_k space, k > 1, first goes
-// to P1 on its own mesh), each a P1 space on the subdivision of problem-set.md, joined by
+// to P1 on its own mesh), each a P1 space on the subdivision of doc/benchmark-family.md, joined by
 // P1 interpolation P. The coarse matrices are Galerkin products P^T A P, the smoother is
 // Ifpack2's Chebyshev, and once a grid has fewer unknowns than "coarsest size" or cannot
 // be halved, MueLu's algebraic multigrid, with the grid's rigid body modes, takes over.

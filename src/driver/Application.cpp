@@ -40,10 +40,9 @@ Teuchos::ParameterList outputParameters() {
   p.set("write solution", true, "Write solution.pvtu with one .vtu per rank");
   p.set("write history", true, "Write history.csv, one row per Newton step");
   p.set("contact pressure", "auto",
-        "\"consistent\": solve M p = -lambda with the boundary mass matrix M of the loaded "
-        "contact facets; \"lumped\": p = -lambda / w with HRZ-lumped boundary weights w; "
-        "\"auto\": lumped for P1, consistent for P2 and P3 (closest to Hertz, doc/hertz-validation.md). "
-        "Nodal constraints only: with weighted gaps p = -lambda",
+        "Recovery of the pressure from nodal constraints: \"consistent\" solves M p = -lambda (boundary "
+        "mass matrix of the loaded facets), \"lumped\" p = -lambda / w (HRZ weights), \"auto\" lumped "
+        "for P1 and consistent for P2, P3. Weighted gaps need none: their multipliers are the pressure",
         rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("auto", "consistent", "lumped"))));
   p.set("write contact samples", false,
         "Write contact.csv: the recovered contact pressure at quadrature points of the contact "

@@ -11,13 +11,13 @@ namespace signorini {
 namespace {
 
 // A simplex of the box subdivision, as box corners: corner bit a (x), 2b (y), 4c (z) is the
-// vertex v_abc = (i+a, j+b, k+c) of problem-set.md.
+// vertex v_abc = (i+a, j+b, k+c) of doc/benchmark-family.md.
 using CornerSimplex = std::array<int, 4>;
 
 int cornerOffset(int corner, int axis) { return (corner >> axis) & 1; }
 
 // Swaps the last two vertices of negatively oriented simplices, so every cell has a positive
-// Jacobian determinant (the vertex sets stay those of problem-set.md).
+// Jacobian determinant (the vertex sets stay those of doc/benchmark-family.md).
 std::vector<CornerSimplex> positivelyOriented(int dim, std::vector<CornerSimplex> simplices) {
   for (auto& s : simplices) {
     double edge[3][3] = {};

@@ -39,66 +39,46 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   krylov.set("maximum iterations", 1000, "Krylov iterations allowed per Newton system",
              rcp(new Teuchos::EnhancedNumberValidator<int>(1, 1000000)));
   krylov.set("initial guess: previous solutions", 2,
-             "Each Newton system starts from the H-orthogonal projection of its solution on the span of "
-             "this many earlier solutions (and of the predictor's step, for the corrector): Fischer's "
-             "projection, one application of H per vector. 0 starts from zero. Measured on the family "
-             "(2 ranks, bench/results/preconditioners-projection.md): 2 needs 18% fewer CG iterations on 2D nx = 800 "
-             "and 36% fewer on 3D nx = 64",
+             "Start each Newton system from the H-orthogonal projection of its solution on this many earlier "
+             "solutions (and the predictor's step, for the corrector), one application of H per vector; 0: "
+             "start from zero",
              rcp(new Teuchos::EnhancedNumberValidator<int>(0, 20)));
   krylov.set("initial guess: contact correction", true,
-             "Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x) (the "
-             "starting vector of deflated CG on that subspace): one application of H and one subspace "
-             "solve per Newton system; needs Preconditioner/contact correction. CG's first step cannot "
-             "do as much, since it scales the whole preconditioned residual by one step length. "
-             "Measured on the family (2 ranks, bench/results/preconditioners-projection.md, against false): "
-             "13% fewer CG iterations on 2D nx = 800 (127 -> 110) and 24% fewer on 3D nx = 64 (84 -> 64), "
-             "8% and 6% less solve time; some members take one more main iteration");
+             "Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x): one "
+             "application of H and one subspace solve per Newton system; needs Preconditioner/contact "
+             "correction");
   Teuchos::ParameterList& prec = p.sublist("Preconditioner", false, "Preconditioner of H");
   prec.set("type", "amg of H",
            "\"none\", \"amg of Q\" (MueLu on Q, built once) or \"amg of H\" (MueLu on the "
            "assembled Q + A^T D A, rebuilt as \"amg of H: rebuild tolerance\" says)",
            rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "amg of Q", "amg of H"))));
   prec.set("amg of H: rebuild tolerance", 0.0,
-           "\"amg of H\" is rebuilt when the relative weight D_i / (D_i + q_i) of some constraint i "
-           "(q_i = a_i^T diag(Q) a_i, its stiffness; D_i capped as \"amg of H: weight cap\" says, so "
-           "below cap / (cap + 1)) moved by more than this since the last build; 0 (the default) rebuilds "
-           "at every Newton step, 1 never after the first. Without the cap, 0.9 (the default until "
-           "session 9) rebuilds when a constraint switches between free and firmly active and leaves the "
-           "rest to the contact correction; on 2D P1 the largest CG count per Newton system then grew from "
-           "4 to 8 with the mesh, against 4 to 5 with the defaults (bench/results/preconditioners-forcing.md)",
+           "Rebuild \"amg of H\" when the relative weight D_i / (D_i + q_i) of some constraint (q_i: its "
+           "stiffness a_i^T diag(Q) a_i; D_i capped by amg of H: weight cap) moved by more than this since "
+           "the last build; 0 rebuilds at every Newton step, 1 never after the first",
            rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
   prec.set("amg of H: weight cap", 10.0,
-           "With a contact correction, \"amg of H\" is built for Q + A^T D' A with D'_i = min(D_i, cap q_i) "
-           "instead of H (filtering, as in the AMG with filtering of Petrides et al.): the barrier weights "
-           "of firmly active constraints, orders of magnitude above their stiffness q_i, stay out of the "
-           "coarse levels, and the contact correction solves for them exactly. 0: no cap, the AMG sees H "
-           "(it always does without a contact correction). Measured on the family (2 ranks, a rebuild at "
-           "every step; bench/results/preconditioners-forcing*.md, against 0): the last Newton steps cost "
-           "what the first did (paper/G 4 -> 5 CG iterations for both systems of the first and last main "
-           "iteration, against 4 -> 7; paper/H 4 -> 6 against 4 -> 8; paper/I 5 -> 7 against 5 -> 10), "
-           "2-22% fewer in total on the P1 family; 3 and 30 did about as well (one-off runs)",
+           "With a contact correction, \"amg of H\" is built for Q + A^T D' A, D'_i = min(D_i, cap q_i) "
+           "(filtering): weights far above a constraint's stiffness stay out of the coarse levels and the "
+           "contact correction solves for them exactly. 0: no cap",
            rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1e300)));
   prec.set("contact correction", "multiplicative",
            "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
            "\"additive\" or \"multiplicative\" (symmetric: subspace, AMG, subspace)",
            rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "additive", "multiplicative"))));
   prec.set("hierarchy", "auto",
-           "How the multigrid levels are made: \"geometric\" (box meshes): box grids with half the cells "
-           "(P_k goes to P1 first), P1 interpolation, Galerkin coarse matrices and Chebyshev smoothing, down "
-           "to \"geometric: coarsest size\" unknowns, then MueLu; \"algebraic\": MueLu's smoothed "
-           "aggregation alone; \"auto\": geometric on a box mesh, algebraic otherwise",
+           "Multigrid levels: \"geometric\" (box meshes: P_k to P1, then box grids with half the cells, "
+           "Galerkin coarse matrices, Chebyshev smoothing, MueLu below geometric: coarsest size); "
+           "\"algebraic\": MueLu alone; \"auto\": geometric on box meshes",
            rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("auto", "algebraic", "geometric"))));
   prec.set("geometric: coarsest size", 200,
            "The geometric levels stop before a grid with fewer unknowns than this, or at one that cannot "
            "be halved; MueLu takes over there",
            rcp(new Teuchos::EnhancedNumberValidator<int>(1, std::numeric_limits<int>::max())));
   prec.set("geometric: eigenvalue update steps", 5,
-           "Lanczos steps of a smoother's largest-eigenvalue estimate when the hierarchy is rebuilt for a "
-           "matrix that changed on the contact DOFs alone, started from the previous estimate's Ritz vector "
-           "and the changed rows; 0 makes a fresh estimate (Ifpack2/chebyshev: eigenvalue max iterations, "
-           "15) at every rebuild; 1 and 2 are rejected (1 step underestimated it so much that CG did "
-           "not converge). 5 steps estimate as well as 15 fresh ones on the family (2D nx = 800, a rebuild "
-           "at every step: the same CG counts, smoother setups 6.3 -> 2.8 s)",
+           "Lanczos steps that update a smoother's largest-eigenvalue estimate when only the contact rows "
+           "changed, from the previous Ritz vector; 0: a fresh estimate at every rebuild; 1 and 2 are "
+           "rejected as too inaccurate",
            rcp(new Teuchos::EnhancedNumberValidator<int>(0, 1000)));
   prec.sublist("Ifpack2", false,
                "Passed unchanged to Ifpack2's Chebyshev smoother of the geometric levels, over Signorini's "

@@ -159,7 +159,7 @@ TEST(BoxMesh, Conforming) {
   }
 }
 
-// The subdivision is the one of shared/problem-set.md, as vertex sets.
+// The subdivision is the one of doc/benchmark-family.md, as vertex sets.
 TEST(BoxMesh, SubdivisionOfProblemSet) {
   const SimplexMesh square = makeBoxMesh(2, {2, 2, 0}, {1, 1, 0});
   // Square (0,0): a=0, b=1, c=3, e=4 -> triangles (a,b,e), (a,e,c).

@@ -15,7 +15,7 @@
 namespace signorini {
 namespace {
 
-// The thirteen problems of shared/problem-set.md: n = dim * nodes, m = nodes on the bottom face.
+// The thirteen problems of doc/benchmark-family.md: n = dim * nodes, m = nodes on the bottom face.
 struct PaperProblem {
   const char* name;
   int dim, degree;
