@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Hertz validation: refinement studies of a rigid cylinder (2D) and sphere (3D) pressed into
-an elastic block (examples/hertz/). For each run, the computed contact half-width or radius,
+an elastic block, and of an elastic half-disk meshed by Gmsh pressed onto a rigid plane
+(examples/hertz/). For each run, the computed contact half-width or radius,
 peak pressure and the L2 error of the pressure on the contact boundary are compared with
 Hertz' solution for the computed total force. Writes bench/results/hertz.{json,md,png}.
 
@@ -18,7 +19,8 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# (example, dimension, [(degree, cells), ...]) per study; the same nodes per row across degrees.
+# (example, dimension, {degree: meshes}) per study: box cells (the same nodes per row across
+# degrees), or a Gmsh geometry's mesh size factor.
 STUDIES = {
     "cylinder-2d": (2, {1: [(80, 40), (160, 80), (320, 160), (640, 320)],
                         2: [(40, 20), (80, 40), (160, 80), (320, 160)],
@@ -26,7 +28,9 @@ STUDIES = {
     "sphere-3d": (3, {1: [(16, 16, 8), (32, 32, 16), (48, 48, 24), (64, 64, 32)],
                       2: [(8, 8, 4), (16, 16, 8), (24, 24, 12), (32, 32, 16)]}),
 }
-QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}}
+STUDIES["half-disk-2d"] = (2, {1: [2.0, 1.0, 0.5, 0.25], 2: [2.0, 1.0, 0.5, 0.25]})
+GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004}  # the .geo's mesh size at the contact, factor 1
+QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}, "half-disk-2d": {1: 2, 2: 2}}
 # (Contact/formulation, Output/contact pressure): the nodal constraints with both pressure
 # recoveries, and weighted gaps, whose multipliers are the pressure.
 VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("weighted gap", "auto")]
@@ -45,10 +49,27 @@ def hertz(dim, force, radius, e_star):
     return a, 3.0 * force / (2.0 * math.pi * a * a)
 
 
+def mesh_setting(mesh):
+    if isinstance(mesh, float):
+        return "Problem/mesh: size factor=%g" % mesh
+    return "Problem/mesh: cells={%s}" % ", ".join(map(str, mesh))
+
+
+def mesh_label(mesh):
+    return "size x%g" % mesh if isinstance(mesh, float) else "x".join(map(str, mesh))
+
+
+def spacing(example, dim, mesh):
+    """Element size at the contact."""
+    if isinstance(mesh, float):
+        return GMSH_CONTACT_SIZE[example] * mesh
+    return 1.0 / mesh[0] * (2.0 if dim == 2 else 1.0)
+
+
 def run(args, example, degree, cells, formulation, recovery, directory):
     xml = os.path.join(ROOT, "examples", "hertz", example + ".xml")
     cmd = ["mpirun", "-np", str(args.np), os.path.join(args.build, "bin", "signorini"), xml,
-           "--set", "Problem/mesh: cells={%s}" % ", ".join(map(str, cells)),
+           "--set", mesh_setting(cells),
            "--set", "Problem/element: degree=%d" % degree,
            "--set", "Output/write solution=false", "--set", "Output/write history=false",
            "--set", "Problem/Contact/formulation=" + formulation,
@@ -81,7 +102,7 @@ def main():
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "hertz"))
     args = parser.parse_args()
     e_star = 1.0 / (1.0 - 0.3 ** 2)
-    geometry = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0)}
+    geometry = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0), "half-disk-2d": ((0.0, 0.0), 1.0)}
     rows, profiles = [], {}
     with tempfile.TemporaryDirectory() as tmp:
         for example, (dim, plan) in STUDIES.items():
@@ -90,8 +111,8 @@ def main():
                 for cells in meshes[:QUICK[example][degree]] if args.quick else meshes:
                     for formulation, recovery in VARIANTS:
                         summary, samples = run(args, example, degree, cells, formulation, recovery, tmp)
-                        row = {"example": example, "d": dim, "degree": degree, "cells": list(cells),
-                               "h": 1.0 / cells[0] * (2.0 if dim == 2 else 1.0), "n": summary["n"],
+                        row = {"example": example, "d": dim, "degree": degree, "mesh": mesh_label(cells),
+                               "h": spacing(example, dim, cells), "n": summary["n"],
                                "m": summary["m"], "formulation": formulation, "recovery": recovery,
                                "converged": summary["converged"], "seconds": summary["time"]["total"]}
                         row.update(measure(dim, summary, samples, center, radius, e_star))
@@ -99,7 +120,7 @@ def main():
                         profiles[(example, degree, formulation, recovery)] = profile(
                             dim, samples, center, row["a_hertz"], row["p0_hertz"])
                         print("%-12s P%d %-14s %-24s a %+6.2f%%  p0 %+6.2f%%  L2 %.4f" % (
-                            example, degree, cells, label(formulation, recovery), 100 * row["a_error"],
+                            example, degree, mesh_label(cells), label(formulation, recovery), 100 * row["a_error"],
                             100 * row["p0_error"], row["l2_error"]), flush=True)
     add_orders(rows)
     with open(args.out + ".json", "w") as f:
@@ -128,12 +149,12 @@ def add_orders(rows):
 
 
 def write_table(rows, path):
-    lines = ["| example | P | cells | n | constraints | a / a_Hertz - 1 | p0 / p0_Hertz - 1 | L2 error of p | order |",
+    lines = ["| example | P | mesh | n | constraints | a / a_Hertz - 1 | p0 / p0_Hertz - 1 | L2 error of p | order |",
              "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         order = "" if r["l2_order"] is None else "%.2f" % r["l2_order"]
         lines.append("| %s | %d | %s | %d | %s | %+.2f%% | %+.2f%% | %.4f | %s |" % (
-            r["example"], r["degree"], "x".join(map(str, r["cells"])), r["n"], label(r["formulation"], r["recovery"]),
+            r["example"], r["degree"], r["mesh"], r["n"], label(r["formulation"], r["recovery"]),
             100 * r["a_error"], 100 * r["p0_error"], r["l2_error"], order))
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -143,7 +164,7 @@ def plot(rows, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    fig, axes = plt.subplots(1, len(STUDIES), figsize=(5 * len(STUDIES), 4))
     for ax, example in zip(axes, STUDIES):
         for degree in sorted({r["degree"] for r in rows if r["example"] == example}):
             for (formulation, recovery), style in zip(VARIANTS, ["-o", "--s", ":^"]):
@@ -166,7 +187,7 @@ def plot_profiles(profiles, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(10, 4))
+    fig, axes = plt.subplots(1, len(STUDIES), figsize=(5 * len(STUDIES), 4))
     for ax, example in zip(axes, STUDIES):
         for (formulation, recovery), marker in zip(VARIANTS, ["o", "s", "^"]):
             key = (example, 2, formulation, recovery)

@@ -1,13 +1,15 @@
 #pragma once
-// Reading a Gmsh mesh file (.msh, format 2.2 or 4.x) into a SimplexMesh, through the Gmsh
-// SDK (libgmsh): the file format itself is parsed by Gmsh, never here.
+// Reading a Gmsh mesh file (.msh, format 2.2 or 4.x), or meshing a Gmsh geometry (.geo),
+// into a SimplexMesh through the Gmsh SDK (libgmsh): the file format is parsed by Gmsh,
+// never here.
 #include <string>
 
 #include "signorini/SimplexMesh.hpp"
 
 namespace signorini {
 
-// Reads the Gmsh mesh file at `path`.
+// Reads the Gmsh mesh file at `path`; a .geo file is meshed first, in its own dimension,
+// with linear elements and its mesh sizes multiplied by `sizeFactor` (Mesh.MeshSizeFactor).
 //
 // - dim is the highest dimension of the elements in the file (2 or 3). The cells are the
 //   elements of that dimension in the physical groups of that dimension if the file has
@@ -33,6 +35,6 @@ namespace signorini {
 // a Gmsh session open: then the file is read into a temporary model which is removed again,
 // and the caller's current model and General.Terminal option are restored. Calls are
 // serialised within the process (Gmsh is not thread-safe).
-SimplexMesh readGmshMesh(const std::string& path);
+SimplexMesh readGmshMesh(const std::string& path, double sizeFactor = 1.0);
 
 }  // namespace signorini

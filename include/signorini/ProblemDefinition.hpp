@@ -35,6 +35,7 @@ struct ProblemDefinition {
   std::array<long long, 3> cells{{1, 1, 1}};
   std::array<double, 3> lengths{{1.0, 1.0, 1.0}};
   std::string meshFile;
+  double meshSizeFactor = 1.0;  // of a .geo geometry
   int degree = 1;
   IsotropicMaterial material;
   std::vector<Expression> bodyForce;  // dim components

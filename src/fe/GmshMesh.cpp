@@ -410,7 +410,7 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
 
 }  // namespace
 
-SimplexMesh readGmshMesh(const std::string& path) {
+SimplexMesh readGmshMesh(const std::string& path, double sizeFactor) {
   const std::string prefix = "Gmsh mesh file '" + path + "': ";
   {
     std::error_code error;
@@ -424,6 +424,11 @@ SimplexMesh readGmshMesh(const std::string& path) {
     try {
       GmshSession session;
       session.load(path);
+      if (std::filesystem::path(path).extension() == ".geo") {
+        gmsh::option::setNumber("Mesh.MeshSizeFactor", sizeFactor);
+        gmsh::option::setNumber("Mesh.ElementOrder", 1);
+        gmsh::model::mesh::generate(gmsh::model::getDimension());
+      }
       raw = extractMesh();
       if (raw.dim == 0)
         throw InputError(prefix + "it holds no " + simplexDescription(2) + " nor " +

@@ -58,7 +58,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       if (def.meshType == "gmsh") {
         std::filesystem::path file(def.meshFile);
         if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
-        mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string()));
+        mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), def.meshSizeFactor));
       } else {
         mesh = std::make_shared<SimplexMesh>(makeBoxMesh(def.dim, def.cells, def.lengths));
       }

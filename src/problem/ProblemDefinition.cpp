@@ -70,7 +70,9 @@ ParameterList ProblemDefinition::validParameters() {
   p.set("mesh: cells", Array<int>(1, 10),
         "Cells per direction of a box mesh: one value for all directions, or one per direction");
   p.set("mesh: lengths", Array<double>(3, 1.0), "Edge lengths of the box [0,L0]x[0,L1](x[0,L2])");
-  p.set("mesh: file", "", "Gmsh .msh file (format 2.2 or 4.1); relative to the XML file");
+  p.set("mesh: file", "", "Gmsh .msh file (format 2.2 or 4.1), or a .geo geometry that Gmsh meshes; relative to the XML file");
+  p.set("mesh: size factor", 1.0, "A .geo geometry's mesh sizes are multiplied by this (Gmsh's Mesh.MeshSizeFactor)",
+        range(1e-6, 1e6));
   p.set("element: degree", 1, "Degree of the continuous Lagrange elements", range(1, 3));
   p.set("material: young's modulus", 1.0, "Young's modulus E", range(1e-300, 1e300));
   p.set("material: poisson ratio", 0.3, "Poisson ratio nu", range(-0.999, 0.4999));
@@ -141,6 +143,7 @@ ProblemDefinition ProblemDefinition::fromParameters(const ParameterList& user, i
     def.lengths[i] = lengths[i];
   }
   def.meshFile = p.get<std::string>("mesh: file");
+  def.meshSizeFactor = p.get<double>("mesh: size factor");
   if (def.meshType == "gmsh" && def.meshFile.empty())
     throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
 

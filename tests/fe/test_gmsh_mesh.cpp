@@ -650,5 +650,31 @@ TEST(GmshMesh, CallerGmshSessionIsLeftAsItWas) {
   gmsh::option::setNumber("General.Terminal", 0);
 }
 
+// A .geo geometry is meshed when read, with linear triangles, its physical groups as the
+// boundaries; the size factor scales its mesh sizes.
+TEST(GmshGeometry, IsMeshedWhenReadAndRefinedByTheSizeFactor) {
+  TempDir dir;
+  const std::string path = dir.file("quarter-disk.geo");
+  std::ofstream(path) << "Point(1) = {0, 0, 0, 0.1};\nPoint(2) = {1, 0, 0, 0.1};\nPoint(3) = {0, 1, 0, 0.1};\n"
+                         "Line(1) = {1, 2};\nCircle(2) = {2, 1, 3};\nLine(3) = {3, 1};\n"
+                         "Curve Loop(1) = {1, 2, 3};\nPlane Surface(1) = {1};\n"
+                         "Physical Curve(\"bottom\") = {1};\nPhysical Curve(\"arc\") = {2};\n"
+                         "Physical Surface(\"body\") = {1};\n";
+  const SimplexMesh coarse = readGmshMesh(path, 1.0);
+  const SimplexMesh fine = readGmshMesh(path, 0.5);
+  EXPECT_EQ(coarse.dim, 2);
+  EXPECT_GT(coarse.numCells(), 50);
+  EXPECT_GT(fine.numCells(), 3 * coarse.numCells());  // about 4 times as many
+  EXPECT_EQ(coarse.boundaryTags.count("bottom"), 1u);
+  EXPECT_EQ(coarse.boundaryTags.count("arc"), 1u);
+  double area = 0;  // the quarter disk's, pi / 4, to the polygon's chord error
+  std::vector<double> x(6);
+  for (long long c = 0; c < fine.numCells(); ++c) {
+    fine.cellVertexCoordinates(c, x.data());
+    area += 0.5 * std::abs((x[2] - x[0]) * (x[5] - x[1]) - (x[4] - x[0]) * (x[3] - x[1]));
+  }
+  EXPECT_NEAR(area, M_PI / 4, 2e-3);
+}
+
 }  // namespace
 }  // namespace signorini
