@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Hertz validation: refinement studies of a rigid cylinder (2D) and sphere (3D) pressed into
-an elastic block, and of an elastic half-disk meshed by Gmsh pressed onto a rigid plane
-(examples/hertz/). For each run, the computed contact half-width or radius,
+an elastic block, of an elastic half-disk meshed by Gmsh pressed onto a rigid plane, and of
+a rigid flat punch (examples/hertz/). For each run, the computed contact half-width or radius,
 peak pressure and the L2 error of the pressure on the contact boundary are compared with
 Hertz' solution for the computed total force. Writes bench/results/hertz.{json,md,png}.
 
@@ -29,8 +29,11 @@ STUDIES = {
                       2: [(8, 8, 4), (16, 16, 8), (24, 24, 12), (32, 32, 16)]}),
 }
 STUDIES["half-disk-2d"] = (2, {1: [2.0, 1.0, 0.5, 0.25], 2: [2.0, 1.0, 0.5, 0.25]})
+STUDIES["punch-2d"] = (2, {1: [(80, 40), (160, 80), (320, 160)], 2: [(40, 20), (80, 40), (160, 80)]})
+PUNCH_HALF_WIDTH = 0.25
 GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004}  # the .geo's mesh size at the contact, factor 1
-QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}, "half-disk-2d": {1: 2, 2: 2}}
+QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}, "half-disk-2d": {1: 2, 2: 2},
+         "punch-2d": {1: 2, 2: 2}}
 # (Contact/formulation, Output/contact pressure): the nodal constraints with both pressure
 # recoveries, and weighted gaps, whose multipliers are the pressure.
 VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("weighted gap", "auto")]
@@ -81,6 +84,22 @@ def run(args, example, degree, cells, formulation, recovery, directory):
     return summary, samples
 
 
+def measure_punch(summary, samples, center):
+    """The flat punch against the half-space solution p = P / (pi sqrt(b^2 - x^2)) for the
+    computed force: contact half-width against b, the pressure at the centre against
+    P / (pi b), and the L2 error over the inner 80% of the punch (the edges are singular)."""
+    contact = summary["contact"]
+    force, b = contact["normal_force"], PUNCH_HALF_WIDTH
+    x = samples["x"] - center[0]
+    w, p = samples["weight"], samples["pressure"]
+    inner = np.abs(x) < 0.8 * b
+    exact = force / (math.pi * np.sqrt(np.maximum(b * b - x * x, 1e-300)))
+    p_center, p_exact = p[np.argmin(np.abs(x))], force / (math.pi * b)
+    return {"force": force, "a": contact["length"] / 2.0, "a_hertz": b, "a_error": contact["length"] / 2.0 / b - 1.0,
+            "p0": p_center, "p0_hertz": p_exact, "p0_error": p_center / p_exact - 1.0,
+            "l2_error": math.sqrt(np.sum(w[inner] * (p[inner] - exact[inner]) ** 2) / np.sum(w[inner] * exact[inner] ** 2))}
+
+
 def measure(dim, summary, samples, center, radius, e_star):
     contact = summary["contact"]
     force = contact["normal_force"]
@@ -102,7 +121,8 @@ def main():
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "hertz"))
     args = parser.parse_args()
     e_star = 1.0 / (1.0 - 0.3 ** 2)
-    geometry = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0), "half-disk-2d": ((0.0, 0.0), 1.0)}
+    geometry = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0), "half-disk-2d": ((0.0, 0.0), 1.0),
+                "punch-2d": ((1.0, 0.0), None)}
     rows, profiles = [], {}
     with tempfile.TemporaryDirectory() as tmp:
         for example, (dim, plan) in STUDIES.items():
@@ -115,10 +135,13 @@ def main():
                                "h": spacing(example, dim, cells), "n": summary["n"],
                                "m": summary["m"], "formulation": formulation, "recovery": recovery,
                                "converged": summary["converged"], "seconds": summary["time"]["total"]}
-                        row.update(measure(dim, summary, samples, center, radius, e_star))
+                        if example == "punch-2d":
+                            row.update(measure_punch(summary, samples, center))
+                        else:
+                            row.update(measure(dim, summary, samples, center, radius, e_star))
+                            profiles[(example, degree, formulation, recovery)] = profile(
+                                dim, samples, center, row["a_hertz"], row["p0_hertz"])
                         rows.append(row)
-                        profiles[(example, degree, formulation, recovery)] = profile(
-                            dim, samples, center, row["a_hertz"], row["p0_hertz"])
                         print("%-12s P%d %-14s %-24s a %+6.2f%%  p0 %+6.2f%%  L2 %.4f" % (
                             example, degree, mesh_label(cells), label(formulation, recovery), 100 * row["a_error"],
                             100 * row["p0_error"], row["l2_error"]), flush=True)
@@ -187,8 +210,9 @@ def plot_profiles(profiles, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, len(STUDIES), figsize=(5 * len(STUDIES), 4))
-    for ax, example in zip(axes, STUDIES):
+    hertz = [example for example in STUDIES if example != "punch-2d"]
+    fig, axes = plt.subplots(1, len(hertz), figsize=(5 * len(hertz), 4))
+    for ax, example in zip(axes, hertz):
         for (formulation, recovery), marker in zip(VARIANTS, ["o", "s", "^"]):
             key = (example, 2, formulation, recovery)
             if key in profiles:

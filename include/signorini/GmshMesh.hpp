@@ -26,7 +26,8 @@ namespace signorini {
 //   is Gmsh's. boundaryTags maps each group's physical name ("physical<tag>" when unnamed)
 //   to its physical tag, which is the facets' tag.
 //
-// Throws InputError, with the path in the message, if the file is missing or unreadable,
+// Throws InputError, with the path in the message, if the file is missing or unreadable, a
+// .msh file does not start with $MeshFormat,
 // holds no triangle or tetrahedron, has cells of another type (quadrangles, hexahedra,
 // second-order elements...), a degenerate cell, a 2D node off the plane z = 0, a boundary
 // element that is not a face of a cell, or two boundary groups with the same name.

@@ -412,10 +412,17 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
 
 SimplexMesh readGmshMesh(const std::string& path, double sizeFactor) {
   const std::string prefix = "Gmsh mesh file '" + path + "': ";
+  const bool geometry = std::filesystem::path(path).extension() == ".geo";
   {
     std::error_code error;
-    if (!std::filesystem::is_regular_file(path, error) || !std::ifstream(path))
+    std::ifstream file(path);
+    if (!std::filesystem::is_regular_file(path, error) || !file)
       throw InputError(prefix + "cannot open it (missing, not a regular file or unreadable)");
+    // Gmsh would parse anything else as a .geo script, and Gmsh 4.8's parser does not
+    // recover from a syntax error for the rest of the process.
+    std::string first;
+    if (!geometry && (file >> first) && first != "$MeshFormat")
+      throw InputError(prefix + "not a Gmsh mesh file (it does not start with $MeshFormat)");
   }
 
   RawMesh raw;
@@ -424,7 +431,7 @@ SimplexMesh readGmshMesh(const std::string& path, double sizeFactor) {
     try {
       GmshSession session;
       session.load(path);
-      if (std::filesystem::path(path).extension() == ".geo") {
+      if (geometry) {
         gmsh::option::setNumber("Mesh.MeshSizeFactor", sizeFactor);
         gmsh::option::setNumber("Mesh.ElementOrder", 1);
         gmsh::model::mesh::generate(gmsh::model::getDimension());

@@ -1,5 +1,6 @@
-// Hertz contact on meshes small enough for every run: the rigid cylinder (plane strain) and
-// sphere of examples/hertz, compared with Hertz' solution for the computed force. The full
+// The contact problems of examples/hertz on meshes small enough for every run: the rigid
+// cylinder (plane strain), the Gmsh half-disk and the rigid sphere against Hertz' solution
+// for the computed force, and the flat punch against the half-space solution. The full
 // refinement study is scripts/hertz.py.
 #include <gtest/gtest.h>
 
@@ -34,11 +35,19 @@ Teuchos::Array<int> cells(int x, int y, int z = 0) {
   return c;
 }
 
+// The recovered pressure and the statistics of one solved example.
+struct ContactSolution {
+  int dim = 0;
+  ContactStatistics stats;
+  ContactPressureSamples samples;
+  RCP<const Comm> comm;
+};
+
 // The example's problem with `degree`, `formulation` and the mesh parameter `meshSetting`
 // ("mesh: cells" of a box, "mesh: size factor" of a Gmsh geometry) set to `mesh`.
 template <class Mesh>
-HertzErrors solveHertz(const std::string& example, int degree, const std::string& meshSetting, const Mesh& mesh,
-                       const std::string& formulation = "nodal") {
+ContactSolution solveExample(const std::string& example, int degree, const std::string& meshSetting, const Mesh& mesh,
+                             const std::string& formulation = "nodal") {
   const std::string directory = signorini::testing::sourceDir() + "/examples/hertz/";
   auto file = Teuchos::getParametersFromXmlFile(directory + example + ".xml");
   Teuchos::ParameterList problem = file->sublist("Problem");
@@ -52,33 +61,51 @@ HertzErrors solveHertz(const std::string& example, int degree, const std::string
   const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
   const RCP<Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
   const RCP<Vector> pressure = recovery.pressure(*r.lambda, *active);
-  const ContactStatistics s = contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active,
-                                                p.definition.obstacleDirection);
-  const int dim = p.definition.dim;
-  const double eStar = 1.0 / (1.0 - 0.3 * 0.3), R = 1.0, P = s.normalForce;
+  return {p.definition.dim,
+          contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active, p.definition.obstacleDirection),
+          recovery.samples(*pressure), p.space->comm()};
+}
+
+// The relative L2 error of the sampled pressure against exact(x), over the samples in(x).
+template <class Exact, class Inside>
+double relativeL2Error(const ContactSolution& s, Exact&& exact, Inside&& in) {
+  double local[2] = {0, 0}, global[2];
+  for (std::size_t q = 0; q < s.samples.weights.size(); ++q) {
+    const double* x = &s.samples.points[q * s.dim];
+    if (!in(x)) continue;
+    const double e = exact(x), error = s.samples.pressures[q] - e;
+    local[0] += s.samples.weights[q] * error * error;
+    local[1] += s.samples.weights[q] * e * e;
+  }
+  Teuchos::reduceAll(*s.comm, Teuchos::REDUCE_SUM, 2, local, global);
+  return std::sqrt(global[0] / global[1]);
+}
+
+// Against Hertz for the computed force, the contact centred at x = cx (and y = 0.5 in 3D).
+HertzErrors hertzErrors(const ContactSolution& s, double cx) {
+  const double eStar = 1.0 / (1.0 - 0.3 * 0.3), R = 1.0, P = s.stats.normalForce;
   double a, p0, measured;
-  if (dim == 2) {
+  if (s.dim == 2) {
     a = std::sqrt(4.0 * P * R / (M_PI * eStar));
     p0 = 2.0 * P / (M_PI * a);
-    measured = s.area / 2.0;
+    measured = s.stats.area / 2.0;
   } else {
     a = std::cbrt(3.0 * P * R / (4.0 * eStar));
     p0 = 3.0 * P / (2.0 * M_PI * a * a);
-    measured = std::sqrt(s.area / M_PI);
+    measured = std::sqrt(s.stats.area / M_PI);
   }
-  // Centre of the contact: x = 1 under the cylinder, x = 0 under the half-disk, (0.5, 0.5) in 3D.
-  const double cx = dim == 3 ? 0.5 : (example == "half-disk-2d" ? 0.0 : 1.0);
-  const ContactPressureSamples samples = recovery.samples(*pressure);
-  double local[2] = {0, 0}, global[2];
-  for (std::size_t q = 0; q < samples.weights.size(); ++q) {
-    const double* x = &samples.points[q * dim];
-    const double r2 = dim == 2 ? (x[0] - cx) * (x[0] - cx) : (x[0] - cx) * (x[0] - cx) + (x[1] - 0.5) * (x[1] - 0.5);
-    const double exact = p0 * std::sqrt(std::max(0.0, 1.0 - r2 / (a * a)));
-    local[0] += samples.weights[q] * (samples.pressures[q] - exact) * (samples.pressures[q] - exact);
-    local[1] += samples.weights[q] * exact * exact;
-  }
-  Teuchos::reduceAll(*p.space->comm(), Teuchos::REDUCE_SUM, 2, local, global);
-  return {measured / a - 1.0, s.peakPressure / p0 - 1.0, std::sqrt(global[0] / global[1])};
+  const auto exact = [&](const double* x) {
+    const double r2 = (x[0] - cx) * (x[0] - cx) + (s.dim == 3 ? (x[1] - 0.5) * (x[1] - 0.5) : 0.0);
+    return p0 * std::sqrt(std::max(0.0, 1.0 - r2 / (a * a)));
+  };
+  return {measured / a - 1.0, s.stats.peakPressure / p0 - 1.0, relativeL2Error(s, exact, [](const double*) { return true; })};
+}
+
+template <class Mesh>
+HertzErrors solveHertz(const std::string& example, int degree, const std::string& meshSetting, const Mesh& mesh,
+                       const std::string& formulation = "nodal") {
+  const double cx = example == "sphere-3d" ? 0.5 : (example == "half-disk-2d" ? 0.0 : 1.0);
+  return hertzErrors(solveExample(example, degree, meshSetting, mesh, formulation), cx);
 }
 
 TEST(Hertz, CylinderInPlaneStrainConvergesToHertz) {
@@ -106,6 +133,25 @@ TEST(Hertz, HalfDiskFromGmshConvergesToHertz) {
   EXPECT_LT(std::abs(fine.radius), std::abs(coarse.radius));
   EXPECT_LT(std::abs(fine.peak), std::abs(coarse.peak));
   EXPECT_LT(fine.l2, coarse.l2);
+}
+
+// The flat punch of half-width b = 0.25 at x = 1, P2: the contact width converges to the
+// punch's, and the pressure away from the singular edges to within 5% of the half-space
+// solution p = P / (pi sqrt(b^2 - x^2)) (the block's finite depth is the rest).
+TEST(Hertz, FlatPunchPressureFollowsTheHalfSpaceSolution) {
+  const double b = 0.25;
+  HertzErrors errors[2];
+  for (int level = 0; level < 2; ++level) {
+    const ContactSolution s = solveExample("punch-2d", 2, "mesh: cells", cells(40 << level, 20 << level));
+    const double P = s.stats.normalForce;
+    const auto exact = [&](const double* x) { return P / (M_PI * std::sqrt(b * b - (x[0] - 1) * (x[0] - 1))); };
+    const auto inner = [&](const double* x) { return std::abs(x[0] - 1) < 0.8 * b; };
+    errors[level] = {s.stats.area / 2.0 / b - 1.0, 0.0, relativeL2Error(s, exact, inner)};
+  }
+  EXPECT_LT(std::abs(errors[1].radius), 0.02);
+  EXPECT_LT(errors[1].l2, 0.05);
+  EXPECT_LT(std::abs(errors[1].radius), std::abs(errors[0].radius));
+  EXPECT_LT(errors[1].l2, errors[0].l2);
 }
 
 // P2 with weighted gaps, where every constraint carries force: radius, peak pressure and L2
