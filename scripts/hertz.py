@@ -147,10 +147,22 @@ def main():
                             100 * row["p0_error"], row["l2_error"]), flush=True)
     add_orders(rows)
     with open(args.out + ".json", "w") as f:
-        json.dump({"rows": rows}, f, indent=1)
+        json.dump({"provenance": provenance(args, summary), "rows": rows}, f, indent=1)
     write_table(rows, args.out + ".md")
     plot(rows, args.out + ".png")
     plot_profiles(profiles, args.out + "-profiles.png")
+
+
+def provenance(args, summary):
+    """Where and with what the results were made."""
+    import datetime
+    import platform
+    commit = subprocess.run(["git", "describe", "--always", "--dirty"], cwd=ROOT, capture_output=True,
+                            text=True).stdout.strip()
+    return {"command": "scripts/hertz.py" + (" --quick" if args.quick else ""), "commit": commit or "unknown",
+            "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
+            "host": platform.node(), "cores": os.cpu_count(), "ranks": args.np,
+            "build": summary.get("signorini", {})}
 
 
 def profile(dim, samples, center, a, p0):

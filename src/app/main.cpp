@@ -3,10 +3,13 @@
 // every rank, never a hang.
 #include <chrono>
 #include <iostream>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include <mpi.h>
 
+#include <Trilinos_version.h>
 #include <Tpetra_Core.hpp>
 
 #include "signorini/Application.hpp"
@@ -43,14 +46,32 @@ int leaveAfterError(const std::string& message, bool userError) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  Tpetra::ScopeGuard tpetra(&argc, &argv);
+  // Kokkos prints its own options when it sees --help: it gets the arguments without it.
+  std::vector<char*> args;
+  bool help = false;
+  for (int i = 0; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (i > 0 && (arg == "--help" || arg == "-h"))
+      help = true;
+    else
+      args.push_back(argv[i]);
+  }
+  int count = static_cast<int>(args.size());
+  args.push_back(nullptr);
+  char** remaining = args.data();
+  Tpetra::ScopeGuard tpetra(&count, &remaining);
   auto comm = Tpetra::getDefaultComm();
   try {
-    const signorini::CommandLine cl = signorini::CommandLine::parse(argc, argv);
-    if (cl.help || cl.version || cl.defaults) {
+    if (help) {
+      if (comm->getRank() == 0) std::cout << signorini::CommandLine::usage();
+      return 0;
+    }
+    const signorini::CommandLine cl = signorini::CommandLine::parse(count, remaining);
+    if (cl.version || cl.defaults) {
       if (comm->getRank() == 0) {
-        if (cl.version) std::cout << "signorini " << signorini::kVersion << "\n";
-        if (cl.help) std::cout << signorini::CommandLine::usage();
+        if (cl.version)
+          std::cout << "signorini " << signorini::kVersion << " (" << signorini::kGitCommit << "), Trilinos "
+                    << TRILINOS_VERSION_STRING << "\n";
         if (cl.defaults) std::cout << signorini::defaultsXml();
       }
       return 0;

@@ -6,7 +6,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <Trilinos_version.h>
+
 #include "signorini/Error.hpp"
+#include "signorini/Version.hpp"
 
 namespace signorini {
 namespace {
@@ -57,6 +60,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
   const SolveResult& r = *s.result;
   std::ostringstream j;
   j << "{\n"
+    << "  \"signorini\": {\"version\": " << quoted(kVersion) << ", \"commit\": " << quoted(kGitCommit)
+    << ", \"trilinos\": " << quoted(TRILINOS_VERSION_STRING) << "},\n"
     << "  \"problem\": " << quoted(s.problem) << ",\n"
     << "  \"d\": " << s.dim << ",\n"
     << "  \"kappa\": " << s.degree << ",\n"
