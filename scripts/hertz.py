@@ -29,11 +29,12 @@ STUDIES = {
                       2: [(8, 8, 4), (16, 16, 8), (24, 24, 12), (32, 32, 16)]}),
 }
 STUDIES["half-disk-2d"] = (2, {1: [2.0, 1.0, 0.5, 0.25], 2: [2.0, 1.0, 0.5, 0.25]})
+STUDIES["half-ball-3d"] = (3, {1: [2.0, 1.4, 1.0, 0.7]})
 STUDIES["punch-2d"] = (2, {1: [(80, 40), (160, 80), (320, 160)], 2: [(40, 20), (80, 40), (160, 80)]})
 PUNCH_HALF_WIDTH = 0.25
-GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004}  # the .geo's mesh size at the contact, factor 1
+GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004, "half-ball-3d": 0.01}  # the .geo's mesh size at the contact, factor 1
 QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}, "half-disk-2d": {1: 2, 2: 2},
-         "punch-2d": {1: 2, 2: 2}}
+         "half-ball-3d": {1: 2}, "punch-2d": {1: 2, 2: 2}}
 # (Contact/formulation, Output/contact pressure): the nodal constraints with both pressure
 # recoveries, and weighted gaps, whose multipliers are the pressure.
 VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("weighted gap", "auto")]
@@ -122,7 +123,7 @@ def main():
     args = parser.parse_args()
     e_star = 1.0 / (1.0 - 0.3 ** 2)
     geometry = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0), "half-disk-2d": ((0.0, 0.0), 1.0),
-                "punch-2d": ((1.0, 0.0), None)}
+                "half-ball-3d": ((0.0, 0.0), 1.0), "punch-2d": ((1.0, 0.0), None)}
     rows, profiles = [], {}
     with tempfile.TemporaryDirectory() as tmp:
         for example, (dim, plan) in STUDIES.items():
@@ -218,21 +219,23 @@ def plot(rows, path):
 
 
 def plot_profiles(profiles, path):
-    """Computed pressure against Hertz' p0 sqrt(1 - r^2/a^2) on the finest P2 meshes."""
+    """Computed pressure against Hertz' p0 sqrt(1 - r^2/a^2) on the finest meshes, P2 where
+    the study has it."""
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     hertz = [example for example in STUDIES if example != "punch-2d"]
     fig, axes = plt.subplots(1, len(hertz), figsize=(5 * len(hertz), 4))
     for ax, example in zip(axes, hertz):
+        degree = max(STUDIES[example][1])
         for (formulation, recovery), marker in zip(VARIANTS, ["o", "s", "^"]):
-            key = (example, 2, formulation, recovery)
+            key = (example, degree, formulation, recovery)
             if key in profiles:
                 r, p = profiles[key]
                 ax.plot(r, p, marker, markersize=2, alpha=0.5, linestyle="none", label=label(formulation, recovery))
         t = np.linspace(0.0, 1.5, 301)
         ax.plot(t, np.sqrt(np.maximum(0.0, 1.0 - t * t)), "k-", label="Hertz")
-        ax.set_title(example + ", P2, finest mesh")
+        ax.set_title("%s, P%d, finest mesh" % (example, degree))
         ax.set_xlabel("r / a (Hertz)")
         ax.set_ylabel("p / p0 (Hertz)")
         ax.legend(fontsize=7)
