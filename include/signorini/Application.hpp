@@ -16,9 +16,10 @@ namespace signorini {
 // The top level: sublists "Problem", "Solver" and "Output" with every default and doc.
 Teuchos::ParameterList validTopLevelParameters();
 
-// Every parameter with its default and documentation as an XML parameter list: the text
-// of xml/defaults.xml (signorini --defaults prints it).
-std::string defaultsXml();
+// The parameters with their defaults and documentation as an XML parameter list: the
+// common ones (signorini --defaults), or all of them, the expert ones (documented
+// "Expert: ...") included (signorini --defaults=all; the text of xml/defaults.xml).
+std::string defaultsXml(bool all = false);
 
 // Reads an XML parameter file on rank 0 and broadcasts it; throws InputError on every rank
 // if it cannot be read or parsed.

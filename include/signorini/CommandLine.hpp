@@ -1,7 +1,7 @@
 #pragma once
 // The command line of the signorini program:
 //   signorini FILE.xml [--output DIR] [--summary FILE.json] [--export-qp DIR]
-//             [--set "Sublist/name=value" ...] [--help] [--version] [--defaults]
+//             [--set "Sublist/name=value" ...] [--help] [--version] [--defaults[=all]]
 #include <string>
 #include <vector>
 
@@ -14,6 +14,7 @@ struct CommandLine {
   std::string exportQp;   // Matrix Market export directory
   std::vector<std::string> overrides;  // "Path/To/name=value"
   bool help = false, version = false, defaults = false;
+  bool allDefaults = false;  // --defaults=all
 
   // Throws InputError with the usage on a malformed command line.
   static CommandLine parse(int argc, const char* const* argv);

@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
         if (cl.version)
           std::cout << "signorini " << signorini::kVersion << " (" << signorini::kGitCommit << "), Trilinos "
                     << TRILINOS_VERSION_STRING << "\n";
-        if (cl.defaults) std::cout << signorini::defaultsXml();
+        if (cl.defaults) std::cout << signorini::defaultsXml(cl.allDefaults);
       }
       return 0;
     }

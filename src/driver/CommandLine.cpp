@@ -6,14 +6,15 @@ namespace signorini {
 
 std::string CommandLine::usage() {
   return "usage: signorini FILE.xml [--output DIR] [--summary FILE.json] [--export-qp DIR]\n"
-         "                 [--set \"Sublist/name=value\" ...] [--help] [--version] [--defaults]\n"
+         "                 [--set \"Sublist/name=value\" ...] [--help] [--version] [--defaults[=all]]\n"
          "  FILE.xml      parameter list with the sublists Problem, Solver and Output\n"
          "                (xml/defaults.xml documents every parameter)\n"
          "  --output      directory for solution.pvtu, summary.json, history.csv\n"
          "  --summary     also write the JSON summary to this file\n"
          "  --export-qp   write Q, b, A, d and the node coordinates in Matrix Market format\n"
          "  --set         override one parameter, e.g. --set \"Solver/method=primal\"\n"
-         "  --defaults    print every parameter with its default and documentation (XML)\n";
+         "  --defaults    print the common parameters with their defaults and documentation (XML);\n"
+         "                --defaults=all every parameter, the expert ones too\n";
 }
 
 CommandLine CommandLine::parse(int argc, const char* const* argv) {
@@ -26,8 +27,9 @@ CommandLine CommandLine::parse(int argc, const char* const* argv) {
     const std::string arg = argv[i];
     if (arg == "--help" || arg == "-h") {
       cl.help = true;
-    } else if (arg == "--defaults") {
+    } else if (arg == "--defaults" || arg == "--defaults=all") {
       cl.defaults = true;
+      cl.allDefaults = arg == "--defaults=all";
     } else if (arg == "--version") {
       cl.version = true;
     } else if (arg == "--output") {

@@ -81,7 +81,7 @@ ParameterList ProblemDefinition::validParameters() {
     p.set(std::string("body force: ") + axis, "0",
           std::string("Body force component ") + axis + ", an expression of x, y, z");
   p.set("load: quadrature degree", -1,
-        "Quadrature degree for body forces and tractions; -1: element degree + 4 (exact for "
+        "Expert: Quadrature degree for body forces and tractions; -1: element degree + 4 (exact for "
         "the benchmark family)",
         range(-1, 30));
 

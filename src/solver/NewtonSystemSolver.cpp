@@ -39,12 +39,12 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   krylov.set("maximum iterations", 1000, "Krylov iterations allowed per Newton system",
              rcp(new Teuchos::EnhancedNumberValidator<int>(1, 1000000)));
   krylov.set("initial guess: previous solutions", 2,
-             "Start each Newton system from the H-orthogonal projection of its solution on this many earlier "
+             "Expert: Start each Newton system from the H-orthogonal projection of its solution on this many earlier "
              "solutions (and the predictor's step, for the corrector), one application of H per vector; 0: "
              "start from zero",
              rcp(new Teuchos::EnhancedNumberValidator<int>(0, 20)));
   krylov.set("initial guess: contact correction", true,
-             "Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x): one "
+             "Expert: Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x): one "
              "application of H and one subspace solve per Newton system; needs Preconditioner/contact "
              "correction");
   Teuchos::ParameterList& prec = p.sublist("Preconditioner", false, "Preconditioner of H");
@@ -53,12 +53,12 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            "assembled Q + A^T D A, rebuilt as \"amg of H: rebuild tolerance\" says)",
            rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "amg of Q", "amg of H"))));
   prec.set("amg of H: rebuild tolerance", 0.0,
-           "Rebuild \"amg of H\" when the relative weight D_i / (D_i + q_i) of some constraint (q_i: its "
+           "Expert: Rebuild \"amg of H\" when the relative weight D_i / (D_i + q_i) of some constraint (q_i: its "
            "stiffness a_i^T diag(Q) a_i; D_i capped by amg of H: weight cap) moved by more than this since "
            "the last build; 0 rebuilds at every Newton step, 1 never after the first",
            rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
   prec.set("amg of H: weight cap", 10.0,
-           "With a contact correction, \"amg of H\" is built for Q + A^T D' A, D'_i = min(D_i, cap q_i) "
+           "Expert: With a contact correction, \"amg of H\" is built for Q + A^T D' A, D'_i = min(D_i, cap q_i) "
            "(filtering): weights far above a constraint's stiffness stay out of the coarse levels and the "
            "contact correction solves for them exactly. 0: no cap",
            rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1e300)));
@@ -72,11 +72,11 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            "\"algebraic\": MueLu alone; \"auto\": geometric on box meshes",
            rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("auto", "algebraic", "geometric"))));
   prec.set("geometric: coarsest size", 200,
-           "The geometric levels stop before a grid with fewer unknowns than this, or at one that cannot "
+           "Expert: The geometric levels stop before a grid with fewer unknowns than this, or at one that cannot "
            "be halved; MueLu takes over there",
            rcp(new Teuchos::EnhancedNumberValidator<int>(1, std::numeric_limits<int>::max())));
   prec.set("geometric: eigenvalue update steps", 5,
-           "Lanczos steps that update a smoother's largest-eigenvalue estimate when only the contact rows "
+           "Expert: Lanczos steps that update a smoother's largest-eigenvalue estimate when only the contact rows "
            "changed, from the previous Ritz vector; 0: a fresh estimate at every rebuild; 1 and 2 are "
            "rejected as too inaccurate",
            rcp(new Teuchos::EnhancedNumberValidator<int>(0, 1000)));

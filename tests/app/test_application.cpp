@@ -55,8 +55,24 @@ TEST(Application, EveryShippedXmlValidates) {
 }
 
 TEST(Application, DefaultsXmlIsCurrent) {
-  EXPECT_EQ(readFile(sourceDir() + "/xml/defaults.xml"), defaultsXml())
-      << "regenerate it: build/bin/signorini --defaults > xml/defaults.xml";
+  EXPECT_EQ(readFile(sourceDir() + "/xml/defaults.xml"), defaultsXml(true))
+      << "regenerate it: build/bin/signorini --defaults=all > xml/defaults.xml";
+}
+
+// --defaults leaves out the parameters documented as expert; --defaults=all shows them, and
+// both are valid parameter lists.
+TEST(Application, DefaultsHideExpertParameters) {
+  const std::string common = defaultsXml(false), all = defaultsXml(true);
+  EXPECT_EQ(common.find("Expert:"), std::string::npos);
+  EXPECT_NE(all.find("Expert:"), std::string::npos);
+  EXPECT_EQ(common.find("\"gamma: max\""), std::string::npos);
+  EXPECT_NE(all.find("\"gamma: max\""), std::string::npos);
+  EXPECT_NE(common.find("\"kkt: tolerance\""), std::string::npos);
+  const Teuchos::ParameterList valid = validTopLevelParameters();
+  for (const std::string& text : {common, all}) {
+    const auto list = Teuchos::getParametersFromXmlString(text);
+    EXPECT_EQ(inputErrorOf([&] { validatedParameters(*list, valid, ""); }), "");
+  }
 }
 
 TEST(Application, MisspelledNamesGetAHint) {
