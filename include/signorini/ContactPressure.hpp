@@ -34,14 +34,15 @@ struct ContactPressureSamples {
 
 class ContactPressure {
  public:
-  // Collective. `constraintMap` is A's range map: one constraint per constraint node, as the
+  // Collective. `constraintMap` is A's range map: one constraint per contact node, as the
   // assembler numbers them. Assembles M once.
   ContactPressure(const DistributedSpace& space, const ProblemDefinition& problem, const RCP<const Map>& constraintMap);
 
-  // p with M_LL p_L = -lambda_L (paper's sign, lambda <= 0) on the nodes L of the facets
-  // that have a node with active != 0, and p = 0 elsewhere, on the constraint map. Solved
-  // by CG on the symmetrically diagonal-scaled M to a relative residual of 1e-13.
-  // Collective. Throws Error if CG does not get there (a mass matrix: it always should).
+  // The pressure's nodal values on the constraint map, 0 off the nodes L of the facets that
+  // have a node with active != 0. Nodal constraints: M_LL p_L = -lambda_L (paper's sign,
+  // lambda <= 0), solved by CG on the symmetrically diagonal-scaled M to a relative residual
+  // of 1e-13; throws Error if CG does not get there (a mass matrix: it always should).
+  // Weighted gaps: the nodal values of -sum lambda_a psi_a. Collective.
   RCP<Vector> pressure(const Vector& lambda, const Vector& active) const;
 
   // p_j = -lambda_j / w_j with the HRZ-lumped boundary weights w (row sums for P1) on the

@@ -149,27 +149,19 @@ ContactConstraints nodalConstraints(const DistributedSpace& ds, const ProblemDef
   return {A, d};
 }
 
-// Row j, for the multiplier function psi_j of contact node j: the integral over Gamma_c of
-// psi_j (-n_o . u) <= the integral of psi_j g. Each rank integrates its own contact facets
-// (every global facet is on one rank) into the rows of their nodes, owned or not, and the
-// sums go to the owners.
-ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
-                                          const RCP<const Map>& constraintMap) {
+// The graph of the weighted-gap rows: each contact node's row holds the DOFs, in the
+// obstacle direction, of the nodes of the contact facets around it. Rows: the owned
+// constraints, then the others this rank's facets touch (FECrsGraph wants the owned rows
+// as a prefix).
+struct WeightedGapGraph {
+  RCP<FEGraph> graph;
+  RCP<const Map> overlapRows;
+};
+WeightedGapGraph weightedGapGraph(const DistributedSpace& ds, const std::vector<std::pair<long long, int>>& facets,
+                              const std::vector<long long>& constraintOf, const std::vector<int>& components,
+                              const RCP<const Map>& constraintMap) {
   const LagrangeSpace& space = ds.space();
-  const ContactMultiplierBasis psi(space.basis(), problem.contactFormulation);
-  const int dim = ds.dim(), npc = space.nodesPerCell();
-  const auto facets = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
-
-  const std::vector<long long> overlapConstraint = overlapNodeConstraints(ds, problem);
-  std::vector<long long> constraintOf(space.numNodes(), -1);
-  for (std::size_t i = 0; i < overlapConstraint.size(); ++i)
-    constraintOf[ds.overlapSpaceNodes()[i]] = overlapConstraint[i];
-
-  std::vector<int> components;
-  for (int c = 0; c < dim; ++c)
-    if (problem.obstacleDirection[c] != 0.0) components.push_back(c);
-  // Rows: the owned constraints, then the others this rank's facets touch (FECrsGraph wants
-  // the owned rows as a prefix); columns: the facet's DOFs in the obstacle direction.
+  const int dim = ds.dim();
   auto owned = constraintMap->getNodeElementList();
   std::vector<GlobalOrdinal> rows(owned.begin(), owned.end()), ghosts;
   std::map<GlobalOrdinal, std::vector<GlobalOrdinal>> columns;
@@ -202,26 +194,49 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
   graph->beginAssembly();
   for (const auto& [row, cols] : columns) graph->insertGlobalIndices(row, cols.size(), cols.data());
   graph->endAssembly();
+  return {graph, overlapRows};
+}
 
-  auto A = rcp(new FEMatrix(graph));
-  Vector dOverlap(overlapRows);
-  std::vector<double> coords((dim + 1) * dim);
+// Row j, for the multiplier function psi_j of contact node j: the integral over Gamma_c of
+// psi_j (-n_o . u) <= the integral of psi_j g. Each rank integrates its own contact facets
+// (every global facet is on one rank) into the rows of their nodes, owned or not, and the
+// sums go to the owners.
+ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
+                                          const RCP<const Map>& constraintMap) {
+  const LagrangeSpace& space = ds.space();
+  const ContactMultiplierBasis psi(space.basis(), problem.contactFormulation);
+  const int dim = ds.dim(), npc = space.nodesPerCell();
+  const auto facets = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
+  const std::vector<long long> overlapConstraint = overlapNodeConstraints(ds, problem);
+  std::vector<long long> constraintOf(space.numNodes(), -1);
+  for (std::size_t i = 0; i < overlapConstraint.size(); ++i)
+    constraintOf[ds.overlapSpaceNodes()[i]] = overlapConstraint[i];
+  std::vector<int> components;
+  for (int c = 0; c < dim; ++c)
+    if (problem.obstacleDirection[c] != 0.0) components.push_back(c);
+
+  const WeightedGapGraph pattern = weightedGapGraph(ds, facets, constraintOf, components, constraintMap);
+  auto A = rcp(new FEMatrix(pattern.graph));
+  Vector dOverlap(pattern.overlapRows);
+  std::vector<double> coords((dim + 1) * dim), psiValues, gapValues;
   FacetQuadrature rule;
-  std::vector<double> psiValues;
   const int degree = std::max(2 * space.degree(), problem.loadQuadratureDegree);
   A->beginAssembly();
   for (const auto& [cell, facet] : facets) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
     facetQuadrature(space.basis(), coords.data(), facet, degree, rule);
+    gapValues.resize(rule.size());
+    for (int q = 0; q < rule.size(); ++q) gapValues[q] = (*problem.gap)(&rule.points[q * dim], dim);
     const long long* nodes = space.cellNodes(cell);
     const std::vector<int> facetNodes = space.basis().facetNodes(facet);
     for (int a : facetNodes) {
       const GlobalOrdinal row = constraintOf[nodes[a]];
       psiValues.resize(rule.size());
-      for (int q = 0; q < rule.size(); ++q) psiValues[q] = psi.value(facet, a, &rule.phi[q * npc]);
       double gap = 0;
-      for (int q = 0; q < rule.size(); ++q)
-        gap += rule.weights[q] * psiValues[q] * (*problem.gap)(&rule.points[q * dim], dim);
+      for (int q = 0; q < rule.size(); ++q) {
+        psiValues[q] = psi.value(facet, a, &rule.phi[q * npc]);
+        gap += rule.weights[q] * psiValues[q] * gapValues[q];
+      }
       dOverlap.sumIntoGlobalValue(row, gap);
       for (int b : facetNodes) {
         double weight = 0;  // integral of psi_a N_b
@@ -236,7 +251,7 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
   }
   A->endAssembly();
   auto d = rcp(new Vector(constraintMap));
-  d->doExport(dOverlap, Export(overlapRows, constraintMap), Tpetra::ADD);
+  d->doExport(dOverlap, Export(pattern.overlapRows, constraintMap), Tpetra::ADD);
   return {A, d};
 }
 
