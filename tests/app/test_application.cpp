@@ -56,7 +56,7 @@ TEST(Application, EveryShippedXmlValidates) {
 
 TEST(Application, DefaultsXmlIsCurrent) {
   EXPECT_EQ(readFile(sourceDir() + "/xml/defaults.xml"), defaultsXml(true))
-      << "regenerate it: build/bin/signorini --defaults=all > xml/defaults.xml";
+      << "regenerate it: build/bin/signorini --defaults=all > xml/defaults.xml, then scripts/parameters_md.py";
 }
 
 // --defaults leaves out the parameters documented as expert; --defaults=all shows them, and
