@@ -15,11 +15,15 @@ class Expression {
   Expression& operator=(const Expression& other);
   ~Expression();
 
+  // The value at x (dim coordinates). Throws InputError naming `what`, the expression and
+  // the point if it is not finite (sqrt of a negative number, division by zero...).
   double operator()(const double* x, int dim) const;
   const std::string& text() const { return text_; }
   bool isConstantZero() const;
 
  private:
+  double evaluate(const double* x, int dim) const;  // unchecked
+
   struct Parser;
   std::string text_, what_;
   std::unique_ptr<Parser> parser_;

@@ -1,5 +1,8 @@
 #include "signorini/Expression.hpp"
 
+#include <cmath>
+#include <sstream>
+
 #include <muParser.h>
 
 #include "signorini/Error.hpp"
@@ -37,15 +40,28 @@ Expression& Expression::operator=(const Expression& other) {
 
 Expression::~Expression() = default;
 
-double Expression::operator()(const double* x, int dim) const {
+double Expression::evaluate(const double* x, int dim) const {
   for (int i = 0; i < 3; ++i) parser_->x[i] = i < dim ? x[i] : 0.0;
   return parser_->parser.Eval();
 }
 
+double Expression::operator()(const double* x, int dim) const {
+  const double value = evaluate(x, dim);
+  if (!std::isfinite(value)) {
+    std::ostringstream point;
+    point << "(" << x[0];
+    for (int i = 1; i < dim; ++i) point << ", " << x[i];
+    point << ")";
+    throw InputError(what_ + ": the expression \"" + text_ + "\" is " + (std::isnan(value) ? "not a number" : "infinite") +
+                     " at " + point.str() + "; give one that is finite on the whole boundary or domain");
+  }
+  return value;
+}
+
 bool Expression::isConstantZero() const {
+  // Probes that need not lie in the domain: evaluated without the finiteness check.
   const double origin[3] = {0.0, 0.0, 0.0}, probe[3] = {0.37, 0.71, 0.53};
-  return (*this)(origin, 3) == 0.0 && (*this)(probe, 3) == 0.0 &&
-         parser_->parser.GetUsedVar().empty();
+  return evaluate(origin, 3) == 0.0 && evaluate(probe, 3) == 0.0 && parser_->parser.GetUsedVar().empty();
 }
 
 }  // namespace signorini

@@ -13,6 +13,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/ElasticityAssembler.hpp"
+#include "signorini/Error.hpp"
 #include "signorini/SimplexQuadrature.hpp"
 #include "support/TestProblems.hpp"
 
@@ -249,6 +250,25 @@ TEST(ElasticityAssembler, WeightedGapRowsIntegrateAgainstTheVertexHats) {
       qp.A->apply(u, rows);
       EXPECT_NEAR(rows.meanValue() * rows.getGlobalLength(), dim == 2 ? 1.5 : 2.5, 1e-12) << what;
     }
+}
+
+// An expression that is not finite somewhere in the domain is an input error naming the
+// parameter, the expression and a point, on every rank that meets it.
+TEST(ElasticityAssembler, NonFiniteExpressionsAreInputErrors) {
+  Teuchos::ParameterList problem = signorini::testing::boxProblem(2, 4, 1);
+  problem.set("body force: y", "sqrt(-1-x)");
+  try {
+    buildProblem(problem, Tpetra::getDefaultComm());
+    ADD_FAILURE() << "a NaN body force was accepted";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("body force: y"), std::string::npos) << message;
+    EXPECT_NE(message.find("sqrt(-1-x)"), std::string::npos) << message;
+    EXPECT_NE(message.find("not a number at ("), std::string::npos) << message;
+  }
+  // An expression whose singularity lies outside the domain is accepted.
+  problem.set("body force: y", "1/(x+1)");
+  EXPECT_NO_THROW(buildProblem(problem, Tpetra::getDefaultComm()));
 }
 
 }  // namespace
