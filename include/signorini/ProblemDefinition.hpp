@@ -28,6 +28,12 @@ struct BoundaryField {
 //                constraints carry no force; the multipliers are the pressure's coefficients.
 enum class ContactFormulation { nodal, weightedGap };
 
+// A Gmsh mesh to read: its file as given (empty for a box mesh) and the .geo size factor.
+struct GmshSource {
+  std::string file;
+  double sizeFactor = 1.0;
+};
+
 struct ProblemDefinition {
   std::string name;
   std::string meshType;  // "box" or "gmsh"
@@ -49,6 +55,8 @@ struct ProblemDefinition {
   static Teuchos::ParameterList validParameters();
   // `dim` of a Gmsh mesh is only known once it is read: pass it then (0 = from the list).
   static ProblemDefinition fromParameters(const Teuchos::ParameterList& problem, int meshDim = 0);
+  // The mesh file alone, checked, before the mesh and so its dimension are known.
+  static GmshSource gmshSource(const Teuchos::ParameterList& problem);
 };
 
 }  // namespace signorini

@@ -51,19 +51,21 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     setup.start(true);
     const double residentBefore = residentMiB();
     // Only rank 0 makes the global mesh, once; DistributedSpace frees it after sending each
-    // rank its part. The definition is read twice for a Gmsh mesh: the file decides the dimension.
-    ProblemDefinition def = ProblemDefinition::fromParameters(problem);
+    // rank its part. A Gmsh file decides the dimension the rest of the definition is read with.
+    const GmshSource gmsh = ProblemDefinition::gmshSource(problem);
+    ProblemDefinition def;
+    if (gmsh.file.empty()) def = ProblemDefinition::fromParameters(problem);
     std::shared_ptr<SimplexMesh> mesh;
     detail::runOnRoot(*comm, [&] {
-      if (def.meshType == "gmsh") {
-        std::filesystem::path file(def.meshFile);
+      if (!gmsh.file.empty()) {
+        std::filesystem::path file(gmsh.file);
         if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
-        mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), def.meshSizeFactor));
+        mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor));
       } else {
         mesh = std::make_shared<SimplexMesh>(makeBoxMesh(def.dim, def.cells, def.lengths));
       }
     });
-    if (def.meshType == "gmsh") {
+    if (!gmsh.file.empty()) {
       int dim = mesh ? mesh->dim : 0;
       Teuchos::broadcast(*comm, 0, 1, &dim);
       def = ProblemDefinition::fromParameters(problem, dim);

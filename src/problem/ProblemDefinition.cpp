@@ -120,6 +120,14 @@ ParameterList ProblemDefinition::validParameters() {
   return p;
 }
 
+GmshSource ProblemDefinition::gmshSource(const ParameterList& user) {
+  const ParameterList p = validatedParameters(user, validParameters(), "Problem");
+  if (p.get<std::string>("mesh: type") != "gmsh") return {};
+  const std::string file = p.get<std::string>("mesh: file");
+  if (file.empty()) throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
+  return {file, p.get<double>("mesh: size factor")};
+}
+
 ProblemDefinition ProblemDefinition::fromParameters(const ParameterList& user, int meshDim) {
   const ParameterList p = validatedParameters(user, validParameters(), "Problem");
   ProblemDefinition def;

@@ -1,6 +1,7 @@
 // The contact problems of examples/hertz on meshes small enough for every run: the rigid
-// cylinder (plane strain), the Gmsh half-disk and half-ball, and the rigid sphere against Hertz' solution
-// for the computed force, and the flat punch against the half-space solution. The full
+// cylinder (plane strain), the Gmsh half-disk and half-ball, and the rigid sphere (box and deep
+// Gmsh block) against Hertz' solution for the computed force, the deep block also against the
+// force-approach law, and the flat punch against the half-space solution. The full
 // refinement study is scripts/hertz.py.
 #include <gtest/gtest.h>
 
@@ -179,6 +180,20 @@ TEST(Hertz, SphereWithWeightedGapsConvergesToHertz) {
   EXPECT_LT(std::abs(fine.radius), std::abs(coarse.radius));
   EXPECT_LT(std::abs(fine.peak), std::abs(coarse.peak));
   EXPECT_LT(fine.l2, coarse.l2);
+}
+
+// A rigid sphere pressed into a block deep against the contact radius (Gmsh, graded towards
+// the contact), P2 on the coarse mesh: the force within 3% of the force-approach law
+// P = (4/3) E* sqrt(R) delta^(3/2) for the approach delta = 0.0004 the example prescribes, the
+// contact radius and the peak pressure within 3% of Hertz for that force.
+TEST(Hertz, DeepBlockFollowsTheForceApproachLaw) {
+  const ContactSolution s = solveExample("deep-block-3d", 2, "mesh: size factor", 2.0);
+  const double eStar = 1.0 / (1.0 - 0.3 * 0.3), delta = 0.0004;
+  const double law = 4.0 / 3.0 * eStar * std::pow(delta, 1.5);
+  EXPECT_LT(std::abs(s.stats.normalForce / law - 1.0), 0.03);
+  const HertzErrors errors = hertzErrors(s, 0.0);
+  EXPECT_LT(std::abs(errors.radius), 0.03);
+  EXPECT_LT(std::abs(errors.peak), 0.03);
 }
 
 TEST(Hertz, SphereContactRadiusConvergesToHertz) {
