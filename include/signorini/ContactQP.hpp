@@ -2,9 +2,9 @@
 // The discrete frictionless contact problem, the interface between problem assembly and the
 // interior point solvers (and where library users hand over their own problem):
 //     minimise J(v) = 1/2 v^T Q v - b^T v   subject to   A v <= d.
-#include <optional>
+#include <memory>
 
-#include "signorini/BoxGrid.hpp"
+#include "signorini/GeometricGrid.hpp"
 #include "signorini/TpetraTypes.hpp"
 
 namespace signorini {
@@ -17,7 +17,7 @@ struct ContactQP {
   RCP<const MultiVector> nullspace;    // optional: rigid body modes on Q's domain map (for MueLu)
   RCP<const MultiVector> coordinates;  // optional: node coordinates on a node map (for MueLu)
   int blockSize = 1;                   // unknowns per node (dof = blockSize * node + component)
-  std::optional<BoxGrid> grid;         // optional: the box a box mesh subdivides (geometric multigrid)
+  std::shared_ptr<const GeometricGrid> grid;  // optional: the mesh's P1 grid (geometric multigrid)
 
   // Q as an assembled matrix, or null when Q is only an operator.
   RCP<const CrsMatrix> Qmatrix() const;

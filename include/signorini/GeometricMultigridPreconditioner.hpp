@@ -1,10 +1,10 @@
 #pragma once
-// Geometric multigrid for a space on a box mesh (makeBoxMesh): below the fine space lies a
-// sequence of box grids with half the cells of the one above (a P_k space, k > 1, first goes
-// to P1 on its own mesh), each a P1 space on the subdivision of doc/benchmark-family.md, joined by
-// P1 interpolation P. The coarse matrices are Galerkin products P^T A P, the smoother is
-// Ifpack2's Chebyshev, and once a grid has fewer unknowns than "coarsest size" or cannot
-// be halved, MueLu's algebraic multigrid, with the grid's rigid body modes, takes over.
+// Geometric multigrid: below the fine space lies the sequence of grids a GeometricGrid gives
+// (for a box mesh, box grids with half the cells of the one above; a P_k space, k > 1, first
+// goes to P1 on its own mesh's grid), each a P1 space, joined by P1 interpolation P. The
+// coarse matrices are Galerkin products P^T A P, the smoother is Ifpack2's Chebyshev, and
+// once a grid has fewer unknowns than "coarsest size" or has no coarser one, MueLu's
+// algebraic multigrid, with the grid's rigid body modes, takes over.
 // The cycle is a V-cycle, symmetric positive definite for CG.
 //
 // Why: smoothed aggregation on these meshes needs more CG iterations as the mesh is refined
@@ -21,7 +21,7 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "signorini/BoxGrid.hpp"
+#include "signorini/GeometricGrid.hpp"
 #include "signorini/MueLuPreconditioner.hpp"
 #include "signorini/MultilevelPreconditioner.hpp"
 #include "signorini/TpetraTypes.hpp"
@@ -33,7 +33,7 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // The Ifpack2 Chebyshev parameters used where the user's "smoother" list is silent.
   static Teuchos::ParameterList defaultSmootherParameters();
 
-  // `grid`: the box the fine space's mesh subdivides; `Q`: the fine matrix (its pattern and
+  // `grid`: the P1 grid of the fine space's mesh; `Q`: the fine matrix (its pattern and
   // Dirichlet rows are those of every matrix given to compute()); `coordinates`: the owned
   // fine nodes, on a node map with Q's DOF = blockSize * node + component. Collective.
   // `eigenvalueUpdateSteps`: Lanczos steps of the smoothers' eigenvalue estimates after a
@@ -41,7 +41,7 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // (0: a fresh estimate of "chebyshev: eigenvalue max iterations" steps at every build; the
   // default, 5, is Preconditioner/geometric: eigenvalue update steps in NewtonSystemSolver).
   // Throws InputError when the nodes do not contain the coarse grid's vertices.
-  GeometricMultigridPreconditioner(const BoxGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates,
+  GeometricMultigridPreconditioner(const GeometricGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates,
                                    int blockSize, long long coarsestSize, const Teuchos::ParameterList& smoother,
                                    const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps);
   ~GeometricMultigridPreconditioner() override;
@@ -53,7 +53,7 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   int geometricLevels() const { return static_cast<int>(levels_.size()) - 1; }
   std::vector<long long> levelSizes() const;
   // The interpolation from level l + 1 to level l (l = 0: to the fine space). Coarse DOF
-  // blockSize * v + c is component c at vertex v of that level's grid (BoxGrid numbering).
+  // blockSize * v + c is component c at vertex v of that level's grid (GeometricGrid numbering).
   RCP<const CrsMatrix> prolongator(int level) const;
   // The matrix of level l (0: the fine one given to compute(), then the Galerkin products).
   // After the first compute(), a fine matrix on the previous one's graph updates them in

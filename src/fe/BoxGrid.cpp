@@ -125,4 +125,15 @@ BoxGrid BoxGrid::halved() const {
   return coarse;
 }
 
+std::shared_ptr<const GeometricGrid> BoxGrid::coarser() const {
+  if (!halvable()) return nullptr;
+  return std::make_shared<BoxGrid>(halved());
+}
+
+std::string BoxGrid::description() const {
+  std::string text;
+  for (int a = 0; a < dim; ++a) text += (a ? " x " : "") + std::to_string(cells[a]);
+  return text + " box grid";
+}
+
 }  // namespace signorini

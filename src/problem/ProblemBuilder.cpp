@@ -11,6 +11,7 @@
 #include <Teuchos_Time.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
+#include "signorini/BoxGrid.hpp"
 #include "signorini/BoxMesh.hpp"
 #include "signorini/ElasticityAssembler.hpp"
 #include "signorini/Error.hpp"
@@ -81,7 +82,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     assembly.start(true);
     result.qp = assembleContactQP(*result.space, result.definition);
     if (result.definition.meshType == "box")
-      result.qp.grid = BoxGrid{result.definition.dim, result.definition.cells, result.definition.lengths};
+      result.qp.grid = std::make_shared<BoxGrid>(result.definition.dim, result.definition.cells,
+                                                 result.definition.lengths);
     assembly.stop();
   }
   result.setupSeconds = maxOverRanks(*comm, setup.totalElapsedTime());

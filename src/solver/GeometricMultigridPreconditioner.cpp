@@ -16,6 +16,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/Error.hpp"
+#include "signorini/GeometricGrid.hpp"
 #include "signorini/RigidBodyModes.hpp"
 
 namespace signorini {
@@ -38,11 +39,11 @@ namespace {
 // P1 interpolation from the grid `coarse` to the owned fine nodes; fills the coarse level's
 // DOF map (the coarse vertices at this rank's fine nodes), coordinates and Dirichlet flags.
 // Collective.
-RCP<CrsMatrix> interpolation(const BoxGrid& coarse, int blockSize, const RCP<const Map>& fineMap,
+RCP<CrsMatrix> interpolation(const GeometricGrid& coarse, int blockSize, const RCP<const Map>& fineMap,
                                  const std::vector<double>& fineCoordinates, const std::vector<char>& fineDirichlet,
                                  RCP<const Map>& coarseMap, std::vector<double>& coarseCoordinates,
                                  std::vector<char>& coarseDirichlet) {
-  const int dim = coarse.dim;
+  const int dim = coarse.dimension();
   const std::size_t numFine = fineCoordinates.size() / dim;
   const auto comm = fineMap->getComm();
   // The coarse vertices this rank owns: those at one of its fine nodes.
@@ -67,9 +68,8 @@ RCP<CrsMatrix> interpolation(const BoxGrid& coarse, int blockSize, const RCP<con
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   coarseMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(dofs), 0, comm));
   if (coarseMap->getGlobalNumElements() != static_cast<Tpetra::global_size_t>(blockSize * coarse.numVertices()))
-    throw InputError("geometric multigrid: the mesh's nodes are not the vertices of a refinement of a " +
-                     std::to_string(coarse.cells[0]) + "-cell box grid; use Preconditioner/hierarchy "
-                     "\"algebraic\"");
+    throw InputError("geometric multigrid: the mesh's nodes are not the vertices of a refinement of the " +
+                     coarse.description() + "; use Preconditioner/hierarchy \"algebraic\"");
 
   // Every fine node's simplex and weights; the Dirichlet flags of the coarse DOFs they use.
   std::vector<long long> vertices(numFine * (dim + 1));
@@ -281,14 +281,14 @@ Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParamete
 }
 
 GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
-    const BoxGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates, int blockSize, long long coarsestSize,
+    const GeometricGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates, int blockSize, long long coarsestSize,
     const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps)
     : smoother_(defaultSmootherParameters()), eigenvalueUpdateSteps_(eigenvalueUpdateSteps) {
   smoother_.setParameters(smoother);
   // One step is the Rayleigh quotient of the start: at 2D nx = 800 CG then did not converge.
   if (eigenvalueUpdateSteps == 1 || eigenvalueUpdateSteps == 2 || eigenvalueUpdateSteps < 0)
     throw InputError("Preconditioner/geometric: eigenvalue update steps must be 0 (fresh estimates) or at least 3");
-  const int dim = grid.dim;
+  const int dim = grid.dimension();
   if (static_cast<int>(coordinates.getNumVectors()) != dim || blockSize < 1 ||
       Q.getRowMap()->getNodeNumElements() != blockSize * coordinates.getLocalLength())
     throw Error("GeometricMultigridPreconditioner: coordinates, block size and Q do not match");
@@ -314,25 +314,17 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
   levels_.push_back(fine);
 
   // A P_k space (more nodes than the grid's vertices) goes to P1 on its own mesh first.
-  BoxGrid current = grid;
   const bool isP1 = Q.getGlobalNumRows() == static_cast<Tpetra::global_size_t>(blockSize * grid.numVertices());
-  bool first = true;
-  while (true) {
-    BoxGrid next = current;
-    if (!(first && !isP1)) {
-      if (!current.halvable()) break;
-      next = current.halved();
-    }
-    if (blockSize * next.numVertices() < coarsestSize) break;
+  std::shared_ptr<const GeometricGrid> owner;  // keeps `next` alive
+  const GeometricGrid* next = isP1 ? (owner = grid.coarser()).get() : &grid;
+  for (; next && blockSize * next->numVertices() >= coarsestSize; owner = next->coarser(), next = owner.get()) {
     auto coarse = std::make_shared<Level>();
     const Level& above = *levels_.back();
-    levels_.back()->P = interpolation(next, blockSize, above.dofMap, above.coordinates, above.dirichlet,
+    levels_.back()->P = interpolation(*next, blockSize, above.dofMap, above.coordinates, above.dirichlet,
                                           coarse->dofMap, coarse->coordinates, coarse->dirichlet);
     Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node> transposer(levels_.back()->P);
     levels_.back()->R = transposer.createTranspose();
     levels_.push_back(coarse);
-    current = next;
-    first = false;
   }
 
   // The coarsest level's rigid body modes and coordinates for MueLu.

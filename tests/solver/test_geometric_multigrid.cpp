@@ -12,6 +12,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/BarrierHessianOperator.hpp"
+#include "signorini/BoxGrid.hpp"
 #include "signorini/Error.hpp"
 #include "signorini/GeometricMultigridPreconditioner.hpp"
 #include "signorini/InteriorPointSolver.hpp"
@@ -95,15 +96,14 @@ TEST(GeometricMultigrid, InterpolationIsExactForLinearFields) {
       return c.clamped ? (1.0 - top) * (a + 1) : linear + 3 * top;
     };
     RCP<const CrsMatrix> P = gmg.prolongator(0);
-    BoxGrid coarse = *qp.grid;
-    if (c.degree == 1) coarse = coarse.halved();
+    const auto coarse = c.degree == 1 ? qp.grid->coarser() : qp.grid;
     Vector uc(P->getDomainMap()), u(P->getRangeMap());
     {
       auto d = uc.getDataNonConst();
       for (std::size_t k = 0; k < uc.getLocalLength(); ++k) {
         const GlobalOrdinal dof = P->getDomainMap()->getGlobalElement(k);
         double x[3];
-        coarse.vertexCoordinates(dof / qp.blockSize, x);
+        coarse->vertexCoordinates(dof / qp.blockSize, x);
         d[k] = field(x, static_cast<int>(dof % qp.blockSize));
       }
     }
@@ -250,7 +250,7 @@ TEST(GeometricMultigrid, UpdatedEigenvalueEstimatesKeepTheCgCounts) {
 // A grid that the mesh does not refine is an input error, not a wrong preconditioner.
 TEST(GeometricMultigrid, RejectsAGridTheMeshDoesNotRefine) {
   const AssembledProblem problem = box(2, 8, 1);
-  BoxGrid wrong = *problem.qp.grid;
+  BoxGrid wrong = dynamic_cast<const BoxGrid&>(*problem.qp.grid);
   wrong.cells = {6, 6, 1};  // halved: vertices at thirds, which the 8-cell mesh lacks
   EXPECT_THROW(GeometricMultigridPreconditioner(wrong, *problem.qp.Qmatrix(), *problem.qp.coordinates, 2, 1,
                                                 Teuchos::ParameterList(), Teuchos::ParameterList(), 5),
