@@ -1,11 +1,16 @@
 #!/usr/bin/env python3
 """Hertz validation: refinement studies of a rigid cylinder (2D) and sphere (3D) pressed into
-an elastic block, of an elastic half-disk meshed by Gmsh pressed onto a rigid plane, and of
-a rigid flat punch (examples/hertz/). For each run, the computed contact half-width or radius,
-peak pressure and the L2 error of the pressure on the contact boundary are compared with
-Hertz' solution for the computed total force. Writes bench/results/hertz.{json,md,png}.
+an elastic block, of a rigid sphere pressed into a deep block meshed by Gmsh, of an elastic
+half-disk and half-ball meshed by Gmsh pressed onto a rigid plane, and of a rigid flat punch
+(examples/hertz/). For each run, the computed contact half-width or radius, peak pressure and
+the L2 error of the pressure on the contact boundary are compared with Hertz' solution for the
+computed total force; on the deep block, the force against the force-approach law
+P = (4/3) E* sqrt(R) delta^(3/2) for several approaches delta. Writes
+bench/results/hertz.{json,md,png} and hertz-profiles.png.
 
-    scripts/hertz.py [--build build] [--np 2] [--quick]
+    scripts/hertz.py [--build build] [--np 2] [--quick] [--only EXAMPLE ...]
+
+--only reruns the named studies and keeps the other rows of the existing JSON.
 """
 import argparse
 import json
@@ -30,11 +35,14 @@ STUDIES = {
 }
 STUDIES["half-disk-2d"] = (2, {1: [2.0, 1.0, 0.5, 0.25], 2: [2.0, 1.0, 0.5, 0.25]})
 STUDIES["half-ball-3d"] = (3, {1: [2.0, 1.4, 1.0, 0.7]})
+STUDIES["deep-block-3d"] = (3, {1: [1.4, 1.0, 0.7], 2: [2.0, 1.4]})
 STUDIES["punch-2d"] = (2, {1: [(80, 40), (160, 80), (320, 160)], 2: [(40, 20), (80, 40), (160, 80)]})
 PUNCH_HALF_WIDTH = 0.25
-GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004, "half-ball-3d": 0.01}  # the .geo's mesh size at the contact, factor 1
+GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004, "half-ball-3d": 0.01, "deep-block-3d": 0.002}  # the .geo's mesh size at the contact, factor 1
 QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}, "half-disk-2d": {1: 2, 2: 2},
-         "half-ball-3d": {1: 2}, "punch-2d": {1: 2, 2: 2}}
+         "half-ball-3d": {1: 2}, "deep-block-3d": {1: 1, 2: 1}, "punch-2d": {1: 2, 2: 2}}
+# The force-approach law on the deep block: (degree, mesh size factor) and the approaches.
+FORCE_APPROACH = (2, 1.4, [0.0002, 0.0004, 0.0008])
 # (Contact/formulation, Output/contact pressure): the nodal constraints with both pressure
 # recoveries, and weighted gaps, whose multipliers are the pressure.
 VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("weighted gap", "auto")]
@@ -70,7 +78,7 @@ def spacing(example, dim, mesh):
     return 1.0 / mesh[0] * (2.0 if dim == 2 else 1.0)
 
 
-def run(args, example, degree, cells, formulation, recovery, directory):
+def run(args, example, degree, cells, formulation, recovery, directory, settings=()):
     xml = os.path.join(ROOT, "examples", "hertz", example + ".xml")
     cmd = ["mpirun", "-np", str(args.np), os.path.join(args.build, "bin", "signorini"), xml,
            "--set", mesh_setting(cells),
@@ -78,6 +86,8 @@ def run(args, example, degree, cells, formulation, recovery, directory):
            "--set", "Output/write solution=false", "--set", "Output/write history=false",
            "--set", "Problem/Contact/formulation=" + formulation,
            "--set", "Output/contact pressure=" + recovery, "--output", directory]
+    for setting in settings:
+        cmd += ["--set", setting]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(directory, "summary.json")) as f:
         summary = json.load(f)
@@ -119,39 +129,84 @@ def main():
     parser.add_argument("--build", default=os.path.join(ROOT, "build"))
     parser.add_argument("--np", type=int, default=2)
     parser.add_argument("--quick", action="store_true", help="the two coarsest meshes of each study only")
+    parser.add_argument("--only", nargs="+", choices=list(STUDIES), help="rerun these studies only")
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "hertz"))
     args = parser.parse_args()
-    e_star = 1.0 / (1.0 - 0.3 ** 2)
-    geometry = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0), "half-disk-2d": ((0.0, 0.0), 1.0),
-                "half-ball-3d": ((0.0, 0.0), 1.0), "punch-2d": ((1.0, 0.0), None)}
-    rows, profiles = [], {}
+    results = {"provenance": {}, "rows": [], "profiles": [], "force_approach": None}
+    if args.only:
+        with open(args.out + ".json") as f:
+            results = json.load(f)
+        results["rows"] = [r for r in results["rows"] if r["example"] not in args.only]
+        results["profiles"] = [p for p in results["profiles"] if p["example"] not in args.only]
     with tempfile.TemporaryDirectory() as tmp:
-        for example, (dim, plan) in STUDIES.items():
-            center, radius = geometry[example]
-            for degree, meshes in plan.items():
-                for cells in meshes[:QUICK[example][degree]] if args.quick else meshes:
-                    for formulation, recovery in VARIANTS:
-                        summary, samples = run(args, example, degree, cells, formulation, recovery, tmp)
-                        row = {"example": example, "d": dim, "degree": degree, "mesh": mesh_label(cells),
-                               "h": spacing(example, dim, cells), "n": summary["n"],
-                               "m": summary["m"], "formulation": formulation, "recovery": recovery,
-                               "converged": summary["converged"], "seconds": summary["time"]["total"]}
-                        if example == "punch-2d":
-                            row.update(measure_punch(summary, samples, center))
-                        else:
-                            row.update(measure(dim, summary, samples, center, radius, e_star))
-                            profiles[(example, degree, formulation, recovery)] = profile(
-                                dim, samples, center, row["a_hertz"], row["p0_hertz"])
-                        rows.append(row)
-                        print("%-12s P%d %-14s %-24s a %+6.2f%%  p0 %+6.2f%%  L2 %.4f" % (
-                            example, degree, mesh_label(cells), label(formulation, recovery), 100 * row["a_error"],
-                            100 * row["p0_error"], row["l2_error"]), flush=True)
-    add_orders(rows)
+        for example in args.only or STUDIES:
+            rows, profiles, summary = run_study(args, example, tmp)
+            results["rows"] += rows
+            results["profiles"] += profiles
+            results["provenance"][example] = provenance(args, summary)
+            if example == "deep-block-3d":
+                results["force_approach"] = force_approach(args, tmp)
+    order = list(STUDIES)
+    results["rows"].sort(key=lambda r: order.index(r["example"]))  # stable: each study keeps its order
+    add_orders(results["rows"])
     with open(args.out + ".json", "w") as f:
-        json.dump({"provenance": provenance(args, summary), "rows": rows}, f, indent=1)
-    write_table(rows, args.out + ".md")
-    plot(rows, args.out + ".png")
-    plot_profiles(profiles, args.out + "-profiles.png")
+        json.dump(results, f, indent=1)
+    write_table(results, args.out + ".md")
+    plot(results["rows"], args.out + ".png")
+    plot_profiles(results["profiles"], args.out + "-profiles.png")
+
+
+E_STAR = 1.0 / (1.0 - 0.3 ** 2)
+GEOMETRY = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0), "deep-block-3d": ((0.0, 0.0), 1.0),
+            "half-disk-2d": ((0.0, 0.0), 1.0), "half-ball-3d": ((0.0, 0.0), 1.0), "punch-2d": ((1.0, 0.0), None)}
+
+
+def run_study(args, example, tmp):
+    """Every mesh, degree and constraint variant of one example: table rows, and the pressure
+    profiles of the finest mesh per degree."""
+    dim, plan = STUDIES[example]
+    center, radius = GEOMETRY[example]
+    rows, profiles = [], {}
+    for degree, meshes in plan.items():
+        for cells in meshes[:QUICK[example][degree]] if args.quick else meshes:
+            for formulation, recovery in VARIANTS:
+                summary, samples = run(args, example, degree, cells, formulation, recovery, tmp)
+                row = {"example": example, "d": dim, "degree": degree, "mesh": mesh_label(cells),
+                       "h": spacing(example, dim, cells), "n": summary["n"],
+                       "m": summary["m"], "formulation": formulation, "recovery": recovery,
+                       "converged": summary["converged"], "seconds": summary["time"]["total"]}
+                if example == "punch-2d":
+                    row.update(measure_punch(summary, samples, center))
+                else:
+                    row.update(measure(dim, summary, samples, center, radius, E_STAR))
+                    r, p = profile(dim, samples, center, row["a_hertz"], row["p0_hertz"])
+                    profiles[(degree, formulation, recovery)] = {
+                        "example": example, "degree": degree, "formulation": formulation, "recovery": recovery,
+                        "r": r, "p": p}
+                rows.append(row)
+                print("%-13s P%d %-14s %-24s a %+6.2f%%  p0 %+6.2f%%  L2 %.4f" % (
+                    example, degree, mesh_label(cells), label(formulation, recovery), 100 * row["a_error"],
+                    100 * row["p0_error"], row["l2_error"]), flush=True)
+    return rows, list(profiles.values()), summary
+
+
+def force_approach(args, tmp):
+    """The deep block at several approaches delta (the top face's displacement; the sphere
+    touches the block at delta = 0): the force against P = (4/3) E* sqrt(R) delta^(3/2) and
+    the observed exponent of P(delta) between consecutive approaches."""
+    degree, factor, approaches = FORCE_APPROACH
+    rows = []
+    for delta in approaches:
+        summary, _ = run(args, "deep-block-3d", degree, factor, "nodal", "auto", tmp,
+                         ["Problem/Dirichlet/top/displacement: z=%g" % -delta])
+        force = summary["contact"]["normal_force"]
+        law = 4.0 / 3.0 * E_STAR * math.sqrt(GEOMETRY["deep-block-3d"][1]) * delta ** 1.5
+        rows.append({"delta": delta, "force": force, "force_law": law, "error": force / law - 1.0,
+                     "exponent": None if not rows else math.log(force / rows[-1]["force"]) / math.log(
+                         delta / rows[-1]["delta"])})
+        print("deep-block-3d P%d size x%g delta %g: P / P_law - 1 = %+.2f%%" % (degree, factor, delta,
+                                                                              100 * rows[-1]["error"]), flush=True)
+    return {"degree": degree, "mesh": mesh_label(factor), "n": summary["n"], "rows": rows}
 
 
 def provenance(args, summary):
@@ -160,7 +215,9 @@ def provenance(args, summary):
     import platform
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], cwd=ROOT, capture_output=True,
                             text=True).stdout.strip()
-    return {"command": "scripts/hertz.py" + (" --quick" if args.quick else ""), "commit": commit or "unknown",
+    command = "scripts/hertz.py" + (" --quick" if args.quick else "") + (
+        " --only " + " ".join(args.only) if args.only else "")
+    return {"command": command, "commit": commit or "unknown",
             "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
             "host": platform.node(), "cores": os.cpu_count(), "ranks": args.np,
             "build": summary.get("signorini", {})}
@@ -184,14 +241,23 @@ def add_orders(rows):
             fine["l2_order"] = math.log(coarse["l2_error"] / fine["l2_error"]) / math.log(coarse["h"] / fine["h"])
 
 
-def write_table(rows, path):
+def write_table(results, path):
     lines = ["| example | P | mesh | n | constraints | a / a_Hertz - 1 | p0 / p0_Hertz - 1 | L2 error of p | order |",
              "|---|---|---|---|---|---|---|---|---|"]
-    for r in rows:
+    for r in results["rows"]:
         order = "" if r["l2_order"] is None else "%.2f" % r["l2_order"]
         lines.append("| %s | %d | %s | %d | %s | %+.2f%% | %+.2f%% | %.4f | %s |" % (
             r["example"], r["degree"], r["mesh"], r["n"], label(r["formulation"], r["recovery"]),
             100 * r["a_error"], 100 * r["p0_error"], r["l2_error"], order))
+    fa = results.get("force_approach")
+    if fa:
+        lines += ["", "Force-approach law on deep-block-3d, P%d, mesh %s (n = %d):" % (fa["degree"], fa["mesh"], fa["n"]),
+                  "", "| approach delta | P | (4/3) E* sqrt(R) delta^(3/2) | P / law - 1 | exponent |",
+                  "|---|---|---|---|---|"]
+        for r in fa["rows"]:
+            exponent = "" if r["exponent"] is None else "%.3f" % r["exponent"]
+            lines.append("| %g | %.5g | %.5g | %+.2f%% | %s |" % (r["delta"], r["force"], r["force_law"],
+                                                                   100 * r["error"], exponent))
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
 
@@ -224,15 +290,16 @@ def plot_profiles(profiles, path):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    hertz = [example for example in STUDIES if example != "punch-2d"]
+    hertz = [example for example in STUDIES if any(p["example"] == example for p in profiles)]
     fig, axes = plt.subplots(1, len(hertz), figsize=(5 * len(hertz), 4))
     for ax, example in zip(axes, hertz):
-        degree = max(STUDIES[example][1])
+        degree = max(p["degree"] for p in profiles if p["example"] == example)
         for (formulation, recovery), marker in zip(VARIANTS, ["o", "s", "^"]):
-            key = (example, degree, formulation, recovery)
-            if key in profiles:
-                r, p = profiles[key]
-                ax.plot(r, p, marker, markersize=2, alpha=0.5, linestyle="none", label=label(formulation, recovery))
+            for p in profiles:
+                if (p["example"], p["degree"], p["formulation"], p["recovery"]) == (example, degree, formulation,
+                                                                                   recovery):
+                    ax.plot(p["r"], p["p"], marker, markersize=2, alpha=0.5, linestyle="none",
+                            label=label(formulation, recovery))
         t = np.linspace(0.0, 1.5, 301)
         ax.plot(t, np.sqrt(np.maximum(0.0, 1.0 - t * t)), "k-", label="Hertz")
         ax.set_title("%s, P%d, finest mesh" % (example, degree))
