@@ -15,7 +15,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/ProblemBuilder.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "signorini/problem/ProblemBuilder.hpp"
 
 int main(int argc, char** argv) {
   Tpetra::ScopeGuard tpetra(&argc, &argv);

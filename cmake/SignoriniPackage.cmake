@@ -8,8 +8,8 @@ install(TARGETS signorini EXPORT SignoriniTargets
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(TARGETS signorini_app RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/signorini DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(FILES ${PROJECT_BINARY_DIR}/include/signorini/Version.hpp
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/signorini)
+install(FILES ${PROJECT_BINARY_DIR}/include/signorini/core/Version.hpp
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/signorini/core)
 install(FILES ${PROJECT_SOURCE_DIR}/cmake/FindMETIS.cmake ${PROJECT_SOURCE_DIR}/cmake/SignoriniTrilinos.cmake
         DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/Signorini)
 install(EXPORT SignoriniTargets NAMESPACE Signorini:: DESTINATION ${CMAKE_INSTALL_LIBDIR}/cmake/Signorini)

@@ -8,9 +8,10 @@ computed total force; on the deep block, the force against the force-approach la
 P = (4/3) E* sqrt(R) delta^(3/2) for several approaches delta. Writes
 bench/results/hertz.{json,md,png} and hertz-profiles.png.
 
-    scripts/hertz.py [--build build] [--np 2] [--quick] [--only EXAMPLE ...]
+    scripts/hertz.py [--build build] [--np 2] [--quick] [--only EXAMPLE ...] [--formulation F]
 
---only reruns the named studies and keeps the other rows of the existing JSON.
+--only reruns the named studies and keeps the other rows of the existing JSON; --formulation
+("nodal" or "weighted gap") reruns only the rows of that contact formulation.
 """
 import argparse
 import json
@@ -130,24 +131,30 @@ def main():
     parser.add_argument("--np", type=int, default=2)
     parser.add_argument("--quick", action="store_true", help="the two coarsest meshes of each study only")
     parser.add_argument("--only", nargs="+", choices=list(STUDIES), help="rerun these studies only")
+    parser.add_argument("--formulation", choices=sorted({f for f, _ in VARIANTS}),
+                        help="rerun the rows of this contact formulation only")
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "hertz"))
     args = parser.parse_args()
     results = {"provenance": {}, "rows": [], "profiles": [], "force_approach": None}
-    if args.only:
+    if args.only or args.formulation:
         with open(args.out + ".json") as f:
             results = json.load(f)
-        results["rows"] = [r for r in results["rows"] if r["example"] not in args.only]
-        results["profiles"] = [p for p in results["profiles"] if p["example"] not in args.only]
+        rerun = lambda r: (not args.only or r["example"] in args.only) and (
+            not args.formulation or r["formulation"] == args.formulation)
+        results["rows"] = [r for r in results["rows"] if not rerun(r)]
+        results["profiles"] = [p for p in results["profiles"] if not rerun(p)]
     with tempfile.TemporaryDirectory() as tmp:
         for example in args.only or STUDIES:
             rows, profiles, summary = run_study(args, example, tmp)
             results["rows"] += rows
             results["profiles"] += profiles
-            results["provenance"][example] = provenance(args, summary)
-            if example == "deep-block-3d":
+            key = example + (": " + args.formulation if args.formulation else "")
+            results["provenance"][key] = provenance(args, summary)
+            if example == "deep-block-3d" and args.formulation in (None, "nodal"):
                 results["force_approach"] = force_approach(args, tmp)
     order = list(STUDIES)
-    results["rows"].sort(key=lambda r: order.index(r["example"]))  # stable: each study keeps its order
+    results["rows"].sort(key=lambda r: (order.index(r["example"]), r["degree"], -r["h"],
+                                        VARIANTS.index((r["formulation"], r["recovery"]))))
     add_orders(results["rows"])
     with open(args.out + ".json", "w") as f:
         json.dump(results, f, indent=1)
@@ -170,6 +177,8 @@ def run_study(args, example, tmp):
     for degree, meshes in plan.items():
         for cells in meshes[:QUICK[example][degree]] if args.quick else meshes:
             for formulation, recovery in VARIANTS:
+                if args.formulation and formulation != args.formulation:
+                    continue
                 summary, samples = run(args, example, degree, cells, formulation, recovery, tmp)
                 row = {"example": example, "d": dim, "degree": degree, "mesh": mesh_label(cells),
                        "h": spacing(example, dim, cells), "n": summary["n"],
@@ -216,7 +225,8 @@ def provenance(args, summary):
     commit = subprocess.run(["git", "describe", "--always", "--dirty"], cwd=ROOT, capture_output=True,
                             text=True).stdout.strip()
     command = "scripts/hertz.py" + (" --quick" if args.quick else "") + (
-        " --only " + " ".join(args.only) if args.only else "")
+        " --only " + " ".join(args.only) if args.only else "") + (
+        " --formulation '%s'" % args.formulation if args.formulation else "")
     return {"command": command, "commit": commit or "unknown",
             "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
             "host": platform.node(), "cores": os.cpu_count(), "ranks": args.np,

@@ -1,4 +1,4 @@
-#include "ContactMultiplierBasis.hpp"
+#include "assembly/ContactMultiplierBasis.hpp"
 
 namespace signorini {
 

@@ -9,8 +9,8 @@
 // and Wall for quadratic mortar elements). psi spans the same space as phi; elsewhere psi = phi.
 #include <vector>
 
-#include "signorini/LagrangeBasis.hpp"
-#include "signorini/ProblemDefinition.hpp"
+#include "fe/LagrangeBasis.hpp"
+#include "signorini/assembly/ProblemDefinition.hpp"
 
 namespace signorini {
 

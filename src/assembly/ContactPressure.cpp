@@ -1,4 +1,4 @@
-#include "signorini/ContactPressure.hpp"
+#include "signorini/assembly/ContactPressure.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,13 +14,14 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/ElasticityAssembler.hpp"
-#include "signorini/ElasticityElement.hpp"
-#include "signorini/Error.hpp"
-#include "signorini/KrylovSolver.hpp"
-#include "signorini/LagrangeBasis.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "assembly/ElasticityAssembler.hpp"
+#include "fe/ElasticityElement.hpp"
+#include "fe/LagrangeBasis.hpp"
+#include "signorini/core/Error.hpp"
+#include "solver/linear/KrylovSolver.hpp"
 
-#include "ContactMultiplierBasis.hpp"
+#include "assembly/ContactMultiplierBasis.hpp"
 
 namespace signorini {
 namespace {
@@ -200,6 +201,8 @@ RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
   for (auto& x : data) x = x > 0 ? 1.0 : 0.0;
   return loaded;
 }
+
+int ContactPressure::dim() const { return space_.dim(); }
 
 RCP<Vector> ContactPressure::pressure(const Vector& lambda, const Vector& active) const {
   const RCP<const Vector> loaded = loadedNodes(active);

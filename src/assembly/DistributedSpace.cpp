@@ -1,4 +1,4 @@
-#include "signorini/DistributedSpace.hpp"
+#include "assembly/DistributedSpace.hpp"
 
 #include <algorithm>
 #if defined(__GLIBC__)
@@ -8,10 +8,10 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Map.hpp>
 
-#include "../core/RootTask.hpp"
-#include "GlobalPartition.hpp"
-#include "MeshPart.hpp"
-#include "signorini/Error.hpp"
+#include "assembly/GlobalPartition.hpp"
+#include "assembly/MeshPart.hpp"
+#include "core/RootTask.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,4 +1,4 @@
-#include "signorini/ElasticityAssembler.hpp"
+#include "assembly/ElasticityAssembler.hpp"
 
 #include <algorithm>
 #include <limits>
@@ -14,11 +14,11 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/ElasticityElement.hpp"
-#include "signorini/Error.hpp"
-#include "signorini/RigidBodyModes.hpp"
+#include "fe/ElasticityElement.hpp"
+#include "signorini/core/Error.hpp"
+#include "solver/preconditioner/RigidBodyModes.hpp"
 
-#include "ContactMultiplierBasis.hpp"
+#include "assembly/ContactMultiplierBasis.hpp"
 
 namespace signorini {
 namespace {

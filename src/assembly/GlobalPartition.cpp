@@ -1,8 +1,8 @@
-#include "GlobalPartition.hpp"
+#include "assembly/GlobalPartition.hpp"
 
 #include <algorithm>
 
-#include "signorini/MeshPartition.hpp"
+#include "fe/MeshPartition.hpp"
 
 namespace signorini::detail {
 namespace {

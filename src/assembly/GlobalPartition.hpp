@@ -5,9 +5,9 @@
 #include <cstddef>
 #include <vector>
 
-#include "MeshPart.hpp"
-#include "signorini/LagrangeSpace.hpp"
-#include "signorini/SimplexMesh.hpp"
+#include "assembly/MeshPart.hpp"
+#include "fe/LagrangeSpace.hpp"
+#include "fe/SimplexMesh.hpp"
 
 namespace signorini::detail {
 

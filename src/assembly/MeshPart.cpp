@@ -1,4 +1,4 @@
-#include "MeshPart.hpp"
+#include "assembly/MeshPart.hpp"
 
 #include <algorithm>
 #include <cstring>
@@ -7,7 +7,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini::detail {
 namespace {

@@ -5,8 +5,8 @@
 // its owner.
 #include <vector>
 
-#include "signorini/SimplexMesh.hpp"
-#include "signorini/TpetraTypes.hpp"
+#include "fe/SimplexMesh.hpp"
+#include "signorini/core/TpetraTypes.hpp"
 
 namespace signorini::detail {
 

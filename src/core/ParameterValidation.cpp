@@ -1,4 +1,4 @@
-#include "signorini/ParameterValidation.hpp"
+#include "core/ParameterValidation.hpp"
 
 #include <algorithm>
 #include <sstream>
@@ -6,7 +6,7 @@
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

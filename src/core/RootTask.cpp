@@ -1,11 +1,11 @@
-#include "RootTask.hpp"
+#include "core/RootTask.hpp"
 
 #include <exception>
 #include <string>
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini::detail {
 

@@ -3,7 +3,7 @@
 // serial partition), with its errors thrown on every rank so that no rank waits forever.
 #include <functional>
 
-#include "signorini/TpetraTypes.hpp"
+#include "signorini/core/TpetraTypes.hpp"
 
 namespace signorini::detail {
 

@@ -1,4 +1,4 @@
-#include "signorini/Application.hpp"
+#include "driver/Application.hpp"
 
 #include <sys/resource.h>
 
@@ -20,16 +20,18 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/ContactPressure.hpp"
-#include "signorini/ElasticityAssembler.hpp"
-#include "signorini/Error.hpp"
-#include "signorini/InteriorPointSolver.hpp"
-#include "signorini/KKTMeasures.hpp"
-#include "signorini/ParameterValidation.hpp"
-#include "signorini/ProblemBuilder.hpp"
-#include "signorini/RunSummary.hpp"
-#include "signorini/VtuWriter.hpp"
-#include "../io/XmlEscape.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "assembly/ElasticityAssembler.hpp"
+#include "core/ParameterValidation.hpp"
+#include "io/RunSummary.hpp"
+#include "io/XmlEscape.hpp"
+#include "signorini/assembly/ContactPressure.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/io/SolutionOutput.hpp"
+#include "signorini/problem/ProblemBuilder.hpp"
+#include "signorini/problem/ProblemParameters.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "signorini/solver/KKTMeasures.hpp"
 
 namespace signorini {
 namespace {
@@ -122,114 +124,6 @@ void exportQp(const AssembledProblem& p, const std::string& directory, const Com
                          "node coordinates; DOF dim*node+c is component c of node node");
 }
 
-double vonMises(const double* s, int dim, const IsotropicMaterial& material) {
-  double sxx = s[0], syy, szz, sxy, syz = 0, szx = 0;
-  if (dim == 2) {
-    syy = s[3];
-    sxy = s[1];
-    szz = material.planeStrain ? material.poissonRatio * (sxx + syy) : 0.0;
-  } else {
-    syy = s[4];
-    szz = s[8];
-    sxy = s[1];
-    syz = s[5];
-    szx = s[2];
-  }
-  return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
-                   3.0 * (sxy * sxy + syz * syz + szx * szx));
-}
-
-// Contact fields at the nodes: force (A^T lambda) . n_o, the nodal share of the contact
-// force; the gap g + n_o . u on Gamma_c; and, from `recovery` (null without contact), the
-// pressure and the active indicator (1 or 0 per constraint, on the constraint map).
-void writeSolution(const AssembledProblem& p, const SolveResult& r, const ContactPressure* recovery,
-                   const Vector& pressure, const Vector& active, const std::string& directory) {
-  const DistributedSpace& ds = *p.space;
-  const ProblemDefinition& def = p.definition;
-  const int dim = ds.dim();
-  const auto& overlap = ds.overlapSpaceNodes();
-  const Import toOverlap(ds.ownedDofMap(), ds.overlapDofMap());
-  Vector u(ds.overlapDofMap()), force(ds.ownedDofMap()), forceHere(ds.overlapDofMap());
-  u.doImport(*r.v, toOverlap, Tpetra::INSERT);
-  p.qp.A->apply(*r.lambda, force, Teuchos::TRANS);
-  forceHere.doImport(force, toOverlap, Tpetra::INSERT);
-
-  NodeField displacement{"displacement", dim, {}}, forceField{"contact force", 1, {}},
-      pressureField{"contact pressure", 1, {}}, gapField{"gap", 1, {}}, activeField{"active", 1, {}};
-  auto ud = u.getData();
-  auto fd = forceHere.getData();
-  displacement.values.assign(ud.begin(), ud.end());
-  std::vector<char> onContact(ds.space().numNodes(), 0);
-  if (!def.contactBoundary.empty())
-    for (long long node : ds.boundaryNodes(ds.mesh().tag(def.contactBoundary))) onContact[node] = 1;
-  for (std::size_t i = 0; i < overlap.size(); ++i) {
-    double normalForce = 0, normalDisplacement = 0;
-    for (int c = 0; c < dim; ++c) {
-      normalForce += fd[dim * i + c] * def.obstacleDirection[c];
-      normalDisplacement += ud[dim * i + c] * def.obstacleDirection[c];
-    }
-    forceField.values.push_back(normalForce);
-    const double* x = &ds.space().nodeCoordinates()[dim * overlap[i]];
-    gapField.values.push_back(onContact[overlap[i]] ? (*def.gap)(x, dim) + normalDisplacement : 0.0);
-  }
-  pressureField.values.assign(overlap.size(), 0.0);
-  activeField.values.assign(overlap.size(), 0.0);
-  if (recovery) {
-    pressureField.values = recovery->overlapNodeValues(pressure);
-    activeField.values = recovery->overlapNodeValues(active);
-  }
-
-  CellField rank{"rank", 1, {}}, mises{"von Mises stress", 1, {}};
-  const LagrangeSpace& space = ds.space();
-  const int npc = space.nodesPerCell();
-  std::vector<int> localIndex(space.numNodes(), -1);
-  for (std::size_t i = 0; i < overlap.size(); ++i) localIndex[overlap[i]] = static_cast<int>(i);
-  std::vector<double> coords((dim + 1) * dim), local(dim * npc), sigma(dim * dim);
-  double centroid[3];
-  for (int i = 0; i < dim; ++i) centroid[i] = 1.0 / (dim + 1);
-  for (long long cell = 0; cell < ds.mesh().numCells(); ++cell) {
-    ds.mesh().cellVertexCoordinates(cell, coords.data());
-    const long long* nodes = space.cellNodes(cell);
-    for (int i = 0; i < npc; ++i)
-      for (int c = 0; c < dim; ++c) local[dim * i + c] = ud[dim * localIndex[nodes[i]] + c];
-    cellStress(space.basis(), coords.data(), p.definition.material, local.data(), centroid, sigma.data());
-    mises.values.push_back(vonMises(sigma.data(), dim, p.definition.material));
-    rank.values.push_back(ds.comm()->getRank());
-  }
-  writeVtu(ds, {displacement, pressureField, forceField, gapField, activeField}, {mises, rank}, directory, "solution");
-}
-
-// contact.csv on rank 0: every rank's samples, gathered (the contact boundary is a surface).
-void writeContactSamples(const ContactPressureSamples& samples, const Comm& comm, const std::string& path) {
-  const int width = samples.dim + 2;
-  std::vector<double> packed;
-  for (std::size_t q = 0; q < samples.weights.size(); ++q) {
-    packed.insert(packed.end(), &samples.points[q * samples.dim], &samples.points[(q + 1) * samples.dim]);
-    packed.push_back(samples.weights[q]);
-    packed.push_back(samples.pressures[q]);
-  }
-  // Teuchos' gatherv only handles equal counts: every rank sends its block to rank 0.
-  int count = static_cast<int>(packed.size());
-  if (comm.getRank() != 0) {
-    Teuchos::send(comm, 1, &count, 0);
-    if (count > 0) Teuchos::send(comm, count, packed.data(), 0);
-    return;
-  }
-  std::vector<double> all = packed;
-  for (int rank = 1; rank < comm.getSize(); ++rank) {
-    Teuchos::receive(comm, rank, 1, &count);
-    std::vector<double> block(count);
-    if (count > 0) Teuchos::receive(comm, rank, count, block.data());
-    all.insert(all.end(), block.begin(), block.end());
-  }
-  std::ostringstream csv;
-  csv.precision(17);
-  csv << (samples.dim == 2 ? "x,y" : "x,y,z") << ",weight,pressure\n";
-  for (std::size_t i = 0; i < all.size(); i += width)
-    for (int k = 0; k < width; ++k) csv << all[i + k] << (k + 1 < width ? ',' : '\n');
-  writeFileAtomically(path, csv.str());
-}
-
 void logContact(const ContactStatistics& c, std::ostream& out) {
   out << "Contact: force (";
   for (int i = 0; i < c.dim; ++i) out << (i ? ", " : "") << c.force[i];
@@ -307,7 +201,7 @@ std::string defaultsXml(bool all) {
 
 Teuchos::ParameterList validTopLevelParameters() {
   Teuchos::ParameterList p("Signorini");
-  p.set("Problem", ProblemDefinition::validParameters(), "The contact problem");
+  p.set("Problem", validProblemParameters(), "The contact problem");
   p.set("Solver", InteriorPointSolver::validParameters(), "The interior point solver");
   p.set("Output", outputParameters(), "What the run writes");
   return p;
@@ -421,7 +315,12 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
         writeContactSamples(recovery->samples(*pressure), *comm, directory + "/contact.csv");
     }
     if (output.get<bool>("write solution"))
-      writeSolution(problem, result, recovery ? &*recovery : nullptr, *pressure, *active, directory);
+      if (recovery) {
+        const ContactFields fields{*recovery, *pressure, *active};
+        writeSolution(problem, result, &fields, directory);
+      } else {
+        writeSolution(problem, result, nullptr, directory);
+      }
     total.stop();
     RunSummary summary;
     summary.problem = def.name;

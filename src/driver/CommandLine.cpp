@@ -1,6 +1,6 @@
-#include "signorini/CommandLine.hpp"
+#include "driver/CommandLine.hpp"
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 

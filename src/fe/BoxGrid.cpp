@@ -1,9 +1,9 @@
-#include "signorini/BoxGrid.hpp"
+#include "fe/BoxGrid.hpp"
 
 #include <algorithm>
 #include <cmath>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,11 +1,11 @@
-#include "signorini/BoxMesh.hpp"
+#include "fe/BoxMesh.hpp"
 
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "signorini/BoxGrid.hpp"
-#include "signorini/Error.hpp"
+#include "fe/BoxGrid.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

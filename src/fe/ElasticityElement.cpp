@@ -1,4 +1,4 @@
-#include "signorini/ElasticityElement.hpp"
+#include "fe/ElasticityElement.hpp"
 
 #include <array>
 #include <cmath>
@@ -7,8 +7,8 @@
 #include <string>
 #include <utility>
 
-#include "signorini/Error.hpp"
-#include "signorini/SimplexQuadrature.hpp"
+#include "fe/SimplexQuadrature.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,4 +1,4 @@
-#include "signorini/GmshMesh.hpp"
+#include "fe/GmshMesh.hpp"
 
 #include <gmsh.h>
 
@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,9 +1,9 @@
-#include "signorini/LagrangeBasis.hpp"
+#include "fe/LagrangeBasis.hpp"
 
 #include <algorithm>
 #include <string>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,4 +1,4 @@
-#include "signorini/LagrangeSpace.hpp"
+#include "fe/LagrangeSpace.hpp"
 
 #include <algorithm>
 #include <array>
@@ -6,7 +6,7 @@
 #include <string>
 #include <utility>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,4 +1,4 @@
-#include "signorini/MeshPartition.hpp"
+#include "fe/MeshPartition.hpp"
 
 #include <metis.h>
 
@@ -6,7 +6,7 @@
 #include <limits>
 #include <string>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 

@@ -1,6 +1,6 @@
-#include "signorini/SimplexMesh.hpp"
+#include "fe/SimplexMesh.hpp"
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 

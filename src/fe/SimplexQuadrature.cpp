@@ -1,4 +1,4 @@
-#include "signorini/SimplexQuadrature.hpp"
+#include "fe/SimplexQuadrature.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include <Teuchos_LAPACK.hpp>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,4 +1,4 @@
-#include "signorini/RunSummary.hpp"
+#include "io/RunSummary.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -8,8 +8,8 @@
 
 #include <Trilinos_version.h>
 
-#include "signorini/Error.hpp"
-#include "signorini/Version.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/core/Version.hpp"
 
 namespace signorini {
 namespace {

@@ -1,4 +1,4 @@
-#include "signorini/VtuWriter.hpp"
+#include "signorini/io/VtuWriter.hpp"
 
 
 #include <array>
@@ -12,8 +12,9 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
-#include "XmlEscape.hpp"
-#include "signorini/Error.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "io/XmlEscape.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,4 +1,4 @@
-#include "signorini/ProblemBuilder.hpp"
+#include "signorini/problem/ProblemBuilder.hpp"
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -11,12 +11,14 @@
 #include <Teuchos_Time.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 
-#include "signorini/BoxGrid.hpp"
-#include "signorini/BoxMesh.hpp"
-#include "signorini/ElasticityAssembler.hpp"
-#include "signorini/Error.hpp"
-#include "signorini/GmshMesh.hpp"
-#include "../core/RootTask.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "assembly/ElasticityAssembler.hpp"
+#include "core/RootTask.hpp"
+#include "fe/BoxGrid.hpp"
+#include "fe/BoxMesh.hpp"
+#include "fe/GmshMesh.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/problem/ProblemParameters.hpp"
 
 namespace signorini {
 namespace {
@@ -43,6 +45,11 @@ double peakResidentMiB() {
 
 }  // namespace
 
+AssembledProblem::AssembledProblem() = default;
+AssembledProblem::AssembledProblem(AssembledProblem&&) noexcept = default;
+AssembledProblem& AssembledProblem::operator=(AssembledProblem&&) noexcept = default;
+AssembledProblem::~AssembledProblem() = default;
+
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                               const std::string& baseDirectory) {
   AssembledProblem result;
@@ -53,9 +60,9 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     const double residentBefore = residentMiB();
     // Only rank 0 makes the global mesh, once; DistributedSpace frees it after sending each
     // rank its part. A Gmsh file decides the dimension the rest of the definition is read with.
-    const GmshSource gmsh = ProblemDefinition::gmshSource(problem);
+    const GmshSource gmsh = readGmshSource(problem);
     ProblemDefinition def;
-    if (gmsh.file.empty()) def = ProblemDefinition::fromParameters(problem);
+    if (gmsh.file.empty()) def = readProblemDefinition(problem);
     std::shared_ptr<SimplexMesh> mesh;
     detail::runOnRoot(*comm, [&] {
       if (!gmsh.file.empty()) {
@@ -69,7 +76,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     if (!gmsh.file.empty()) {
       int dim = mesh ? mesh->dim : 0;
       Teuchos::broadcast(*comm, 0, 1, &dim);
-      def = ProblemDefinition::fromParameters(problem, dim);
+      def = readProblemDefinition(problem, dim);
     }
     result.definition = std::move(def);
     result.space = std::make_unique<DistributedSpace>(comm, std::move(mesh), result.definition.degree);

@@ -1,4 +1,4 @@
-#include "signorini/ContactQP.hpp"
+#include "signorini/solver/ContactQP.hpp"
 
 #include <Tpetra_CrsMatrix.hpp>
 

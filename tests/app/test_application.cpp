@@ -9,9 +9,9 @@
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include "signorini/Application.hpp"
-#include "signorini/Error.hpp"
-#include "signorini/ParameterValidation.hpp"
+#include "core/ParameterValidation.hpp"
+#include "driver/Application.hpp"
+#include "signorini/core/Error.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {

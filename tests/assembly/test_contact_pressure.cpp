@@ -8,7 +8,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/ContactPressure.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "signorini/assembly/ContactPressure.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {

@@ -14,9 +14,9 @@
 #include <Tpetra_Core.hpp>
 #include <Tpetra_Map.hpp>
 
-#include "signorini/BoxMesh.hpp"
-#include "signorini/DistributedSpace.hpp"
-#include "signorini/Error.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "fe/BoxMesh.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace {
 

@@ -12,9 +12,9 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/ElasticityAssembler.hpp"
-#include "signorini/Error.hpp"
-#include "signorini/SimplexQuadrature.hpp"
+#include "assembly/ElasticityAssembler.hpp"
+#include "fe/SimplexQuadrature.hpp"
+#include "signorini/core/Error.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {

@@ -11,9 +11,10 @@
 #include <Tpetra_Core.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/Error.hpp"
-#include "signorini/InteriorPointSolver.hpp"
-#include "signorini/ProblemBuilder.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/problem/ProblemBuilder.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
 
 namespace {
 

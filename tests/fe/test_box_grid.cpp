@@ -5,8 +5,8 @@
 #include <cmath>
 #include <random>
 
-#include "signorini/BoxGrid.hpp"
-#include "signorini/BoxMesh.hpp"
+#include "fe/BoxGrid.hpp"
+#include "fe/BoxMesh.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-#include "signorini/BoxMesh.hpp"
+#include "fe/BoxMesh.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,7 @@
 #include <set>
 #include <vector>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

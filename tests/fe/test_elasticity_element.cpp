@@ -1,4 +1,4 @@
-#include "signorini/ElasticityElement.hpp"
+#include "fe/ElasticityElement.hpp"
 
 #include <gtest/gtest.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

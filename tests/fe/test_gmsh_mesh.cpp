@@ -1,4 +1,4 @@
-#include "signorini/GmshMesh.hpp"
+#include "fe/GmshMesh.hpp"
 
 #include <gmsh.h>
 #include <gtest/gtest.h>
@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 // The meshes are made with the Gmsh API itself, written to a temporary directory in the
 // format under test, and read back with readGmshMesh.

@@ -1,11 +1,11 @@
-#include "signorini/LagrangeBasis.hpp"
+#include "fe/LagrangeBasis.hpp"
 
 #include <gtest/gtest.h>
 
 #include <array>
 #include <vector>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,4 +1,4 @@
-#include "signorini/LagrangeSpace.hpp"
+#include "fe/LagrangeSpace.hpp"
 
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "signorini/BoxMesh.hpp"
-#include "signorini/Error.hpp"
+#include "fe/BoxMesh.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,12 +1,12 @@
-#include "signorini/MeshPartition.hpp"
+#include "fe/MeshPartition.hpp"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <vector>
 
-#include "signorini/BoxMesh.hpp"
-#include "signorini/Error.hpp"
+#include "fe/BoxMesh.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,10 +1,10 @@
-#include "signorini/SimplexMesh.hpp"
+#include "fe/SimplexMesh.hpp"
 
 #include <gtest/gtest.h>
 
 #include <string>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

@@ -1,10 +1,10 @@
-#include "signorini/SimplexQuadrature.hpp"
+#include "fe/SimplexQuadrature.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "signorini/Error.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

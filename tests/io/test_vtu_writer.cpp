@@ -1,7 +1,8 @@
 // writeVtu: the pieces and the .pvtu index are read back in C++ (counts, every cell once over
 // the ranks, fields, and the VTK Lagrange node order checked against VTK's point numbering),
 // and with meshio from Python (point data shapes and an affine field against the coordinates).
-#include "signorini/VtuWriter.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "signorini/io/VtuWriter.hpp"
 
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -24,8 +25,8 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include "signorini/BoxMesh.hpp"
-#include "signorini/Error.hpp"
+#include "fe/BoxMesh.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {

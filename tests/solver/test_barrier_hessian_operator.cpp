@@ -6,7 +6,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/BarrierHessianOperator.hpp"
+#include "solver/linear/BarrierHessianOperator.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {

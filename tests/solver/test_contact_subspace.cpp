@@ -11,12 +11,12 @@
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/BarrierHessianOperator.hpp"
-#include "signorini/ContactSubspaceSolver.hpp"
-#include "signorini/Error.hpp"
-#include "signorini/InteriorPointSolver.hpp"
-#include "signorini/MueLuPreconditioner.hpp"
-#include "signorini/SubspaceCorrectedPreconditioner.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "solver/linear/BarrierHessianOperator.hpp"
+#include "solver/preconditioner/ContactSubspaceSolver.hpp"
+#include "solver/preconditioner/MueLuPreconditioner.hpp"
+#include "solver/preconditioner/SubspaceCorrectedPreconditioner.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {

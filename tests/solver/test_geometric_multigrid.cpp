@@ -11,13 +11,13 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/BarrierHessianOperator.hpp"
-#include "signorini/BoxGrid.hpp"
-#include "signorini/Error.hpp"
-#include "signorini/GeometricMultigridPreconditioner.hpp"
-#include "signorini/InteriorPointSolver.hpp"
-#include "signorini/KrylovSolver.hpp"
-#include "signorini/MueLuPreconditioner.hpp"
+#include "fe/BoxGrid.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "solver/linear/BarrierHessianOperator.hpp"
+#include "solver/linear/KrylovSolver.hpp"
+#include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
+#include "solver/preconditioner/MueLuPreconditioner.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {

@@ -10,10 +10,10 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/BarrierHessianOperator.hpp"
-#include "signorini/Error.hpp"
-#include "signorini/InitialGuessProjection.hpp"
-#include "signorini/NewtonSystemSolver.hpp"
+#include "signorini/core/Error.hpp"
+#include "solver/linear/BarrierHessianOperator.hpp"
+#include "solver/linear/InitialGuessProjection.hpp"
+#include "solver/linear/NewtonSystemSolver.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {

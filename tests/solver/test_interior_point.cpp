@@ -11,8 +11,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/Error.hpp"
-#include "signorini/InteriorPointSolver.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
 #include "support/ActiveSetReference.hpp"
 #include "support/TestProblems.hpp"
 

@@ -8,7 +8,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/KrylovSolver.hpp"
+#include "solver/linear/KrylovSolver.hpp"
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include <Xpetra_MultiVectorFactory.hpp>
 #include <Xpetra_TpetraMultiVector.hpp>
 
-#include "signorini/KrylovSolver.hpp"
-#include "signorini/MueLuPreconditioner.hpp"
+#include "solver/linear/KrylovSolver.hpp"
+#include "solver/preconditioner/MueLuPreconditioner.hpp"
 
 namespace {
 

@@ -11,8 +11,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/InteriorPointSolver.hpp"
-#include "signorini/NewtonSystemSolver.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "solver/linear/NewtonSystemSolver.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {

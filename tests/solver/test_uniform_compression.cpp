@@ -9,10 +9,11 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/ContactPressure.hpp"
-#include "signorini/ElasticityAssembler.hpp"
-#include "signorini/InteriorPointSolver.hpp"
-#include "signorini/KKTMeasures.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "assembly/ElasticityAssembler.hpp"
+#include "signorini/assembly/ContactPressure.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "signorini/solver/KKTMeasures.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {

@@ -3,9 +3,9 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/Error.hpp"
-#include "signorini/KrylovSolver.hpp"
-#include "signorini/MueLuPreconditioner.hpp"
+#include "signorini/core/Error.hpp"
+#include "solver/linear/KrylovSolver.hpp"
+#include "solver/preconditioner/MueLuPreconditioner.hpp"
 
 namespace signorini::testing {
 

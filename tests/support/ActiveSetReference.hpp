@@ -3,7 +3,7 @@
 // primal-dual active set method (semismooth Newton), each active set's system solved to
 // round-off. It shares nothing with the interior point code but the QP.
 // The QP must live on a one-rank communicator.
-#include "signorini/ContactQP.hpp"
+#include "signorini/solver/ContactQP.hpp"
 
 namespace signorini::testing {
 

@@ -7,8 +7,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
-#include "signorini/KrylovSolver.hpp"
-#include "signorini/MueLuPreconditioner.hpp"
+#include "solver/linear/KrylovSolver.hpp"
+#include "solver/preconditioner/MueLuPreconditioner.hpp"
 
 namespace signorini::testing {
 

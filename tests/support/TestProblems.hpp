@@ -5,8 +5,9 @@
 
 #include <Teuchos_ParameterList.hpp>
 
-#include "signorini/ContactQP.hpp"
-#include "signorini/ProblemBuilder.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "signorini/problem/ProblemBuilder.hpp"
+#include "signorini/solver/ContactQP.hpp"
 
 namespace signorini::testing {
 

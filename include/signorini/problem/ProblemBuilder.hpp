@@ -1,0 +1,38 @@
+#pragma once
+// From a validated "Problem" parameter list to the distributed discrete problem: mesh
+// (box generator or Gmsh file, made on rank 0 only), METIS partition, P_k space and the
+// assembled ContactQP.
+#include <memory>
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "signorini/assembly/ProblemDefinition.hpp"
+#include "signorini/solver/ContactQP.hpp"
+
+namespace signorini {
+
+class DistributedSpace;
+
+struct AssembledProblem {
+  AssembledProblem();
+  AssembledProblem(AssembledProblem&&) noexcept;
+  AssembledProblem& operator=(AssembledProblem&&) noexcept;
+  ~AssembledProblem();
+
+  ProblemDefinition definition;
+  // This rank's mesh and P_k space with their global numbering (for output and the pressure).
+  std::unique_ptr<DistributedSpace> space;
+  ContactQP qp;
+  double setupSeconds = 0, assemblySeconds = 0;  // max over ranks
+  // Rank 0's peak resident set during mesh and space, above its size before them (METIS'
+  // and the hash tables' transient buffers included): the serial phase's real cost when it
+  // is the process' largest allocation so far, as in the application.
+  double serialMeshPeakMiB = 0;
+};
+
+// `baseDirectory` resolves a relative "mesh: file".
+AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
+                              const std::string& baseDirectory = ".");
+
+}  // namespace signorini

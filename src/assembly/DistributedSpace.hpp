@@ -1,0 +1,77 @@
+#pragma once
+// The vector-valued P_k space of a mesh partitioned over the ranks of a communicator.
+// Nodes are renumbered so that each rank owns a contiguous range (rank order); degrees of
+// freedom are dof = dim * node + component. Rank 0 alone holds the global mesh, once: it
+// builds the global space, partitions the cells with METIS and sends every rank its part.
+// From then on each rank holds only its cells, as a mesh of their own, and the P_k space
+// on them; the nodes of those cells are its overlap (owned first, then ghosts).
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+#include "fe/LagrangeSpace.hpp"
+#include "fe/SimplexMesh.hpp"
+#include "signorini/core/TpetraTypes.hpp"
+
+namespace signorini {
+
+class DistributedSpace {
+ public:
+  // Collective. Only rank 0's `globalMesh` is read; the other ranks may pass nullptr. Rank 0
+  // lets go of the mesh once the parts are sent, so passing the only reference frees it.
+  // Throws on every rank InputError for a missing or inconsistent mesh or a bad degree,
+  // Error if the partition fails.
+  DistributedSpace(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> globalMesh, int degree);
+
+  const RCP<const Comm>& comm() const { return comm_; }
+  // This rank's cells as a mesh (vertices and cells renumbered locally, in global order,
+  // with the boundary facets of these cells) and the P_k space on it.
+  const SimplexMesh& mesh() const { return *mesh_; }
+  const LagrangeSpace& space() const { return *space_; }
+  int dim() const { return mesh_->dim; }
+  long long numGlobalNodes() const { return numGlobalNodes_; }
+  long long numGlobalCells() const { return numGlobalCells_; }
+
+  // Renumbered (Tpetra) node id of a node of space().
+  GlobalOrdinal globalNode(long long spaceNode) const { return nodeId_[spaceNode]; }
+  int nodeOwner(long long spaceNode) const { return nodeOwner_[spaceNode]; }
+  bool ownsNode(long long spaceNode) const { return nodeOwner_[spaceNode] == comm_->getRank(); }
+
+  // Id in the global mesh of a cell of mesh().
+  long long globalCell(long long cell) const { return globalCells_[cell]; }
+
+  // Sorted nodes of space() on the boundary with that tag of the global mesh (empty for an
+  // unknown tag). Unlike space().boundaryNodes(tag) it includes nodes that lie on a facet of
+  // another rank's cell. space().boundaryFacets(tag), in turn, lists each global facet on
+  // exactly one rank: facet integrals summed over the ranks count every facet once.
+  std::vector<long long> boundaryNodes(int tag) const;
+
+  // Nodes: owned, and owned followed by the ghosts of the local cells.
+  const RCP<const Map>& ownedNodeMap() const { return ownedNodeMap_; }
+  const RCP<const Map>& overlapNodeMap() const { return overlapNodeMap_; }
+  // The same for the degrees of freedom.
+  const RCP<const Map>& ownedDofMap() const { return ownedDofMap_; }
+  const RCP<const Map>& overlapDofMap() const { return overlapDofMap_; }
+
+  // Space node ids of the overlap nodes, in overlapNodeMap() order.
+  const std::vector<long long>& overlapSpaceNodes() const { return overlapSpaceNodes_; }
+
+  // What the serial phase cost rank 0: heap bytes of the global mesh, the global space and
+  // the partition arrays (from their capacities), the same on every rank.
+  std::size_t serialPhaseBytes() const { return serialPhaseBytes_; }
+
+ private:
+  RCP<const Comm> comm_;
+  std::shared_ptr<const SimplexMesh> mesh_;
+  std::unique_ptr<LagrangeSpace> space_;
+  long long numGlobalNodes_ = 0, numGlobalCells_ = 0;
+  std::size_t serialPhaseBytes_ = 0;
+  std::vector<int> nodeOwner_;
+  std::vector<GlobalOrdinal> nodeId_;
+  std::vector<long long> globalCells_, overlapSpaceNodes_;
+  std::vector<int> boundaryTags_;  // boundary nodes per tag, CSR
+  std::vector<long long> boundaryStart_, boundaryNodes_;
+  RCP<const Map> ownedNodeMap_, overlapNodeMap_, ownedDofMap_, overlapDofMap_;
+};
+
+}  // namespace signorini

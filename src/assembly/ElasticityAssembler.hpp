@@ -1,0 +1,37 @@
+#pragma once
+// Parallel assembly of the contact QP of linear elasticity on a distributed P_k space: the
+// stiffness Q (Tpetra::FECrsMatrix, Dirichlet conditions by symmetric elimination keeping
+// the DOFs), loads b, contact constraints A v <= d (ProblemDefinition's ContactFormulation:
+// one row per contact node: -n_o . u(p) <= g(p), or its weighted gap, see
+// ContactMultiplierBasis), rigid body modes and node coordinates.
+#include <vector>
+
+#include "assembly/DistributedSpace.hpp"
+#include "signorini/assembly/ProblemDefinition.hpp"
+#include "signorini/solver/ContactQP.hpp"
+
+namespace signorini {
+
+ContactQP assembleContactQP(const DistributedSpace& space, const ProblemDefinition& problem);
+
+// The contact nodes this rank owns, as space node ids in constraint order: row first + k of
+// A is node nodes[k]. Constraints follow the renumbered nodes, so each rank owns the
+// contiguous range [first, first + nodes.size()) of the numGlobal constraints. Collective.
+struct OwnedContactNodes {
+  GlobalOrdinal first = 0;
+  long long numGlobal = 0;
+  std::vector<long long> nodes;
+};
+OwnedContactNodes ownedContactNodes(const DistributedSpace& space, const ProblemDefinition& problem);
+
+// The constraint (row of A) of each overlap node, in overlapSpaceNodes() order; -1 for a node
+// off the contact boundary. Ghosts learn theirs from their owners. Collective.
+std::vector<long long> overlapNodeConstraints(const DistributedSpace& space, const ProblemDefinition& problem);
+
+// The contact boundary's measure lumped to the contact nodes, on A's range map: HRZ lumping
+// of the P_k basis for nodal constraints (positive for every degree), the integral of the
+// multiplier function psi for weighted gaps. Each node stands for this much of Gamma_c.
+RCP<Vector> contactNodeWeights(const DistributedSpace& space, const ProblemDefinition& problem,
+                               const RCP<const Map>& constraintMap);
+
+}  // namespace signorini

@@ -1,0 +1,41 @@
+#pragma once
+// Reading a Gmsh mesh file (.msh, format 2.2 or 4.x), or meshing a Gmsh geometry (.geo),
+// into a SimplexMesh through the Gmsh SDK (libgmsh): the file format is parsed by Gmsh,
+// never here.
+#include <string>
+
+#include "fe/SimplexMesh.hpp"
+
+namespace signorini {
+
+// Reads the Gmsh mesh file at `path`; a .geo file is meshed first, in its own dimension,
+// with linear elements and its mesh sizes multiplied by `sizeFactor` (Mesh.MeshSizeFactor).
+//
+// - dim is the highest dimension of the elements in the file (2 or 3). The cells are the
+//   elements of that dimension in the physical groups of that dimension if the file has
+//   any, otherwise all elements of that dimension, in increasing Gmsh element tag. An
+//   element is taken once even if it is in several groups, or repeated with the same nodes
+//   (as MSH 2 files store an element in several groups). They must be linear triangles (2D)
+//   or linear tetrahedra (3D).
+// - In 2D the vertices keep x and y; every |z| must be <= 1e-12 times the mesh's extent.
+// - The vertices are the nodes used by the cells, numbered 0.. in increasing Gmsh node tag.
+// - Every cell is positively oriented (two vertices swapped where Gmsh's order is not).
+// - The boundary facets are the elements of the physical groups of dimension dim - 1, one
+//   entry per (group, element): a facet in two groups is listed twice. Each must be a face
+//   of a cell (not necessarily on the boundary: interfaces are allowed). Their vertex order
+//   is Gmsh's. boundaryTags maps each group's physical name ("physical<tag>" when unnamed)
+//   to its physical tag, which is the facets' tag.
+//
+// Throws InputError, with the path in the message, if the file is missing or unreadable, a
+// .msh file does not start with $MeshFormat,
+// holds no triangle or tetrahedron, has cells of another type (quadrangles, hexahedra,
+// second-order elements...), a degenerate cell, a 2D node off the plane z = 0, a boundary
+// element that is not a face of a cell, or two boundary groups with the same name.
+//
+// Gmsh is initialised for the call and finalised afterwards, unless the caller already has
+// a Gmsh session open: then the file is read into a temporary model which is removed again,
+// and the caller's current model and General.Terminal option are restored. Calls are
+// serialised within the process (Gmsh is not thread-safe).
+SimplexMesh readGmshMesh(const std::string& path, double sizeFactor = 1.0);
+
+}  // namespace signorini

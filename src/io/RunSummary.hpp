@@ -1,0 +1,32 @@
+#pragma once
+// The machine-readable results of a run: summary.json (the paper's Table 2 counters, KKT
+// measures, times) and history.csv (one row per Newton step). Written by rank 0, each to a
+// temporary name then renamed, so no half-written file is ever left.
+#include <optional>
+#include <string>
+
+#include "signorini/assembly/ContactStatistics.hpp"
+#include "signorini/solver/SolveResult.hpp"
+
+namespace signorini {
+
+struct RunSummary {
+  std::string problem, method;
+  int dim = 0, degree = 0, ranks = 1;
+  long long nx = 0, n = 0, m = 0;
+  const SolveResult* result = nullptr;
+  double setupSeconds = 0, assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;  // max over ranks
+  double peakMemoryMiBMaxRank = 0, peakMemoryMiBAllRanks = 0;  // peak resident set size
+  // Rank 0's serial mesh phase: global mesh, space and partition arrays (capacities), and
+  // the growth of its peak resident set over that phase.
+  double serialMeshMiB = 0, serialMeshPeakMiB = 0;
+  std::optional<ContactStatistics> contact;  // when the problem has a contact boundary
+};
+
+void writeSummaryJson(const RunSummary& summary, const std::string& path);
+void writeHistoryCsv(const SolveResult& result, const std::string& path);
+
+// Writes `text` to `path` through a temporary file and a rename; throws Error naming the path.
+void writeFileAtomically(const std::string& path, const std::string& text);
+
+}  // namespace signorini

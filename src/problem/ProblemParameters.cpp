@@ -1,0 +1,212 @@
+#include "signorini/problem/ProblemParameters.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include <Teuchos_Array.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+
+#include "core/ParameterValidation.hpp"
+#include "signorini/core/Error.hpp"
+
+namespace signorini {
+namespace {
+
+using Teuchos::Array;
+using Teuchos::ParameterList;
+using Teuchos::rcp;
+
+const char* kAxes[3] = {"x", "y", "z"};
+
+template <class T>
+Teuchos::RCP<Teuchos::EnhancedNumberValidator<T>> range(T lo, T hi) {
+  return rcp(new Teuchos::EnhancedNumberValidator<T>(lo, hi));
+}
+
+Teuchos::RCP<Teuchos::StringValidator> choices(std::initializer_list<std::string> names) {
+  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
+}
+
+std::string formatGap(double g0, const Array<double>& center, double radius, int dim) {
+  std::ostringstream e;
+  e.precision(17);
+  e << g0;
+  for (int i = 0; i < dim; ++i) {
+    double c = i < center.size() ? center[i] : 0.0;
+    e << " + (" << kAxes[i] << " - (" << c << "))^2 / (" << 2.0 * radius << ")";
+  }
+  return e.str();
+}
+
+// One BoundaryField per sublist of `group` (named after its boundary), components read from
+// "<prefix>x", "<prefix>y"(, "<prefix>z"); an empty expression leaves the component free.
+std::vector<BoundaryField> boundaryFields(const ParameterList& problem, const std::string& group,
+                                          const std::string& prefix, int dim) {
+  std::vector<BoundaryField> fields;
+  const ParameterList& list = problem.sublist(group);
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const ParameterList& bc = list.sublist(list.name(it));
+    BoundaryField field{list.name(it), {}};
+    for (int i = 0; i < dim; ++i) {
+      const std::string name = prefix + kAxes[i], text = bc.get<std::string>(name);
+      if (text.empty())
+        field.components.emplace_back(std::nullopt);
+      else
+        field.components.emplace_back(Expression(text, "Problem/" + group + "/" + field.boundary + "/" + name));
+    }
+    fields.push_back(std::move(field));
+  }
+  return fields;
+}
+
+}  // namespace
+
+ParameterList validProblemParameters() {
+  ParameterList p("Problem");
+  p.set("name", "unnamed", "Name of the problem, reported in outputs");
+  p.set("mesh: type", "box", "\"box\": structured simplex mesh of a box; \"gmsh\": a .msh file",
+        choices({"box", "gmsh"}));
+  p.set("mesh: dimension", 2, "Space dimension of a box mesh", range(2, 3));
+  p.set("mesh: cells", Array<int>(1, 10),
+        "Cells per direction of a box mesh: one value for all directions, or one per direction");
+  p.set("mesh: lengths", Array<double>(3, 1.0), "Edge lengths of the box [0,L0]x[0,L1](x[0,L2])");
+  p.set("mesh: file", "", "Gmsh .msh file (format 2.2 or 4.1), or a .geo geometry that Gmsh meshes; relative to the XML file");
+  p.set("mesh: size factor", 1.0, "A .geo geometry's mesh sizes are multiplied by this (Gmsh's Mesh.MeshSizeFactor)",
+        range(1e-6, 1e6));
+  p.set("element: degree", 1, "Degree of the continuous Lagrange elements", range(1, 3));
+  p.set("material: young's modulus", 1.0, "Young's modulus E", range(1e-300, 1e300));
+  p.set("material: poisson ratio", 0.3, "Poisson ratio nu", range(-0.999, 0.4999));
+  p.set("material: plane strain", true, "2D only: plane strain (true) or plane stress (false)");
+  for (const char* axis : kAxes)
+    p.set(std::string("body force: ") + axis, "0",
+          std::string("Body force component ") + axis + ", an expression of x, y, z");
+  p.set("load: quadrature degree", -1,
+        "Expert: Quadrature degree for body forces and tractions; -1: element degree + 4 (exact for "
+        "the benchmark family)",
+        range(-1, 30));
+
+  ParameterList& dirichlet = p.sublist("Dirichlet", false,
+                                       "One sublist per clamped boundary, named after it");
+  ParameterList& prescribed = dirichlet.sublist(kAnyNameSublist);
+  for (const char* axis : kAxes)
+    prescribed.set(std::string("displacement: ") + axis, "",
+                   "Prescribed displacement component (expression); empty: free");
+
+  ParameterList& traction = p.sublist("Traction", false,
+                                      "One sublist per loaded boundary, named after it");
+  ParameterList& load = traction.sublist(kAnyNameSublist);
+  for (const char* axis : kAxes)
+    load.set(std::string("traction: ") + axis, "0", "Surface traction component (expression)");
+
+  ParameterList& contact = p.sublist("Contact", false, "Frictionless contact with a rigid obstacle");
+  contact.set("boundary", "", "Name of the contact boundary; empty: no contact");
+  contact.set("obstacle: direction", Array<double>(),
+              "Vector from the obstacle into the body (normalised); empty: the last axis, "
+              "(0,1) in 2D and (0,0,1) in 3D");
+  contact.set("gap: type", "constant",
+              "\"constant\": gap: value; \"paraboloid\": gap: value + |x - center|^2 / (2 radius) "
+              "(rigid cylinder or sphere); \"expression\": gap: expression",
+              choices({"constant", "paraboloid", "expression"}));
+  contact.set("gap: value", 0.0, "Constant gap, or the paraboloid's gap at its center");
+  contact.set("gap: center", Array<double>(), "Center of the paraboloid");
+  contact.set("gap: radius", 1.0, "Radius of curvature of the paraboloid", range(1e-300, 1e300));
+  contact.set("gap: expression", "0", "Gap as an expression of x, y, z");
+  contact.set("formulation", "nodal",
+              "\"nodal\": -n.u <= g at every node of the contact boundary (the paper's constraints); "
+              "\"weighted gap\": the integral of psi_j (g + n.u) >= 0 for every node j, psi_j its shape "
+              "function (P2 triangles: a transformed basis with positive integrals); the multipliers are "
+              "the pressure's coefficients",
+              choices({"nodal", "weighted gap"}));
+  return p;
+}
+
+GmshSource readGmshSource(const ParameterList& user) {
+  const ParameterList p = validatedParameters(user, validProblemParameters(), "Problem");
+  if (p.get<std::string>("mesh: type") != "gmsh") return {};
+  const std::string file = p.get<std::string>("mesh: file");
+  if (file.empty()) throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
+  return {file, p.get<double>("mesh: size factor")};
+}
+
+ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) {
+  const ParameterList p = validatedParameters(user, validProblemParameters(), "Problem");
+  ProblemDefinition def;
+  def.name = p.get<std::string>("name");
+  def.meshType = p.get<std::string>("mesh: type");
+  def.dim = meshDim > 0 ? meshDim : p.get<int>("mesh: dimension");
+  const int dim = def.dim;
+
+  const auto cells = p.get<Array<int>>("mesh: cells");
+  if (cells.size() != 1 && cells.size() != dim)
+    throw InputError("Problem/mesh: cells: give 1 or " + std::to_string(dim) + " values");
+  for (int i = 0; i < 3; ++i) {
+    def.cells[i] = cells[cells.size() == 1 ? 0 : std::min<int>(i, cells.size() - 1)];
+    if (i < dim && def.cells[i] < 1)
+      throw InputError("Problem/mesh: cells: every value must be >= 1");
+  }
+  const auto lengths = p.get<Array<double>>("mesh: lengths");
+  for (int i = 0; i < dim; ++i) {
+    if (i >= static_cast<int>(lengths.size()) || !(lengths[i] > 0))
+      throw InputError("Problem/mesh: lengths: give " + std::to_string(dim) + " positive values");
+    def.lengths[i] = lengths[i];
+  }
+  def.meshFile = p.get<std::string>("mesh: file");
+  def.meshSizeFactor = p.get<double>("mesh: size factor");
+  if (def.meshType == "gmsh" && def.meshFile.empty())
+    throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
+
+  def.degree = p.get<int>("element: degree");
+  def.material.youngsModulus = p.get<double>("material: young's modulus");
+  def.material.poissonRatio = p.get<double>("material: poisson ratio");
+  def.material.planeStrain = p.get<bool>("material: plane strain");
+  for (int i = 0; i < dim; ++i) {
+    std::string name = std::string("body force: ") + kAxes[i];
+    def.bodyForce.emplace_back(p.get<std::string>(name), "Problem/" + name);
+  }
+  const int q = p.get<int>("load: quadrature degree");
+  def.loadQuadratureDegree = q < 0 ? def.degree + 4 : q;
+
+  def.dirichlet = boundaryFields(p, "Dirichlet", "displacement: ", dim);
+  def.traction = boundaryFields(p, "Traction", "traction: ", dim);
+
+  const ParameterList& contact = p.sublist("Contact");
+  def.contactBoundary = contact.get<std::string>("boundary");
+  if (!def.contactBoundary.empty()) {
+    auto direction = contact.get<Array<double>>("obstacle: direction");
+    if (direction.empty()) {
+      direction.assign(dim, 0.0);
+      direction[dim - 1] = 1.0;
+    }
+    if (static_cast<int>(direction.size()) != dim)
+      throw InputError("Problem/Contact/obstacle: direction: give " + std::to_string(dim) + " values");
+    double norm = 0;
+    for (double c : direction) norm += c * c;
+    norm = std::sqrt(norm);
+    if (!(norm > 0)) throw InputError("Problem/Contact/obstacle: direction: must not be zero");
+    for (int i = 0; i < dim; ++i) def.obstacleDirection[i] = direction[i] / norm;
+
+    const std::string type = contact.get<std::string>("gap: type");
+    const double g0 = contact.get<double>("gap: value");
+    std::string text;
+    if (type == "constant") {
+      std::ostringstream e;
+      e.precision(17);
+      e << g0;
+      text = e.str();
+    } else if (type == "paraboloid") {
+      auto center = contact.get<Array<double>>("gap: center");
+      if (static_cast<int>(center.size()) != dim)
+        throw InputError("Problem/Contact/gap: center: give " + std::to_string(dim) + " values");
+      text = formatGap(g0, center, contact.get<double>("gap: radius"), dim);
+    } else {
+      text = contact.get<std::string>("gap: expression");
+    }
+    def.gap.emplace(text, "Problem/Contact/gap");
+    def.contactFormulation = contact.get<std::string>("formulation") == "weighted gap"
+                                 ? ContactFormulation::weightedGap
+                                 : ContactFormulation::nodal;
+  }
+  return def;
+}
+
+}  // namespace signorini

@@ -1,0 +1,83 @@
+#pragma once
+// Private to src/solver: the two interior point methods and what they share.
+#include <string>
+
+#include <Teuchos_ParameterList.hpp>
+#include <Teuchos_Time.hpp>
+
+#include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/IterationObserver.hpp"
+#include "signorini/solver/SolveResult.hpp"
+#include "solver/linear/NewtonSystemSolver.hpp"
+
+namespace signorini::detail {
+
+SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
+                            IterationObserver& observer);
+SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
+                               IterationObserver& observer);
+
+// Largest alpha in (0, inf] with x + alpha dx >= 0, over all ranks (inf if dx >= 0).
+double maxStepToBoundary(const Vector& x, const Vector& dx);
+
+// Objective J(v) = 1/2 v^T Q v - b^T v, given Qv.
+double objective(const ContactQP& qp, const Vector& v, const Vector& Qv);
+
+// Scales of the problem from one rough unconstrained solve Q v_hat = b, used to build
+// starting points: a displacement scale and an energy scale, both positive. A body that
+// only its contact holds (Q singular) is solved with every constraint held by a spring.
+struct ProblemScales {
+  double displacement = 1.0;
+  double energy = 1.0;
+  int krylovIterations = 0;
+};
+// `newton` must have its weights set to zero (H = Q); they are zero again on return.
+ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0);
+
+// True if Q maps one of the rigid body modes (qp.nullspace; none given: false) to zero
+// (to round-off): no Dirichlet condition holds the body in that direction. Collective.
+bool hasRigidBodyMotion(const ContactQP& qp);
+
+// Adds the end-of-solve data (objective, multipliers, KKT measures, active set) to `result`.
+void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, const Vector& slack,
+                  SolveResult& result);
+
+// The status message of a converged solve, with the KKT tolerance written in full (1e-08,
+// not std::to_string's 0.000000).
+std::string convergedMessage(double kktTolerance);
+
+// Fills v with the initial guess or zero.
+RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
+
+// Absolute Krylov tolerance of a truncated Newton step, ||H dv - rhs|| <= tolerance, for a
+// nonlinear residual of norm ||F|| (||grad psi|| for the primal method, the KKT residual
+// for the primal-dual method, where the solve's error enters F's first block only):
+//   "constant":          eta ||F|| (the inexact Newton condition of the paper's (27));
+//   "adaptive":          min(eta ||rhs||, max(floor, safety * residualScale)), the residual
+//                        scale following the barrier parameter; tailSafety instead of safety
+//                        when stationarityOnly (the method's other KKT measures are met);
+//   "eisenstat-walker":  eta_k ||F|| with Eisenstat and Walker's choice 2,
+//                        eta_k = 0.9 (||F_k|| / ||F_k-1||)^2, safeguarded, at most eta;
+//   "relative":          eta ||rhs||, a fixed residual reduction for every Newton system.
+struct ForcingRule {
+  std::string type;
+  double eta = 0.1;
+  double safety = 0.3;
+  double tailSafety = 0.01;
+  double reductionSafeguard = 1.0;
+  bool stationarityOnly = false;  // set by the method before each Newton step
+  double floor = 0.0;
+  // Eisenstat-Walker state: the previous nonlinear residual norm and forcing term.
+  double previousNorm = -1.0, previousEta = 0.0;
+
+  void restart() { previousNorm = -1.0; }
+  // nonlinearNorm: the norm of the nonlinear residual the Newton step reduces (EW only).
+  // An absolute tolerance; with "reduction" the loosest one allowed, startReduction() and
+  // floor do the rest (NewtonSystemSolver::solve).
+  double tolerance(double rhsNorm, double residualScale, double nonlinearNorm);
+  // The factor by which a solve reduces its start's residual ("reduction"), else 0.
+  double startReduction() const { return type == "reduction" ? eta : 0.0; }
+};
+ForcingRule forcingRule(const Teuchos::ParameterList& params, double floor);
+
+}  // namespace signorini::detail

@@ -1,0 +1,245 @@
+#include "signorini/solver/InteriorPointSolver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "core/ParameterValidation.hpp"
+#include "signorini/core/Error.hpp"
+#include "solver/ipm/InteriorPointMethods.hpp"
+#include "solver/linear/NewtonSystemSolver.hpp"
+
+namespace signorini {
+namespace {
+
+template <class T>
+Teuchos::RCP<Teuchos::EnhancedNumberValidator<T>> range(T lo, T hi) {
+  return rcp(new Teuchos::EnhancedNumberValidator<T>(lo, hi));
+}
+
+Teuchos::RCP<Teuchos::StringValidator> choices(std::initializer_list<std::string> names) {
+  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
+}
+
+}  // namespace
+
+Teuchos::ParameterList InteriorPointSolver::validParameters() {
+  Teuchos::ParameterList p("Solver");
+  p.set("method", "primal-dual", "\"primal-dual\" (Algorithm 3.2 with slack variables) or \"primal\" (Algorithm 3.1)",
+        choices({"primal-dual", "primal"}));
+  p.set("kkt: tolerance", 1e-8, "Stop when every relative KKT measure is at most this", range(1e-16, 1.0));
+  p.set("maximum iterations", 200, "Main iterations allowed", range(1, 100000));
+  p.set("forcing: type", "reduction",
+        "Truncated Newton forcing: \"reduction\" (each Krylov solve reduces its starting residual by "
+        "eta, and reaches the adaptive residual scale times forcing: reduction safeguard), \"adaptive\" "
+        "(follows the barrier parameter), \"constant\", \"eisenstat-walker\" or \"relative\"; "
+        "see doc/algorithms.md",
+        choices({"reduction", "adaptive", "constant", "eisenstat-walker", "relative"}));
+  p.set("forcing: eta", 0.1, "Reduction of each solve's starting residual, constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
+  p.set("forcing: safety", 0.3,
+        "Expert: Adaptive forcing: the residual allowed as a fraction of the current residual scale; below 1 so "
+        "that every step reduces the dual residual",
+        range(1e-6, 0.9));
+  p.set("forcing: tail safety", 0.01,
+        "Expert: Adaptive forcing of the primal-dual method once only stationarity is left (the active set has "
+        "settled): used instead of forcing: safety, the dual residual falls by about this much per main "
+        "iteration",
+        range(1e-6, 0.9));
+  p.set("forcing: reduction safeguard", 1.0,
+        "Expert: Forcing \"reduction\": every solve also reaches this times the adaptive forcing's residual "
+        "scale, so that the dual residual follows mu where the starting vectors stop improving",
+        range(1e-6, 1e6));
+  p.set("starting point: complementarity", 1.0,
+        "Expert: Initial s^T y as a multiple of the energy scale |b^T v_hat| of the unconstrained solution "
+        "(primal-dual)", range(1e-12, 1e12));
+
+  p.set("primal-dual: centering", "mehrotra",
+        "\"mehrotra\": predictor-corrector; \"fixed\": mu_{k+1} = (primal-dual: mu factor) mu_k with "
+        "backtracking on 1/2 ||F||^2 (the paper's Algorithm 3.2)",
+        choices({"mehrotra", "fixed"}));
+  p.set("primal-dual: mu factor", 0.2, "Fixed centering: factor of mu per iteration", range(1e-6, 0.999));
+  p.set("primal-dual: corrector from predictor", true,
+        "Expert: Mehrotra: start the corrector's Krylov solve from the predictor's step instead of zero (the "
+        "right-hand sides differ by the centering and second-order terms only)");
+  p.set("primal-dual: fraction to boundary", 0.995, "Step kept this fraction inside s > 0, y > 0", range(0.5, 0.99999));
+  p.set("primal-dual: armijo", 0.01, "Expert: Fixed centering: Armijo constant of the merit backtracking", range(1e-8, 0.5));
+
+  p.set("primal: mu0", -1.0,
+        "Initial barrier parameter mu_0; -1: from the problem's scale, (starting point: "
+        "complementarity) |b^T v_hat| / m (the paper: 1)");
+  p.set("primal: zeta0", -1.0,
+        "Initial inner tolerance zeta_0 on ||grad psi||; -1: ||b|| (the paper: 1500)");
+  p.set("primal: delta", 0.2, "zeta_{k+1} = delta zeta_k (the paper: 0.5)", range(1e-6, 0.999999));
+  p.set("primal: gamma", 0.2, "mu_{k+1} = gamma mu_k; the initial gamma when adaptive (the paper: 0.5)", range(1e-6, 0.999999));
+  p.set("primal: tau", 0.01, "Expert: Armijo constant tau of the backtracking line search", range(1e-8, 0.5));
+  p.set("primal: fraction to boundary", 0.99, "Expert: sigma in (28): first trial step min(1, sigma alpha_bar)",
+        range(0.5, 0.999999));
+  p.set("primal: maximum inner iterations", 50, "Expert: Newton steps allowed per main iteration", range(1, 10000));
+  p.set("primal: extrapolation", true,
+        "Expert: Start each barrier subproblem with a predictor step along the central path, "
+        "H dv = (mu_k - mu_k+1) A^T (1/s) (not in the paper's Algorithm 3.1)");
+  p.set("primal: starting point", "shift",
+        "How the primal method makes the initial guess strictly feasible: \"shift\" moves it along "
+        "A^T (exact when each constraint acts on its own unknowns, as contact constraints do); "
+        "\"relaxed\" solves over S_varsigma = {A v - d <= varsigma} and drives varsigma to zero with mu",
+        choices({"shift", "relaxed"}));
+  p.set("primal: starting margin", 0.1,
+        "Expert: The initial guess is shifted so that every slack d - A v is at least this times the "
+        "displacement scale of the unconstrained solution",
+        range(1e-12, 1e6));
+  p.set("gamma: adaptive", false,
+        "Adapt gamma as in the paper's section 4 (the paper: true; measured on problem M it drives "
+        "gamma to its maximum and stalls, see xml/ipm-primal.xml)");
+  p.set("gamma: few inner iterations", 3, "Expert: Fewer inner iterations than this count as few", range(1, 1000));
+  p.set("gamma: successive main iterations", 3, "Expert: Few inner iterations this many times in a row lower gamma",
+        range(1, 1000));
+  p.set("gamma: decrease factor", 0.99, "Expert: gamma <- max(gamma: min, factor * gamma)", range(1e-6, 1.0));
+  p.set("gamma: min", 0.54, "Expert: Lower bound in the decrease rule", range(1e-6, 0.999999));
+  p.set("gamma: increase factor", 1.05, "Expert: gamma <- min(gamma: max, factor * gamma) after more inner iterations",
+        range(1.0, 100.0));
+  p.set("gamma: max", 0.99, "Expert: Upper bound in the increase rule", range(1e-6, 0.999999));
+
+  p.setParameters(NewtonSystemSolver::validParameters());
+  return p;
+}
+
+InteriorPointSolver::InteriorPointSolver(const Teuchos::ParameterList& params)
+    : params_(validatedParameters(params, validParameters(), "Solver")) {}
+
+SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initialGuess,
+                                       IterationObserver* observer) const {
+  IterationObserver silent;
+  IterationObserver& obs = observer ? *observer : silent;
+  if (params_.get<std::string>("method") == "primal")
+    return detail::solvePrimalBarrier(qp, params_, initialGuess, obs);
+  return detail::solvePrimalDual(qp, params_, initialGuess, obs);
+}
+
+namespace detail {
+
+double maxStepToBoundary(const Vector& x, const Vector& dx) {
+  double local = std::numeric_limits<double>::infinity();
+  auto xd = x.getData();
+  auto dd = dx.getData();
+  for (std::size_t i = 0; i < x.getLocalLength(); ++i)
+    if (dd[i] < 0) local = std::min(local, -xd[i] / dd[i]);
+  double global = local;
+  Teuchos::reduceAll(*x.getMap()->getComm(), Teuchos::REDUCE_MIN, 1, &local, &global);
+  return global;
+}
+
+double objective(const ContactQP& qp, const Vector& v, const Vector& Qv) {
+  return 0.5 * Qv.dot(v) - qp.b->dot(v);
+}
+
+RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0) {
+  auto v = rcp(new Vector(qp.Q->getDomainMap()));
+  if (v0) {
+    if (!v0->getMap()->isSameAs(*v->getMap())) throw InputError("initial guess: not on Q's domain map");
+    v->assign(*v0);
+  }
+  return v;
+}
+
+bool hasRigidBodyMotion(const ContactQP& qp) {
+  if (qp.nullspace.is_null()) return false;
+  MultiVector Qr(qp.Q->getRangeMap(), qp.nullspace->getNumVectors());
+  qp.Q->apply(*qp.nullspace, Qr);
+  std::vector<double> modeNorms(qp.nullspace->getNumVectors()), residualNorms(modeNorms.size());
+  qp.nullspace->normInf(modeNorms);
+  Qr.normInf(residualNorms);
+  const double scale = qp.Qmatrix() ? qp.Qmatrix()->getFrobeniusNorm() : 1.0;
+  for (std::size_t k = 0; k < modeNorms.size(); ++k)
+    if (residualNorms[k] <= 1e-12 * scale * modeNorms[k]) return true;
+  return false;
+}
+
+ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0) {
+  // r = b - Q v0; Q w = r roughly; v_hat = v0 + w.
+  Vector r(*qp.b, Teuchos::Copy), w(qp.Q->getDomainMap());
+  qp.Q->apply(v0, r, Teuchos::NO_TRANS, -1.0, 1.0);
+  ProblemScales scales;
+  // Q is singular when only the contact holds the body: then estimate with every constraint
+  // held by a spring of its own stiffness q_i.
+  const bool springs = qp.A->getGlobalNumRows() > 0 && qp.Qmatrix() && hasRigidBodyMotion(qp);
+  if (springs) newton.setWeights(*constraintStiffness(*qp.Qmatrix(), *qp.A));
+  scales.krylovIterations = newton.solve(r, w, 1e-2 * r.norm2()).iterations;
+  if (springs) newton.setWeights(Vector(qp.A->getRangeMap()));
+  w.update(1.0, v0, 1.0);
+  Vector c(qp.A->getRangeMap());
+  qp.A->apply(w, c);
+  c.update(-1.0, *qp.d, 1.0);
+  const double candidates[] = {qp.d->getGlobalLength() ? c.normInf() : 0.0, w.normInf(), 1.0};
+  for (double value : candidates)
+    if (value > 0) {
+      scales.displacement = value;
+      break;
+    }
+  const double energy = std::abs(qp.b->dot(w));
+  scales.energy = energy > 0 ? energy : 1.0;
+  return scales;
+}
+
+void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, const Vector& slack,
+                  SolveResult& result) {
+  Vector Qv(qp.Q->getRangeMap());
+  qp.Q->apply(v, Qv);
+  result.objective = objective(qp, v, Qv);
+  result.v = rcp(new Vector(v, Teuchos::Copy));
+  result.lambda = rcp(new Vector(lambda, Teuchos::Copy));
+  result.kkt = kktMeasures(qp, v, lambda);
+  const ActiveSetCriterion criterion(qp, v, lambda);
+  long long local = 0;
+  auto l = lambda.getData();
+  auto s = slack.getData();
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(lambda.getLocalLength()); ++i)
+    local += criterion.isActive(i, l[i], s[i]);
+  Teuchos::reduceAll(*v.getMap()->getComm(), Teuchos::REDUCE_SUM, 1, &local, &result.activeConstraints);
+}
+
+std::string convergedMessage(double kktTolerance) {
+  char text[96];
+  std::snprintf(text, sizeof text, "every relative KKT measure is below %g", kktTolerance);
+  return text;
+}
+
+double ForcingRule::tolerance(double rhsNorm, double residualScale, double nonlinearNorm) {
+  if (type == "reduction") return std::max(floor, reductionSafeguard * residualScale);
+  if (type == "constant") return std::max(floor, eta * nonlinearNorm);
+  if (type == "relative") return eta * rhsNorm;
+  if (type == "adaptive")
+    return std::min(eta * rhsNorm, std::max(floor, (stationarityOnly ? tailSafety : safety) * residualScale));
+  double forcing = eta;
+  if (nonlinearNorm == previousNorm) {
+    forcing = previousEta;  // another solve for the same Newton step (Mehrotra's corrector)
+  } else if (previousNorm > 0) {
+    const double ratio = nonlinearNorm / previousNorm;
+    forcing = 0.9 * ratio * ratio;
+    const double safeguard = 0.9 * previousEta * previousEta;  // no sudden drop of eta
+    if (safeguard > 0.1) forcing = std::max(forcing, safeguard);
+    forcing = std::min(forcing, eta);
+  }
+  previousNorm = nonlinearNorm;
+  previousEta = forcing;
+  return std::max(floor, forcing * nonlinearNorm);
+}
+
+ForcingRule forcingRule(const Teuchos::ParameterList& params, double floor) {
+  ForcingRule rule;
+  rule.type = params.get<std::string>("forcing: type");
+  rule.eta = params.get<double>("forcing: eta");
+  rule.safety = params.get<double>("forcing: safety");
+  rule.tailSafety = params.get<double>("forcing: tail safety");
+  rule.reductionSafeguard = params.get<double>("forcing: reduction safeguard");
+  rule.floor = floor;
+  return rule;
+}
+
+}  // namespace detail
+}  // namespace signorini

@@ -1,0 +1,52 @@
+#include "signorini/solver/IterationObserver.hpp"
+
+#include <cstdio>
+
+namespace signorini {
+
+const char* toString(SolveStatus status) {
+  switch (status) {
+    case SolveStatus::Converged: return "converged";
+    case SolveStatus::IterationLimit: return "iteration limit";
+    case SolveStatus::LineSearchFailure: return "line search failure";
+    case SolveStatus::KrylovFailure: return "Krylov failure";
+    case SolveStatus::NumericalBreakdown: return "numerical breakdown";
+  }
+  return "unknown";
+}
+
+void IterationLog::onStart(const std::string& method, long long n, long long m) {
+  if (!print_) return;
+  char line[256];
+  std::snprintf(line, sizeof line, "Interior point method: %s, n = %lld, m = %lld\n", method.c_str(), n, m);
+  out_ << line;
+  std::snprintf(line, sizeof line, "%5s %5s %10s %16s %9s %9s %9s %9s %7s %6s %9s\n", "it", "inner", "mu",
+                "objective", "stat", "compl", "pfeas", "dfeas", "step", "krylov", "time[s]");
+  out_ << line << std::flush;
+}
+
+void IterationLog::onNewtonStep(const NewtonStepRecord& s) {
+  if (!print_) return;
+  char line[256];
+  std::snprintf(line, sizeof line, "%5d %5d %10.3e %16.9e %9.2e %9.2e %9.2e %9.2e %7.4f %6d %9.3f\n", s.outer,
+                s.inner, s.mu, s.objective, s.kkt.stationarity, s.kkt.complementarity, s.kkt.primalFeasibility,
+                s.kkt.dualFeasibility, s.step, s.krylovIterations, s.seconds);
+  out_ << line << std::flush;
+}
+
+void IterationLog::onFinish(const SolveResult& r) {
+  if (!print_) return;
+  char line[512];
+  std::snprintf(line, sizeof line,
+                "%s after %d main iterations, %d Newton steps, %lld Krylov iterations (max %d per step), "
+                "%.3f s\n  objective %.12e, active constraints %lld, KKT: stat %.2e compl %.2e pfeas %.2e "
+                "dfeas %.2e\n",
+                toString(r.status), r.outerIterations, r.newtonSteps, r.krylovIterations, r.maxKrylovPerNewton,
+                r.seconds, r.objective, r.activeConstraints, r.kkt.stationarity, r.kkt.complementarity,
+                r.kkt.primalFeasibility, r.kkt.dualFeasibility);
+  out_ << line;
+  if (!r.converged()) out_ << "  " << r.message << "\n";
+  out_ << std::flush;
+}
+
+}  // namespace signorini

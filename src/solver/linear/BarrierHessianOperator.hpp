@@ -1,0 +1,67 @@
+#pragma once
+// H = Q + A^T D A with D diagonal: the Hessian of the log-barrier function (D = mu / s^2)
+// and the condensed primal-dual matrix (D = Lambda C^-1). Applied matrix-free: A^T D A is
+// never formed into Q.
+#include <Tpetra_Operator.hpp>
+
+#include <memory>
+#include <vector>
+
+#include "signorini/core/TpetraTypes.hpp"
+
+namespace signorini {
+
+class BarrierHessianOperator : public Operator {
+ public:
+  BarrierHessianOperator(RCP<const Operator> Q, RCP<const CrsMatrix> A);
+
+  // D, on A's range map (copied); all zeros until set.
+  void setWeights(const Vector& D);
+  const Vector& weights() const { return *D_; }
+
+  // Y = alpha * op(H) X + beta * Y. X and Y must not alias. H is symmetric when Q is; the
+  // transpose is applied as such for the column slice below.
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
+             Scalar alpha = Teuchos::ScalarTraits<Scalar>::one(),
+             Scalar beta = Teuchos::ScalarTraits<Scalar>::zero()) const override;
+  RCP<const Map> getDomainMap() const override { return Q_->getDomainMap(); }
+  RCP<const Map> getRangeMap() const override { return Q_->getRangeMap(); }
+  bool hasTransposeApply() const override { return true; }
+
+  // Q + A^T D A as an assembled matrix (needs Q to be a CrsMatrix): for preconditioners
+  // and tests, never for applying H. When every entry of A^T D A falls on an entry of Q's
+  // graph in a row this rank owns (nodal constraints couple the DOFs of one node), the
+  // result shares Q's graph and costs a copy of Q's values; otherwise (weighted gaps couple
+  // the nodes around a contact vertex) (A^T D) A is a sparse product that keeps its pattern
+  // from the first call, added at known positions into the fixed pattern of Q + A^T A.
+  RCP<CrsMatrix> assemble() const;
+  // Q + A^T D A with other weights D than the operator's (on A's range map).
+  RCP<CrsMatrix> assemble(const Vector& D) const;
+
+  // H P P^T, with P the restriction to the contact DOFs (those in A): Q's columns on the
+  // contact DOFs plus A^T D A, with a copy of the current D. It applies H to vectors that
+  // vanish off the contact DOFs, and its transpose P P^T H gives H's contact rows, for a
+  // fraction of the cost of H (needs Q to be a CrsMatrix).
+  RCP<BarrierHessianOperator> onContactColumns() const;
+
+ private:
+  RCP<const Operator> Q_;
+  RCP<const CrsMatrix> A_;
+  RCP<Vector> D_;
+  mutable RCP<MultiVector> AX_;  // scratch, resized to the number of columns of X
+
+  // Where A^T D A adds into Q's local values array: entry e adds D[constraint[e]] *
+  // coefficient[e] at position[e]. Found on the first assemble(); `inQPattern_` is -1 until
+  // then, and 0 if some entry is missing from Q's graph on some rank.
+  mutable int inQPattern_ = -1;
+  mutable std::vector<std::size_t> position_;
+  mutable std::vector<int> constraint_;
+  mutable std::vector<double> coefficient_;
+  bool findPositionsInQPattern(const CrsMatrix& Q) const;
+
+  struct ProductPattern;
+  mutable std::shared_ptr<ProductPattern> product_;
+  RCP<CrsMatrix> assembleByProduct(const CrsMatrix& Q, const Vector& D) const;
+};
+
+}  // namespace signorini

@@ -1,0 +1,74 @@
+#include "solver/linear/KrylovSolver.hpp"
+
+#include <algorithm>
+#include <limits>
+
+#include <BelosLinearProblem.hpp>
+#include <BelosSolverFactory.hpp>
+#include <BelosTpetraAdapter.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Operator.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/core/Error.hpp"
+
+namespace signorini {
+
+Teuchos::ParameterList KrylovSolver::validParameters() {
+  Teuchos::ParameterList p("Krylov");
+  p.set("solver", "CG", "Belos solver name: CG, MINRES, GMRES, or any name Belos knows");
+  p.sublist("Belos", false, "Passed to the Belos solver unchanged");
+  return p;
+}
+
+KrylovSolver::KrylovSolver(const Teuchos::ParameterList& params)
+    : solver_(params.isParameter("solver") ? params.get<std::string>("solver") : "CG"),
+      belos_(params.isSublist("Belos") ? params.sublist("Belos") : Teuchos::ParameterList()) {
+  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
+  if (!factory.isSupported(solver_))
+    throw InputError("Krylov solver \"" + solver_ + "\" is not a Belos solver");
+}
+
+KrylovResult KrylovSolver::solve(const RCP<const Operator>& A, const RCP<const Operator>& M,
+                                 const RCP<const MultiVector>& b, const RCP<MultiVector>& x,
+                                 double tol, int maxIterations, double startReduction, double floor) const {
+  auto problem = rcp(new Belos::LinearProblem<Scalar, MultiVector, Operator>(A, x, b));
+  if (!M.is_null()) problem->setRightPrec(M);
+  problem->setProblem();
+  if (startReduction > 0.0 && b->getNumVectors() == 1) {
+    // Relative to ||b||, as the residual scaling below says; a start worse than zero counts as zero.
+    const double bnorm = b->getVector(0)->norm2(), r0norm = problem->getInitResVec()->getVector(0)->norm2();
+    if (bnorm > 0.0) tol = std::max(floor, std::min(tol, startReduction * std::min(r0norm, bnorm) / bnorm));
+  }
+
+  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
+  auto solver = factory.create(solver_, Teuchos::null);
+  const auto valid = solver->getValidParameters();
+  auto params = rcp(new Teuchos::ParameterList(belos_));
+  params->set("Convergence Tolerance", tol);
+  params->set("Maximum Iterations", maxIterations);
+  // The forcing condition is on the true residual relative to the right-hand side, where
+  // the solver lets us say so (MINRES always measures it that way).
+  for (const char* scaling : {"Implicit Residual Scaling", "Explicit Residual Scaling"})
+    if (valid->isParameter(scaling) && !params->isParameter(scaling)) params->set(scaling, "Norm of RHS");
+  // CG's check p^T A p > 0 also fires on round-off once the residual is tiny; a truly
+  // indefinite system shows up as non-convergence instead.
+  if (valid->isParameter("Assert Positive Definiteness") && !params->isParameter("Assert Positive Definiteness"))
+    params->set("Assert Positive Definiteness", false);
+  solver->setParameters(params);
+  solver->setProblem(problem);
+  KrylovResult result;
+  try {
+    const Belos::ReturnType status = solver->solve();
+    result.converged = status == Belos::Converged;
+    result.relativeResidual = solver->achievedTol();
+  } catch (const std::exception&) {
+    // Breakdown: report no convergence; the caller decides what to do with x.
+    result.converged = false;
+    result.relativeResidual = std::numeric_limits<double>::infinity();
+  }
+  result.iterations = solver->getNumIters();
+  return result;
+}
+
+}  // namespace signorini

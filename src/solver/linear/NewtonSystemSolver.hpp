@@ -1,0 +1,80 @@
+#pragma once
+// Solves the Newton systems H dv = r of the interior point methods, H = Q + A^T D A applied
+// matrix-free, by a preconditioned Belos Krylov method to an absolute residual tolerance
+// (the truncated Newton step). The preconditioner is chosen by the "Preconditioner" list:
+//   "none";
+//   "amg of Q":  MueLu on Q, set up once and reused for every step;
+//   "amg of H":  MueLu on the assembled Q + A^T D A (assembled for the preconditioner only),
+//                rebuilt when some constraint's relative weight D_i / (D_i + q_i) moved by
+//                more than "amg of H: rebuild tolerance" since the last build (0: every
+//                step, 1: never after the first), with MueLu's "reuse: type" if set; with a
+//                contact correction, D_i is capped at "amg of H: weight cap" times q_i
+//                (filtering: the correction solves the stiff contact part exactly);
+// and its "contact correction": the AMG combined with an exact solve on the contact DOFs
+// (see SubspaceCorrectedPreconditioner), "none", "additive" or "multiplicative". The
+// multigrid's levels are MueLu's (MueLuPreconditioner) or, on a box mesh, geometric ones
+// above MueLu's (GeometricMultigridPreconditioner): "hierarchy".
+#include <memory>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "signorini/solver/ContactQP.hpp"
+#include "solver/linear/BarrierHessianOperator.hpp"
+#include "solver/linear/InitialGuessProjection.hpp"
+#include "solver/linear/KrylovSolver.hpp"
+#include "solver/preconditioner/ContactSubspaceSolver.hpp"
+#include "solver/preconditioner/MultilevelPreconditioner.hpp"
+
+namespace signorini {
+
+class NewtonSystemSolver {
+ public:
+  // Sublists "Krylov" (see KrylovSolver) and "Preconditioner".
+  static Teuchos::ParameterList validParameters();
+
+  NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params);
+
+  // Sets D and refreshes the preconditioner as its strategy says.
+  void setWeights(const Vector& D);
+
+  // Solves H x = r until ||r - H x|| <= absoluteTolerance, from x = 0 or, with Krylov/
+  // "initial guess: previous solutions" > 0, from the projection on earlier solutions
+  // (InitialGuessProjection). With `fromGuess`, the x given (e.g. the predictor's step for
+  // the corrector, whose right-hand side differs by the centering terms only) is the start,
+  // or joins the projection's basis. With Krylov/"initial guess: contact correction" and a
+  // contact correction in the preconditioner, the start is then made exact on the contact
+  // DOFs: x += P (P^T H P)^-1 P^T (r - H x), the starting vector of deflated CG.
+  // With startReduction > 0 the solve stops earlier, once the residual of that start (or ||r||,
+  // if smaller) has fallen by this factor, but not above absoluteTolerance nor before
+  // absoluteFloor.
+  KrylovResult solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess = false,
+                     double startReduction = 0.0, double absoluteFloor = 0.0);
+
+  const BarrierHessianOperator& hessian() const { return *H_; }
+  int maxIterations() const { return maxIterations_; }
+  // Number of AMG hierarchies built so far.
+  int preconditionerSetups() const { return amgBuilds_ + (strategy_ == "amg of Q" ? 1 : 0); }
+
+ private:
+  RCP<BarrierHessianOperator> H_;
+  RCP<BarrierHessianOperator> contactColumns_;  // H P P^T, for the multiplicative correction
+  KrylovSolver krylov_;
+  std::string strategy_;
+  int maxIterations_;
+  InitialGuessProjection initialGuess_;
+  bool contactCorrectedStart_ = false;
+  std::unique_ptr<MultilevelPreconditioner> amg_;
+  std::string correction_ = "none";
+  RCP<ContactSubspaceSolver> subspace_;
+  bool reuseHierarchy_ = false;
+  double rebuildTolerance_ = 0.0;
+  double weightCap_ = 0.0;  // "amg of H: weight cap" with a contact correction, else 0 (none)
+  RCP<Vector> constraintStiffness_, builtWeights_;  // q_i, and w_i of the last AMG build
+  int amgBuilds_ = 0;
+  bool amgReady_ = false;
+};
+
+// q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i, on A's row map.
+RCP<Vector> constraintStiffness(const CrsMatrix& Q, const CrsMatrix& A);
+
+}  // namespace signorini

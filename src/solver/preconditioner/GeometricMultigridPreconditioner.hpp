@@ -1,0 +1,72 @@
+#pragma once
+// Geometric multigrid: below the fine space lies the sequence of grids a GeometricGrid gives
+// (for a box mesh, box grids with half the cells of the one above; a P_k space, k > 1, first
+// goes to P1 on its own mesh's grid), each a P1 space, joined by P1 interpolation P. The
+// coarse matrices are Galerkin products P^T A P, the smoother is Ifpack2's Chebyshev, and
+// once a grid has fewer unknowns than "coarsest size" or has no coarser one, MueLu's
+// algebraic multigrid, with the grid's rigid body modes, takes over.
+// The cycle is a V-cycle, symmetric positive definite for CG.
+//
+// Why: smoothed aggregation on these meshes needs more CG iterations as the mesh is refined
+// (bench/results/amg-variants.md); interpolation between nested grids does not lose
+// accuracy with the mesh size. In 2D each grid's triangles are unions of the finer grid's,
+// so P is the exact embedding; the 3D pattern alternates with the box parity and the grids
+// are not nested, which interpolation handles all the same.
+//
+// Dirichlet DOFs (rows of the fine matrix with a diagonal entry only, as symmetric
+// elimination leaves them) stay out of the coarse spaces: a coarse DOF at a Dirichlet DOF
+// is injected into it alone, and the interpolation to other DOFs skips it.
+#include <memory>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+#include "signorini/core/TpetraTypes.hpp"
+#include "signorini/solver/GeometricGrid.hpp"
+#include "solver/preconditioner/MueLuPreconditioner.hpp"
+#include "solver/preconditioner/MultilevelPreconditioner.hpp"
+
+namespace signorini {
+
+class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
+ public:
+  // The Ifpack2 Chebyshev parameters used where the user's "smoother" list is silent.
+  static Teuchos::ParameterList defaultSmootherParameters();
+
+  // `grid`: the P1 grid of the fine space's mesh; `Q`: the fine matrix (its pattern and
+  // Dirichlet rows are those of every matrix given to compute()); `coordinates`: the owned
+  // fine nodes, on a node map with Q's DOF = blockSize * node + component. Collective.
+  // `eigenvalueUpdateSteps`: Lanczos steps of the smoothers' eigenvalue estimates after a
+  // Galerkin update, started from the previous estimate's Ritz vector and the changed rows
+  // (0: a fresh estimate of "chebyshev: eigenvalue max iterations" steps at every build; the
+  // default, 5, is Preconditioner/geometric: eigenvalue update steps in NewtonSystemSolver).
+  // Throws InputError when the nodes do not contain the coarse grid's vertices.
+  GeometricMultigridPreconditioner(const GeometricGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates,
+                                   int blockSize, long long coarsestSize, const Teuchos::ParameterList& smoother,
+                                   const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps);
+  ~GeometricMultigridPreconditioner() override;
+
+  void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
+  RCP<Operator> getOperator() const override;
+
+  // Grids below the fine level (0: MueLu alone), and their global unknowns, finest first.
+  int geometricLevels() const { return static_cast<int>(levels_.size()) - 1; }
+  std::vector<long long> levelSizes() const;
+  // The interpolation from level l + 1 to level l (l = 0: to the fine space). Coarse DOF
+  // blockSize * v + c is component c at vertex v of that level's grid (GeometricGrid numbering).
+  RCP<const CrsMatrix> prolongator(int level) const;
+  // The matrix of level l (0: the fine one given to compute(), then the Galerkin products).
+  // After the first compute(), a fine matrix on the previous one's graph updates them in
+  // place with the products of the entries that changed.
+  RCP<const CrsMatrix> levelMatrix(int level) const;
+
+ private:
+  struct Level;
+  std::vector<std::shared_ptr<Level>> levels_;  // levels_[0] is the fine space
+  Teuchos::ParameterList smoother_;
+  int eigenvalueUpdateSteps_;
+  std::unique_ptr<MueLuPreconditioner> coarse_;
+  RCP<Operator> cycle_;
+};
+
+}  // namespace signorini

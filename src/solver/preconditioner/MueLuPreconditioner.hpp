@@ -1,0 +1,37 @@
+#pragma once
+// Algebraic multigrid for elasticity-type matrices through MueLu, built from a "MueLu"
+// parameter list that is passed through unchanged, with the rigid body modes as nullspace.
+#include <Teuchos_ParameterList.hpp>
+
+#include "signorini/core/TpetraTypes.hpp"
+#include "solver/preconditioner/MultilevelPreconditioner.hpp"
+
+namespace signorini {
+
+class MueLuPreconditioner : public MultilevelPreconditioner {
+ public:
+  // Defaults for vector problems with `blockSize` unknowns per node. They are correct on
+  // any rank count with Debian's Trilinos 13.2, whose Amesos2 coarse solvers give wrong
+  // answers on more than one rank: the coarse level is smoothed, not factored, and kept
+  // small enough for that to be exact in practice (see tests/solver/test_muelu_parallel).
+  static Teuchos::ParameterList defaultParameters(int blockSize);
+
+  // `params` is the user's "MueLu" list; entries it lacks are taken from defaultParameters.
+  // `nullspace` lives on the DOF map, `coordinates` on the node map (either may be null).
+  MueLuPreconditioner(const Teuchos::ParameterList& params, int blockSize,
+                      RCP<const MultiVector> nullspace, RCP<const MultiVector> coordinates);
+
+  // Builds the hierarchy for A. With `reuse`, a hierarchy built before for a matrix of the
+  // same pattern is refreshed according to the list's "reuse: type" instead of rebuilt.
+  void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
+
+  RCP<Operator> getOperator() const override;
+  const Teuchos::ParameterList& parameters() const { return params_; }
+
+ private:
+  Teuchos::ParameterList params_;
+  RCP<const MultiVector> nullspace_, coordinates_;
+  RCP<Operator> op_;
+};
+
+}  // namespace signorini

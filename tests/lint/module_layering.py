@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""The modules' layering, checked on every #include "..." of the library's sources and headers:
+
+    core < solver < fe < assembly < problem < io < driver
+
+A file of one module includes headers of its own module and of modules below it only (the
+solver knows nothing of meshes, assembly, problems or output); includes are rooted at src/
+or include/ (no "../"); an installed header (include/signorini/) includes installed headers
+only. The umbrella header include/signorini/signorini.hpp stands above every module.
+Prints every violation; exit status 1 if there is one.
+
+    tests/lint/module_layering.py SOURCE_DIR
+"""
+import os
+import re
+import sys
+
+ORDER = ["core", "solver", "fe", "assembly", "problem", "io", "driver"]
+INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+
+
+def module_of_file(root, path):
+    """The module of a library file: src/<module>/... or include/signorini/<module>/..."""
+    rel = os.path.relpath(path, root).split(os.sep)
+    if rel == ["include", "signorini", "signorini.hpp"]:
+        return ORDER[-1]
+    if rel[0] == "src":
+        return rel[1]
+    if rel[:2] == ["include", "signorini"] and len(rel) > 3:
+        return rel[2]
+    return None
+
+
+def module_of_include(target):
+    """The module of an included header: "signorini/<module>/X.hpp" or "<module>/.../X.hpp"."""
+    parts = target.split("/")
+    if parts[0] == "signorini":
+        parts = parts[1:]
+    return parts[0] if len(parts) > 1 and parts[0] in ORDER else None
+
+
+def violations(root):
+    for top in ("src", os.path.join("include", "signorini")):
+        for directory, _, names in os.walk(os.path.join(root, top)):
+            for name in sorted(names):
+                if not name.endswith((".hpp", ".cpp")):
+                    continue
+                path = os.path.join(directory, name)
+                rel = os.path.relpath(path, root)
+                module = module_of_file(root, path)
+                installed = rel.startswith(os.path.join("include", "signorini"))
+                if module not in ORDER:
+                    yield "%s: not in a module folder (%s)" % (rel, ", ".join(ORDER))
+                    continue
+                with open(path) as f:
+                    text = f.read()
+                for target in INCLUDE.findall(text):
+                    if ".." in target.split("/"):
+                        yield '%s: includes "%s" by a relative path' % (rel, target)
+                        continue
+                    if installed and not target.startswith("signorini/"):
+                        yield '%s: installed header includes the private "%s"' % (rel, target)
+                    used = module_of_include(target)
+                    if used is None:
+                        yield '%s: includes "%s", which is in no module' % (rel, target)
+                    elif ORDER.index(used) > ORDER.index(module):
+                        yield '%s: %s includes "%s" from %s, a module above it' % (rel, module, target, used)
+
+
+def main():
+    root = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.dirname(os.path.dirname(
+        os.path.abspath(__file__))))
+    found = list(violations(root))
+    for line in found:
+        print(line)
+    print("module layering: %d violation(s)" % len(found))
+    return 1 if found else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
