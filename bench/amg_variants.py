@@ -32,7 +32,7 @@ VARIANTS = {
 }
 PROBLEMS = ["paper/M", "paper/J", "family/2d-p1-nx400", "family/2d-p1-nx800", "paper/E", "paper/L",
             "family/3d-p1-nx40"]
-TIMERS = {"amg_setup": "Signorini: 3b AMG setup", "krylov": "Signorini: 3c Krylov"}
+TIMERS = {"amg_setup": "Signorini: solve: AMG setup", "krylov": "Signorini: solve: Krylov"}
 
 
 def run(problem, settings, ranks, out):

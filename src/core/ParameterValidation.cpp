@@ -96,13 +96,8 @@ void validateInto(const Teuchos::ParameterList& user, Teuchos::ParameterList& me
       try {
         validator->validate(value, name, path.empty() ? "top level" : path);
       } catch (const std::exception&) {
-        std::ostringstream accepted;
-        validator->printDoc("", accepted);
-        std::string doc = accepted.str();
-        while (!doc.empty() && (doc.back() == '\n' || doc.back() == ' ')) doc.pop_back();
-        std::replace(doc.begin(), doc.end(), '\n', ' ');
         throw InputError(where + ": invalid value " + Teuchos::toString(value.getAny(false)) +
-                         "; accepted: " + doc);
+                         "; accepted: " + acceptedValues(*validator));
       }
     }
     value.setValidator(target.validator());
@@ -119,7 +114,64 @@ void removeTemplates(Teuchos::ParameterList& list) {
       removeTemplates(list.sublist(list.name(it)));
 }
 
+// 0 or an integer in [lo, hi]: a parameter whose 0 switches a feature off.
+class ZeroOrRangeValidator : public Teuchos::ParameterEntryValidator {
+ public:
+  ZeroOrRangeValidator(int lo, int hi) : lo_(lo), hi_(hi) {}
+  const std::string getXMLTypeName() const override { return "ZeroOrRangeValidator(int)"; }
+  void printDoc(const std::string& docString, std::ostream& out) const override {
+    out << "# " << docString << "\n# 0, or an integer from " << lo_ << " to " << hi_ << "\n";
+  }
+  ValidStringsList validStringValues() const override { return Teuchos::null; }
+  void validate(const Teuchos::ParameterEntry& entry, const std::string& name,
+                const std::string& sublist) const override {
+    const int value = entry.isType<int>() ? Teuchos::getValue<int>(entry) : -1;
+    if (!entry.isType<int>() || (value != 0 && (value < lo_ || value > hi_)))
+      throw Teuchos::Exceptions::InvalidParameterValue(sublist + "/" + name + ": " + description());
+  }
+  std::string description() const {
+    return "0, or an integer from " + std::to_string(lo_) + " to " + std::to_string(hi_);
+  }
+
+ private:
+  int lo_, hi_;
+};
+
+std::string quotedList(const Teuchos::Array<std::string>& names) {
+  std::string list;
+  for (const std::string& name : names) list += (list.empty() ? "\"" : ", \"") + name + "\"";
+  return list;
+}
+
 }  // namespace
+
+Teuchos::RCP<const Teuchos::StringValidator> choices(std::initializer_list<std::string> names) {
+  return Teuchos::rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
+}
+
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> zeroOrRange(int lo, int hi) {
+  return Teuchos::rcp(new ZeroOrRangeValidator(lo, hi));
+}
+
+std::string acceptedValues(const Teuchos::ParameterEntryValidator& validator) {
+  std::ostringstream out;
+  if (auto* real = dynamic_cast<const Teuchos::EnhancedNumberValidator<double>*>(&validator)) {
+    out << "a number from " << real->getMin() << " to " << real->getMax();
+  } else if (auto* integer = dynamic_cast<const Teuchos::EnhancedNumberValidator<int>*>(&validator)) {
+    out << "an integer from " << integer->getMin() << " to " << integer->getMax();
+  } else if (auto* zeroOr = dynamic_cast<const ZeroOrRangeValidator*>(&validator)) {
+    out << zeroOr->description();
+  } else if (const auto names = validator.validStringValues(); !names.is_null()) {
+    out << (names->size() == 1 ? "" : "one of ") << quotedList(*names);
+  } else {
+    validator.printDoc("", out);
+    std::string doc = out.str();
+    while (!doc.empty() && (doc.back() == '\n' || doc.back() == ' ')) doc.pop_back();
+    std::replace(doc.begin(), doc.end(), '\n', ' ');
+    return doc;
+  }
+  return out.str();
+}
 
 std::string closestName(const std::string& name, const Teuchos::ParameterList& valid) {
   std::string best;

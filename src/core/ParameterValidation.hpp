@@ -2,9 +2,12 @@
 // Validation of user parameter lists against the valid list a class publishes
 // (Belos' getValidParameters convention): unknown names get a "did you mean" hint, wrong
 // types and out-of-range values a message with the parameter's full path.
+#include <initializer_list>
 #include <string>
+#include <utility>
 
 #include <Teuchos_ParameterList.hpp>
+#include <Teuchos_StandardParameterEntryValidators.hpp>
 
 namespace signorini {
 
@@ -19,6 +22,45 @@ namespace signorini {
 Teuchos::ParameterList validatedParameters(const Teuchos::ParameterList& user,
                                            const Teuchos::ParameterList& valid,
                                            const std::string& path);
+
+// The validators of the valid lists. Each range rule lives in its parameter's validator, so
+// that it holds wherever the parameter is read; acceptedValues() words it for messages.
+
+// A number from lo to hi (an int parameter with T = int).
+template <class T>
+Teuchos::RCP<const Teuchos::EnhancedNumberValidator<T>> range(T lo, T hi) {
+  return Teuchos::rcp(new Teuchos::EnhancedNumberValidator<T>(lo, hi));
+}
+
+// One of `names`, read as a string (names passed on to other packages, or read once into a
+// definition).
+Teuchos::RCP<const Teuchos::StringValidator> choices(std::initializer_list<std::string> names);
+
+// One of the names of `options`, parsed once into its enum value: choice<Enum>(list, name).
+template <class Enum>
+Teuchos::RCP<const Teuchos::StringToIntegralParameterEntryValidator<Enum>> choices(
+    std::initializer_list<std::pair<std::string, Enum>> options, const std::string& parameterName) {
+  Teuchos::Array<std::string> names;
+  Teuchos::Array<Enum> values;
+  for (const auto& [name, value] : options) {
+    names.push_back(name);
+    values.push_back(value);
+  }
+  return Teuchos::rcp(new Teuchos::StringToIntegralParameterEntryValidator<Enum>(names, values, parameterName));
+}
+
+// The enum value of a choice parameter of a validated list (its entry carries the validator
+// that choices() made).
+template <class Enum>
+Enum choice(const Teuchos::ParameterList& list, const std::string& name) {
+  return Teuchos::getIntegralValue<Enum>(list, name);
+}
+
+// 0, or an integer from lo to hi.
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> zeroOrRange(int lo, int hi);
+
+// What a validator accepts, in words: "a number from 0 to 0.4999", "one of "a", "b"".
+std::string acceptedValues(const Teuchos::ParameterEntryValidator& validator);
 
 // Name of the template sublist for user-named entries.
 inline const char* kAnyNameSublist = "<name>";

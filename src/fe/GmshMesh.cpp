@@ -297,6 +297,67 @@ double longestEdge(int dim, const double* x) {
   return longest;
 }
 
+// The index of node tag `node` in the sorted tags `used`, -1 if it is not there.
+long long vertexIndex(const std::vector<Tag>& used, Tag node) {
+  const auto it = std::lower_bound(used.begin(), used.end(), node);
+  return it != used.end() && *it == node ? static_cast<long long>(it - used.begin()) : -1;
+}
+
+// A 2D mesh must lie in the plane z = 0 (to round-off relative to its extent).
+void checkPlanar(const SimplexMesh& mesh, const std::vector<Tag>& used, const std::vector<double>& z,
+                 const std::string& prefix) {
+  double extent = 0;
+  for (int c = 0; c < 2; ++c) {
+    double lo = mesh.vertices[c], hi = mesh.vertices[c];
+    for (std::size_t v = 0; v < used.size(); ++v) {
+      lo = std::min(lo, mesh.vertices[2 * v + c]);
+      hi = std::max(hi, mesh.vertices[2 * v + c]);
+    }
+    extent = std::max(extent, hi - lo);
+  }
+  for (std::size_t v = 0; v < used.size(); ++v)
+    if (std::abs(z[v]) > 1e-12 * extent)
+      throw InputError(prefix + "it is a 2D mesh (triangles) but node " + std::to_string(used[v]) +
+                       " has z = " + std::to_string(z[v]) + "; a 2D mesh must lie in the plane z = 0");
+}
+
+// The boundary facets of the named groups, each checked to be a face of some cell.
+void addBoundaryFacets(const RawMesh& raw, const std::vector<Tag>& used, const std::string& prefix,
+                       SimplexMesh& mesh) {
+  const int dim = mesh.dim, nodesPerCell = dim + 1;
+  const std::size_t numCells = mesh.cells.size() / nodesPerCell;
+  std::vector<Face> faces;
+  faces.reserve(nodesPerCell * numCells);
+  for (std::size_t c = 0; c < numCells; ++c) {
+    const long long* cell = mesh.cells.data() + nodesPerCell * c;
+    for (int omit = 0; omit < nodesPerCell; ++omit) {
+      long long ids[3];
+      for (int i = 0, k = 0; i < nodesPerCell; ++i)
+        if (i != omit) ids[k++] = cell[i];
+      faces.push_back(sortedFace(ids, dim));
+    }
+  }
+  std::sort(faces.begin(), faces.end());
+
+  for (const BoundaryGroup& group : raw.boundaryGroups) {
+    const std::string name = boundaryName(group);
+    if (!mesh.boundaryTags.emplace(name, group.tag).second)
+      throw InputError(prefix + "two physical groups of dimension " + std::to_string(dim - 1) +
+                       " (tags " + std::to_string(mesh.boundaryTags.at(name)) + " and " +
+                       std::to_string(group.tag) + ") have the same name \"" + name + "\"");
+    for (const auto& element : uniqueElements(group.blocks, dim)) {
+      long long ids[3];
+      for (int i = 0; i < dim; ++i) ids[i] = vertexIndex(used, element.second[i]);
+      const Face face = sortedFace(ids, dim);
+      if (std::find(ids, ids + dim, -1) != ids + dim || !std::binary_search(faces.begin(), faces.end(), face))
+        throw InputError(prefix + "boundary element " + std::to_string(element.first) + " of the group \"" +
+                         name + "\" is not a " + (dim == 2 ? "edge" : "face") + " of any cell of the mesh");
+      mesh.facets.insert(mesh.facets.end(), ids, ids + dim);
+      mesh.facetTags.push_back(group.tag);
+    }
+  }
+}
+
 SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
   const int dim = raw.dim;
   const int nodesPerCell = dim + 1;
@@ -316,10 +377,6 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
     used.insert(used.end(), element.second, element.second + nodesPerCell);
   std::sort(used.begin(), used.end());
   used.erase(std::unique(used.begin(), used.end()), used.end());
-  auto vertexId = [&used](Tag node) -> long long {
-    const auto it = std::lower_bound(used.begin(), used.end(), node);
-    return it != used.end() && *it == node ? static_cast<long long>(it - used.begin()) : -1;
-  };
 
   std::vector<std::size_t> byTag(raw.nodeTags.size());
   std::iota(byTag.begin(), byTag.end(), std::size_t{0});
@@ -339,29 +396,14 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
       z[v] = x[2];
     }
   }
-  if (dim == 2) {
-    double extent = 0;
-    for (int c = 0; c < 2; ++c) {
-      double lo = mesh.vertices[c], hi = mesh.vertices[c];
-      for (std::size_t v = 0; v < used.size(); ++v) {
-        lo = std::min(lo, mesh.vertices[2 * v + c]);
-        hi = std::max(hi, mesh.vertices[2 * v + c]);
-      }
-      extent = std::max(extent, hi - lo);
-    }
-    for (std::size_t v = 0; v < used.size(); ++v)
-      if (std::abs(z[v]) > 1e-12 * extent)
-        throw InputError(prefix + "it is a 2D mesh (triangles) but node " +
-                         std::to_string(used[v]) + " has z = " + std::to_string(z[v]) +
-                         "; a 2D mesh must lie in the plane z = 0");
-  }
+  if (dim == 2) checkPlanar(mesh, used, z, prefix);
 
   // Cells, positively oriented.
   mesh.cells.resize(nodesPerCell * cellElements.size());
   std::vector<double> x(dim * nodesPerCell);
   for (std::size_t c = 0; c < cellElements.size(); ++c) {
     long long* cell = mesh.cells.data() + nodesPerCell * c;
-    for (int i = 0; i < nodesPerCell; ++i) cell[i] = vertexId(cellElements[c].second[i]);
+    for (int i = 0; i < nodesPerCell; ++i) cell[i] = vertexIndex(used, cellElements[c].second[i]);
     for (int i = 0; i < nodesPerCell; ++i)
       for (int j = 0; j < dim; ++j) x[dim * i + j] = mesh.vertices[dim * cell[i] + j];
     const double det = signedDeterminant(dim, x.data());
@@ -371,40 +413,7 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
     if (det < 0) std::swap(cell[1], cell[2]);
   }
 
-  // Faces of the cells, to check the boundary facets against.
-  std::vector<Face> faces;
-  faces.reserve(nodesPerCell * cellElements.size());
-  for (std::size_t c = 0; c < cellElements.size(); ++c) {
-    const long long* cell = mesh.cells.data() + nodesPerCell * c;
-    for (int omit = 0; omit < nodesPerCell; ++omit) {
-      long long ids[3];
-      for (int i = 0, k = 0; i < nodesPerCell; ++i)
-        if (i != omit) ids[k++] = cell[i];
-      faces.push_back(sortedFace(ids, dim));
-    }
-  }
-  std::sort(faces.begin(), faces.end());
-
-  // Boundary facets, group by group.
-  for (const BoundaryGroup& group : raw.boundaryGroups) {
-    const std::string name = boundaryName(group);
-    if (!mesh.boundaryTags.emplace(name, group.tag).second)
-      throw InputError(prefix + "two physical groups of dimension " + std::to_string(dim - 1) +
-                       " (tags " + std::to_string(mesh.boundaryTags.at(name)) + " and " +
-                       std::to_string(group.tag) + ") have the same name \"" + name + "\"");
-    for (const auto& element : uniqueElements(group.blocks, dim)) {
-      long long ids[3];
-      for (int i = 0; i < dim; ++i) ids[i] = vertexId(element.second[i]);
-      const Face face = sortedFace(ids, dim);
-      if (std::find(ids, ids + dim, -1) != ids + dim ||
-          !std::binary_search(faces.begin(), faces.end(), face))
-        throw InputError(prefix + "boundary element " + std::to_string(element.first) +
-                         " of the group \"" + name + "\" is not a " + (dim == 2 ? "edge" : "face") +
-                         " of any cell of the mesh");
-      mesh.facets.insert(mesh.facets.end(), ids, ids + dim);
-      mesh.facetTags.push_back(group.tag);
-    }
-  }
+  addBoundaryFacets(raw, used, prefix, mesh);
   return mesh;
 }
 

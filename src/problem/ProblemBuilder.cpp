@@ -13,6 +13,7 @@
 
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/ElasticityAssembler.hpp"
+#include "core/Collectives.hpp"
 #include "core/RootTask.hpp"
 #include "fe/BoxGrid.hpp"
 #include "fe/BoxMesh.hpp"
@@ -22,12 +23,6 @@
 
 namespace signorini {
 namespace {
-
-double maxOverRanks(const Comm& comm, double value) {
-  double result = value;
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &value, &result);
-  return result;
-}
 
 // Resident set now (Linux' /proc/self/statm; 0 elsewhere) and its peak so far, in MiB.
 double residentMiB() {
@@ -55,7 +50,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
   AssembledProblem result;
   Teuchos::Time setup("setup"), assembly("assembly");
   {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 1 mesh and space"));
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: mesh and space"));
     setup.start(true);
     const double residentBefore = residentMiB();
     // Only rank 0 makes the global mesh, once; DistributedSpace frees it after sending each
@@ -85,7 +80,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     Teuchos::broadcast(*comm, 0, 1, &result.serialMeshPeakMiB);
   }
   {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: 2 assembly"));
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: assembly"));
     assembly.start(true);
     result.qp = assembleContactQP(*result.space, result.definition);
     if (result.definition.meshType == "box")

@@ -18,15 +18,6 @@ using Teuchos::rcp;
 
 const char* kAxes[3] = {"x", "y", "z"};
 
-template <class T>
-Teuchos::RCP<Teuchos::EnhancedNumberValidator<T>> range(T lo, T hi) {
-  return rcp(new Teuchos::EnhancedNumberValidator<T>(lo, hi));
-}
-
-Teuchos::RCP<Teuchos::StringValidator> choices(std::initializer_list<std::string> names) {
-  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
-}
-
 std::string formatGap(double g0, const Array<double>& center, double radius, int dim) {
   std::ostringstream e;
   e.precision(17);

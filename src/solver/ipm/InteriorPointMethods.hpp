@@ -1,6 +1,7 @@
 #pragma once
 // Private to src/solver: the two interior point methods and what they share.
 #include <string>
+#include <utility>
 
 #include <Teuchos_ParameterList.hpp>
 #include <Teuchos_Time.hpp>
@@ -11,6 +12,12 @@
 #include "solver/linear/NewtonSystemSolver.hpp"
 
 namespace signorini::detail {
+
+// The choices of the "Solver" list, parsed once when the solve starts.
+enum class Method { PrimalDual, Primal };
+enum class Centering { Mehrotra, Fixed };
+enum class ForcingType { Reduction, Adaptive, Constant, EisenstatWalker, Relative };
+enum class StartingPoint { Shift, Relaxed };
 
 SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
                             IterationObserver& observer);
@@ -42,9 +49,25 @@ bool hasRigidBodyMotion(const ContactQP& qp);
 void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, const Vector& slack,
                   SolveResult& result);
 
-// The status message of a converged solve, with the KKT tolerance written in full (1e-08,
-// not std::to_string's 0.000000).
-std::string convergedMessage(double kktTolerance);
+// Ends a solve: sets the result's status and message. Returns false, for "continue?" tests.
+bool stopWith(SolveResult& result, SolveStatus status, std::string message);
+
+// The stopping tests both methods share, on the "Solver" list's kkt: tolerance and maximum
+// iterations. Each sets the result's status when it stops the solve.
+struct StoppingRule {
+  double tolerance = 1e-8;
+  int maxIterations = 200;
+
+  explicit StoppingRule(const Teuchos::ParameterList& params);
+  // Every relative KKT measure at most the tolerance.
+  bool converged(const KKTMeasures& kkt, SolveResult& result) const;
+  // `iterations` main iterations done and no more allowed.
+  bool outOfIterations(int iterations, SolveResult& result) const;
+};
+
+// Counts one Krylov solve of `iterations` towards a Newton step whose solves took
+// `stepIterations` in all (this one included).
+void countKrylovSolve(SolveResult& result, int iterations, int stepIterations);
 
 // Fills v with the initial guess or zero.
 RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
@@ -60,7 +83,7 @@ RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
 //                        eta_k = 0.9 (||F_k|| / ||F_k-1||)^2, safeguarded, at most eta;
 //   "relative":          eta ||rhs||, a fixed residual reduction for every Newton system.
 struct ForcingRule {
-  std::string type;
+  ForcingType type = ForcingType::Reduction;
   double eta = 0.1;
   double safety = 0.3;
   double tailSafety = 0.01;
@@ -76,7 +99,7 @@ struct ForcingRule {
   // floor do the rest (NewtonSystemSolver::solve).
   double tolerance(double rhsNorm, double residualScale, double nonlinearNorm);
   // The factor by which a solve reduces its start's residual ("reduction"), else 0.
-  double startReduction() const { return type == "reduction" ? eta : 0.0; }
+  double startReduction() const { return type == ForcingType::Reduction ? eta : 0.0; }
 };
 ForcingRule forcingRule(const Teuchos::ParameterList& params, double floor);
 

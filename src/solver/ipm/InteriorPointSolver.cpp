@@ -5,34 +5,27 @@
 #include <cstdio>
 #include <limits>
 
-#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/Collectives.hpp"
 #include "core/ParameterValidation.hpp"
 #include "signorini/core/Error.hpp"
 #include "solver/ipm/InteriorPointMethods.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
 
 namespace signorini {
-namespace {
 
-template <class T>
-Teuchos::RCP<Teuchos::EnhancedNumberValidator<T>> range(T lo, T hi) {
-  return rcp(new Teuchos::EnhancedNumberValidator<T>(lo, hi));
-}
-
-Teuchos::RCP<Teuchos::StringValidator> choices(std::initializer_list<std::string> names) {
-  return rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
-}
-
-}  // namespace
+using detail::Centering;
+using detail::ForcingType;
+using detail::Method;
+using detail::StartingPoint;
 
 Teuchos::ParameterList InteriorPointSolver::validParameters() {
   Teuchos::ParameterList p("Solver");
   p.set("method", "primal-dual", "\"primal-dual\" (Algorithm 3.2 with slack variables) or \"primal\" (Algorithm 3.1)",
-        choices({"primal-dual", "primal"}));
+        choices<Method>({{"primal-dual", Method::PrimalDual}, {"primal", Method::Primal}}, "method"));
   p.set("kkt: tolerance", 1e-8, "Stop when every relative KKT measure is at most this", range(1e-16, 1.0));
   p.set("maximum iterations", 200, "Main iterations allowed", range(1, 100000));
   p.set("forcing: type", "reduction",
@@ -40,7 +33,12 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
         "eta, and reaches the adaptive residual scale times forcing: reduction safeguard), \"adaptive\" "
         "(follows the barrier parameter), \"constant\", \"eisenstat-walker\" or \"relative\"; "
         "see doc/algorithms.md",
-        choices({"reduction", "adaptive", "constant", "eisenstat-walker", "relative"}));
+        choices<ForcingType>({{"reduction", ForcingType::Reduction},
+                              {"adaptive", ForcingType::Adaptive},
+                              {"constant", ForcingType::Constant},
+                              {"eisenstat-walker", ForcingType::EisenstatWalker},
+                              {"relative", ForcingType::Relative}},
+                             "forcing: type"));
   p.set("forcing: eta", 0.1, "Reduction of each solve's starting residual, constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
   p.set("forcing: safety", 0.3,
         "Expert: Adaptive forcing: the residual allowed as a fraction of the current residual scale; below 1 so "
@@ -62,7 +60,8 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
   p.set("primal-dual: centering", "mehrotra",
         "\"mehrotra\": predictor-corrector; \"fixed\": mu_{k+1} = (primal-dual: mu factor) mu_k with "
         "backtracking on 1/2 ||F||^2 (the paper's Algorithm 3.2)",
-        choices({"mehrotra", "fixed"}));
+        choices<Centering>({{"mehrotra", Centering::Mehrotra}, {"fixed", Centering::Fixed}},
+                           "primal-dual: centering"));
   p.set("primal-dual: mu factor", 0.2, "Fixed centering: factor of mu per iteration", range(1e-6, 0.999));
   p.set("primal-dual: corrector from predictor", true,
         "Expert: Mehrotra: start the corrector's Krylov solve from the predictor's step instead of zero (the "
@@ -88,7 +87,8 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
         "How the primal method makes the initial guess strictly feasible: \"shift\" moves it along "
         "A^T (exact when each constraint acts on its own unknowns, as contact constraints do); "
         "\"relaxed\" solves over S_varsigma = {A v - d <= varsigma} and drives varsigma to zero with mu",
-        choices({"shift", "relaxed"}));
+        choices<StartingPoint>({{"shift", StartingPoint::Shift}, {"relaxed", StartingPoint::Relaxed}},
+                               "primal: starting point"));
   p.set("primal: starting margin", 0.1,
         "Expert: The initial guess is shifted so that every slack d - A v is at least this times the "
         "displacement scale of the unconstrained solution",
@@ -116,7 +116,7 @@ SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initia
                                        IterationObserver* observer) const {
   IterationObserver silent;
   IterationObserver& obs = observer ? *observer : silent;
-  if (params_.get<std::string>("method") == "primal")
+  if (choice<Method>(params_, "method") == Method::Primal)
     return detail::solvePrimalBarrier(qp, params_, initialGuess, obs);
   return detail::solvePrimalDual(qp, params_, initialGuess, obs);
 }
@@ -129,9 +129,7 @@ double maxStepToBoundary(const Vector& x, const Vector& dx) {
   auto dd = dx.getData();
   for (std::size_t i = 0; i < x.getLocalLength(); ++i)
     if (dd[i] < 0) local = std::min(local, -xd[i] / dd[i]);
-  double global = local;
-  Teuchos::reduceAll(*x.getMap()->getComm(), Teuchos::REDUCE_MIN, 1, &local, &global);
-  return global;
+  return minOverRanks(*x.getMap()->getComm(), local);
 }
 
 double objective(const ContactQP& qp, const Vector& v, const Vector& Qv) {
@@ -200,21 +198,52 @@ void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, co
   auto s = slack.getData();
   for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(lambda.getLocalLength()); ++i)
     local += criterion.isActive(i, l[i], s[i]);
-  Teuchos::reduceAll(*v.getMap()->getComm(), Teuchos::REDUCE_SUM, 1, &local, &result.activeConstraints);
+  result.activeConstraints = sumOverRanks(*v.getMap()->getComm(), local);
 }
 
-std::string convergedMessage(double kktTolerance) {
+bool stopWith(SolveResult& result, SolveStatus status, std::string message) {
+  result.status = status;
+  result.message = std::move(message);
+  return false;
+}
+
+StoppingRule::StoppingRule(const Teuchos::ParameterList& params)
+    : tolerance(params.get<double>("kkt: tolerance")), maxIterations(params.get<int>("maximum iterations")) {}
+
+bool StoppingRule::converged(const KKTMeasures& kkt, SolveResult& result) const {
+  if (kkt.worst() > tolerance) return false;
   char text[96];
-  std::snprintf(text, sizeof text, "every relative KKT measure is below %g", kktTolerance);
-  return text;
+  std::snprintf(text, sizeof text, "every relative KKT measure is below %g", tolerance);
+  stopWith(result, SolveStatus::Converged, text);
+  return true;
+}
+
+bool StoppingRule::outOfIterations(int iterations, SolveResult& result) const {
+  if (iterations < maxIterations) return false;
+  stopWith(result, SolveStatus::IterationLimit,
+           "maximum iterations (" + std::to_string(maxIterations) +
+               ") reached; raise Solver/maximum iterations or loosen Solver/kkt: tolerance");
+  return true;
+}
+
+void countKrylovSolve(SolveResult& result, int iterations, int stepIterations) {
+  result.krylovIterations += iterations;
+  result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, stepIterations);
 }
 
 double ForcingRule::tolerance(double rhsNorm, double residualScale, double nonlinearNorm) {
-  if (type == "reduction") return std::max(floor, reductionSafeguard * residualScale);
-  if (type == "constant") return std::max(floor, eta * nonlinearNorm);
-  if (type == "relative") return eta * rhsNorm;
-  if (type == "adaptive")
-    return std::min(eta * rhsNorm, std::max(floor, (stationarityOnly ? tailSafety : safety) * residualScale));
+  switch (type) {
+    case ForcingType::Reduction:
+      return std::max(floor, reductionSafeguard * residualScale);
+    case ForcingType::Constant:
+      return std::max(floor, eta * nonlinearNorm);
+    case ForcingType::Relative:
+      return eta * rhsNorm;
+    case ForcingType::Adaptive:
+      return std::min(eta * rhsNorm, std::max(floor, (stationarityOnly ? tailSafety : safety) * residualScale));
+    case ForcingType::EisenstatWalker:
+      break;
+  }
   double forcing = eta;
   if (nonlinearNorm == previousNorm) {
     forcing = previousEta;  // another solve for the same Newton step (Mehrotra's corrector)
@@ -232,7 +261,7 @@ double ForcingRule::tolerance(double rhsNorm, double residualScale, double nonli
 
 ForcingRule forcingRule(const Teuchos::ParameterList& params, double floor) {
   ForcingRule rule;
-  rule.type = params.get<std::string>("forcing: type");
+  rule.type = choice<ForcingType>(params, "forcing: type");
   rule.eta = params.get<double>("forcing: eta");
   rule.safety = params.get<double>("forcing: safety");
   rule.tailSafety = params.get<double>("forcing: tail safety");

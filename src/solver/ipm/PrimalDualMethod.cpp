@@ -6,10 +6,12 @@
 // Krylov solve only enters the dual residual, and the forcing rule controls it.
 #include <cmath>
 
-#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_Time.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/Collectives.hpp"
+#include "core/ParameterValidation.hpp"
 #include "solver/ipm/InteriorPointMethods.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
 
@@ -23,288 +25,331 @@ void forEach(Vector& out, F f) {
   for (std::size_t i = 0; i < out.getLocalLength(); ++i) o[i] = f(i);
 }
 
+// One primal-dual solve over the iterate (v, s, y): each main iteration evaluates the
+// residuals, tests for the end, computes a direction (Mehrotra's predictor and corrector, or
+// one step towards a fixed fraction of mu) and takes a step, backtracking on the merit
+// function 1/2 ||F||^2 with fixed centering.
+class PrimalDualMethod {
+ public:
+  PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0);
+  SolveResult run(IterationObserver& observer, Teuchos::Time& timer);
+
+ private:
+  void start();
+  KKTMeasures evaluate(int k);
+  void tightenStalledForcing();
+  bool continues(int k, const KKTMeasures& kkt);
+  bool computeDirection();
+  void predictorCorrector();
+  void takeDirection(const Vector& rc, bool fromCurrentStep);
+  double merit(double alpha);
+  double meritSlope() const;
+  bool backtrackOnMerit(double& alpha);
+  void takeStep(int k, double alpha);
+  void report(const KKTMeasures& kkt, IterationObserver& observer, Teuchos::Time& timer);
+
+  const ContactQP& qp_;
+  const Teuchos::ParameterList& p_;
+  const long long m_;
+  const Centering centering_;
+  const bool correctorFromPredictor_;
+  const double fractionToBoundary_, muFactor_, armijo_;
+  const StoppingRule stop_;
+  const double bnorm_;
+  ForcingRule forcing_;
+  NewtonSystemSolver newton_;
+  SolveResult result_;
+
+  RCP<Vector> v_;
+  Vector s_, y_, D_;
+  // Residuals and directions, on the displacement map (Qv_ ... trial_) and on the constraints.
+  Vector Qv_, rd_, rhs_, dv_, t_, trial_;
+  Vector Av_, lambda_, rp_, rc_, u_, Adv_, ds_, dy_, sAffine_, yAffine_;
+
+  double mu0_ = 0, mu_ = 0, muTarget_ = 0, rdNorm_ = 0;
+  double previousRdNorm_ = -1.0, previousAlpha_ = 0.0;
+  int stalls_ = 0;  // main iterations in a row in which r_d stalled
+  int krylovThisStep_ = 0;
+  bool krylovFailed_ = false;
+  NewtonStepRecord pending_;  // the last step, reported once the next iterate's KKT measures are known
+  bool havePending_ = false;
+};
+
+PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0)
+    : qp_(qp),
+      p_(p),
+      m_(qp.A->getRangeMap()->getGlobalNumElements()),
+      centering_(choice<Centering>(p, "primal-dual: centering")),
+      correctorFromPredictor_(p.get<bool>("primal-dual: corrector from predictor")),
+      fractionToBoundary_(p.get<double>("primal-dual: fraction to boundary")),
+      muFactor_(p.get<double>("primal-dual: mu factor")),
+      armijo_(p.get<double>("primal-dual: armijo")),
+      stop_(p),
+      bnorm_(qp.b->norm2()),
+      forcing_(forcingRule(p, 0.1 * stop_.tolerance * bnorm_)),
+      newton_(qp, p),
+      v_(initialDisplacement(qp, v0)),
+      s_(qp.A->getRangeMap()), y_(s_.getMap()), D_(s_.getMap()),
+      Qv_(qp.Q->getDomainMap()), rd_(Qv_.getMap()), rhs_(Qv_.getMap()), dv_(Qv_.getMap()), t_(Qv_.getMap()),
+      trial_(Qv_.getMap()),
+      Av_(s_.getMap()), lambda_(s_.getMap()), rp_(s_.getMap()), rc_(s_.getMap()), u_(s_.getMap()),
+      Adv_(s_.getMap()), ds_(s_.getMap()), dy_(s_.getMap()), sAffine_(s_.getMap()), yAffine_(s_.getMap()) {}
+
+// s = max(d - A v, displacement scale), s^T y = theta * energy scale, y = mu0 / s.
+void PrimalDualMethod::start() {
+  newton_.setWeights(D_);
+  const ProblemScales scales = problemScales(qp_, newton_, *v_);
+  result_.krylovIterations += scales.krylovIterations;
+  qp_.A->apply(*v_, Av_);
+  {
+    auto dd = qp_.d->getData();
+    auto ad = Av_.getData();
+    forEach(s_, [&](std::size_t i) { return std::max(dd[i] - ad[i], scales.displacement); });
+  }
+  mu0_ = m_ > 0 ? p_.get<double>("starting point: complementarity") * scales.energy / m_ : 0.0;
+  auto sd = s_.getData();
+  forEach(y_, [&](std::size_t i) { return mu0_ / sd[i]; });
+}
+
+SolveResult PrimalDualMethod::run(IterationObserver& observer, Teuchos::Time& timer) {
+  start();
+  for (int k = 0;; ++k) {
+    const KKTMeasures kkt = evaluate(k);
+    if (havePending_) report(kkt, observer, timer);
+    result_.outerIterations = k;
+    if (!continues(k, kkt) || !computeDirection()) break;
+    double alpha =
+        std::min(1.0, fractionToBoundary_ * std::min(maxStepToBoundary(s_, ds_), maxStepToBoundary(y_, dy_)));
+    if (centering_ == Centering::Fixed && !backtrackOnMerit(alpha)) break;
+    takeStep(k, alpha);
+  }
+  Vector slack(s_.getMap());
+  qp_.A->apply(*v_, slack);
+  slack.update(1.0, *qp_.d, -1.0);
+  result_.preconditionerSetups = newton_.preconditionerSetups();
+  finishResult(qp_, *v_, lambda_, slack, result_);
+  result_.seconds = timer.totalElapsedTime(true);
+  observer.onFinish(result_);
+  return result_;
+}
+
+// r_d, r_p, mu and the KKT measures of the current iterate.
+KKTMeasures PrimalDualMethod::evaluate(int k) {
+  qp_.Q->apply(*v_, Qv_);
+  rd_.assign(Qv_);
+  rd_.update(-1.0, *qp_.b, 1.0);
+  qp_.A->apply(y_, rd_, Teuchos::TRANS, 1.0, 1.0);
+  qp_.A->apply(*v_, Av_);
+  rp_.update(1.0, Av_, 1.0, s_, 0.0);
+  rp_.update(-1.0, *qp_.d, 1.0);
+  mu_ = m_ > 0 ? s_.dot(y_) / m_ : 0.0;
+  rdNorm_ = rd_.norm2();
+  tightenStalledForcing();
+  ++result_.gradientEvaluations;
+  lambda_.update(-1.0, y_, 0.0);
+  const KKTMeasures kkt = kktMeasures(qp_, *v_, lambda_);
+  // Not at the start: there v = 0 may give the complementarity measure no energy scale.
+  const double tol = stop_.tolerance;
+  forcing_.stationarityOnly =
+      k > 0 && kkt.complementarity <= tol && kkt.primalFeasibility <= tol && kkt.dualFeasibility <= tol;
+  return kkt;
+}
+
+// The Krylov residual of a step lands in r_d alone: after a step of length alpha,
+// r_d = (1 - alpha) r_d + alpha (residual). When, twice in a row, r_d kept more than
+// 1 - alpha/4 of itself and lagged behind mu (its term of the safeguard binds), the solves
+// are too loose for it: the reduction forcing's safeguard tightens for the rest of the
+// solve (without it, paper/K without the contact correction stalls at stationarity 1e-5 on
+// 3 ranks while mu falls to nothing).
+void PrimalDualMethod::tightenStalledForcing() {
+  const bool stalled = forcing_.type == ForcingType::Reduction && previousRdNorm_ > 0 && mu0_ > 0 &&
+                       rdNorm_ > bnorm_ * mu_ / mu0_ && rdNorm_ > (1 - 0.25 * previousAlpha_) * previousRdNorm_;
+  stalls_ = stalled ? stalls_ + 1 : 0;
+  if (stalls_ == 2) {
+    forcing_.reductionSafeguard *= 0.5;
+    stalls_ = 0;
+  }
+  previousRdNorm_ = rdNorm_;
+}
+
+bool PrimalDualMethod::continues(int k, const KKTMeasures& kkt) {
+  if (!std::isfinite(mu_) || !std::isfinite(kkt.stationarityAbs))
+    return stopWith(result_, SolveStatus::NumericalBreakdown,
+                    "non-finite iterate; check the problem data (Q must be positive definite)");
+  if (stop_.converged(kkt, result_)) return false;
+  // Complementarity far below any need while the rest of the KKT conditions lag: the Newton
+  // systems are solved too loosely for the target, and D = y/s degenerates.
+  if (mu0_ > 0 && mu_ < 1e-30 * mu0_)
+    return stopWith(result_, SolveStatus::NumericalBreakdown,
+                    "the barrier parameter vanished before the KKT target was met: the Newton systems are "
+                    "solved too loosely; tighten Solver/forcing: eta");
+  return !stop_.outOfIterations(k, result_);
+}
+
+// (dv, ds, dy) for the current iterate; false if a Krylov solve made no progress.
+bool PrimalDualMethod::computeDirection() {
+  auto yd = y_.getData();
+  auto sd = s_.getData();
+  forEach(D_, [&](std::size_t i) { return yd[i] / sd[i]; });
+  newton_.setWeights(D_);
+  krylovThisStep_ = 0;
+  krylovFailed_ = false;
+  if (centering_ == Centering::Mehrotra) {
+    predictorCorrector();
+  } else {
+    muTarget_ = muFactor_ * mu_;
+    forEach(rc_, [&](std::size_t i) { return sd[i] * yd[i] - muTarget_; });
+    takeDirection(rc_, false);
+  }
+  if (!krylovFailed_) return true;
+  return stopWith(result_, SolveStatus::KrylovFailure,
+                  "the Krylov solver made no progress on a Newton system; raise Solver/Krylov/maximum "
+                  "iterations or choose a stronger Solver/Preconditioner");
+}
+
+// Mehrotra: the affine direction (r_c = s.y) predicts how far mu can fall, sigma =
+// (mu_affine / mu)^3; the corrector targets sigma mu with the affine second-order term.
+void PrimalDualMethod::predictorCorrector() {
+  rc_.elementWiseMultiply(1.0, s_, y_, 0.0);
+  takeDirection(rc_, false);
+  const double ap = std::min(1.0, maxStepToBoundary(s_, ds_)), ad = std::min(1.0, maxStepToBoundary(y_, dy_));
+  double muAffine = 0;
+  if (m_ > 0) {
+    sAffine_.update(1.0, s_, ap, ds_, 0.0);
+    yAffine_.update(1.0, y_, ad, dy_, 0.0);
+    muAffine = sAffine_.dot(yAffine_) / m_;
+  }
+  const double sigma = mu_ > 0 ? std::pow(muAffine / mu_, 3) : 0.0;
+  muTarget_ = sigma * mu_;
+  {
+    // rc = s.y + ds_aff.dy_aff - sigma mu, from the affine direction still in ds, dy
+    auto sd = s_.getData();
+    auto yd = y_.getData();
+    auto dsd = ds_.getData();
+    auto dyd = dy_.getData();
+    forEach(rc_, [&](std::size_t i) { return sd[i] * yd[i] + dsd[i] * dyd[i] - muTarget_; });
+  }
+  // The corrector's right-hand side differs from the predictor's by the centering and
+  // second-order terms only: its CG may start from the predictor's step.
+  takeDirection(rc_, correctorFromPredictor_);
+}
+
+// The direction for the complementarity residual rc: one truncated Krylov solve for dv,
+// then ds and dy exactly.
+void PrimalDualMethod::takeDirection(const Vector& rc, bool fromCurrentStep) {
+  {
+    auto rcd = rc.getData();
+    auto yd = y_.getData();
+    auto rpd = rp_.getData();
+    auto sd = s_.getData();
+    forEach(u_, [&](std::size_t i) { return (-rcd[i] + yd[i] * rpd[i]) / sd[i]; });
+  }
+  rhs_.assign(rd_);
+  qp_.A->apply(u_, rhs_, Teuchos::TRANS, -1.0, -1.0);
+  const double rpNorm = rp_.norm2();
+  const double residualScale = std::max(rdNorm_, mu0_ > 0 ? bnorm_ * mu_ / mu0_ : 0.0);
+  // ||F|| with ||s.y - mu_target|| estimated by sqrt(m) mu
+  const double kktNorm = std::sqrt(rdNorm_ * rdNorm_ + rpNorm * rpNorm + static_cast<double>(m_) * mu_ * mu_);
+  double tolerance = forcing_.tolerance(rhs_.norm2(), residualScale, kktNorm);
+  // Fixed centering backtracks on 1/2 ||F||^2, along which only an inexact Newton direction,
+  // ||residual|| <= eta ||F|| with eta < 1, is sure to descend.
+  if (centering_ == Centering::Fixed)
+    tolerance = std::max(forcing_.floor, std::min(tolerance, forcing_.eta * kktNorm));
+  const KrylovResult kr =
+      newton_.solve(rhs_, dv_, tolerance, fromCurrentStep, forcing_.startReduction(), forcing_.floor);
+  qp_.A->apply(dv_, Adv_);
+  ds_.update(-1.0, rp_, -1.0, Adv_, 0.0);
+  {
+    auto rcd = rc.getData();
+    auto yd = y_.getData();
+    auto dsd = ds_.getData();
+    auto sd = s_.getData();
+    forEach(dy_, [&](std::size_t i) { return (-rcd[i] - yd[i] * dsd[i]) / sd[i]; });
+  }
+  ++result_.newtonSteps;
+  countKrylovSolve(result_, kr.iterations, kr.iterations);
+  krylovThisStep_ += kr.iterations;
+  if (!kr.converged && !(kr.relativeResidual < 1.0)) krylovFailed_ = true;
+}
+
+// phi(alpha) = 1/2 ||F(alpha)||^2 along the direction. F is linear in alpha but for the
+// complementarity block, so it needs no operator application once t = Q dv + A^T dy is known.
+double PrimalDualMethod::merit(double alpha) {
+  trial_.update(1.0, rd_, alpha, t_, 0.0);
+  const double linear = trial_.dot(trial_) + (1 - alpha) * (1 - alpha) * rp_.dot(rp_);
+  auto sd = s_.getData();
+  auto yd = y_.getData();
+  auto dsd = ds_.getData();
+  auto dyd = dy_.getData();
+  const double complementarity = sumOverEntries(*s_.getMap()->getComm(), s_.getLocalLength(), [&](std::size_t i) {
+    const double c = (sd[i] + alpha * dsd[i]) * (yd[i] + alpha * dyd[i]) - muTarget_;
+    return c * c;
+  });
+  ++result_.functionEvaluations;
+  return 0.5 * (linear + complementarity);
+}
+
+// phi'(0).
+double PrimalDualMethod::meritSlope() const {
+  auto sd = s_.getData();
+  auto yd = y_.getData();
+  auto dsd = ds_.getData();
+  auto dyd = dy_.getData();
+  return rd_.dot(t_) - rp_.dot(rp_) +
+         sumOverEntries(*s_.getMap()->getComm(), s_.getLocalLength(), [&](std::size_t i) {
+           return (sd[i] * yd[i] - muTarget_) * (dsd[i] * yd[i] + sd[i] * dyd[i]);
+         });
+}
+
+// Halves alpha until the Armijo condition holds on phi; false if it never does.
+bool PrimalDualMethod::backtrackOnMerit(double& alpha) {
+  qp_.Q->apply(dv_, t_);
+  qp_.A->apply(dy_, t_, Teuchos::TRANS, 1.0, 1.0);
+  const double phi0 = merit(0.0);
+  const double slope = meritSlope();
+  int halvings = 0;
+  while (merit(alpha) > phi0 + armijo_ * alpha * slope && halvings < 40) {
+    alpha *= 0.5;
+    ++halvings;
+  }
+  if (halvings < 40 && slope < 0) return true;
+  return stopWith(result_, SolveStatus::LineSearchFailure,
+                  "no decrease of the merit function along the Newton direction; tighten "
+                  "Solver/forcing: eta or use Solver/primal-dual: centering = mehrotra");
+}
+
+void PrimalDualMethod::takeStep(int k, double alpha) {
+  v_->update(alpha, dv_, 1.0);
+  s_.update(alpha, ds_, 1.0);
+  y_.update(alpha, dy_, 1.0);
+  previousAlpha_ = alpha;
+  pending_ = NewtonStepRecord();
+  pending_.outer = k + 1;
+  pending_.mu = muTarget_;
+  pending_.step = alpha;
+  pending_.krylovIterations = krylovThisStep_;
+  havePending_ = true;
+  result_.innerIterations.push_back(1);
+}
+
+void PrimalDualMethod::report(const KKTMeasures& kkt, IterationObserver& observer, Teuchos::Time& timer) {
+  pending_.objective = objective(qp_, *v_, Qv_);
+  pending_.kkt = kkt;
+  pending_.seconds = timer.totalElapsedTime(true);
+  result_.history.push_back(pending_);
+  observer.onNewtonStep(pending_);
+}
+
 }  // namespace
 
 SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
                             IterationObserver& observer) {
   Teuchos::Time timer("primal-dual");
   timer.start(true);
-  const std::string centering = p.get<std::string>("primal-dual: centering");
-  const bool correctorFromPredictor = p.get<bool>("primal-dual: corrector from predictor");
-  const auto vmap = qp.Q->getDomainMap();
-  const auto cmap = qp.A->getRangeMap();
-  const long long m = cmap->getGlobalNumElements();
-  observer.onStart("primal-dual (" + centering + " centering)", vmap->getGlobalNumElements(), m);
-
-  SolveResult result;
-  NewtonSystemSolver newton(qp, p);
-  RCP<Vector> v = initialDisplacement(qp, v0);
-  Vector s(cmap), y(cmap), D(cmap);
-  newton.setWeights(D);
-  const ProblemScales scales = problemScales(qp, newton, *v);
-  result.krylovIterations += scales.krylovIterations;
-
-  // Start: s = max(d - A v, displacement scale), s^T y = theta * energy scale, y = mu0 / s.
-  Vector Av(cmap);
-  qp.A->apply(*v, Av);
-  {
-    auto dd = qp.d->getData();
-    auto ad = Av.getData();
-    forEach(s, [&](std::size_t i) { return std::max(dd[i] - ad[i], scales.displacement); });
-  }
-  const double mu0 = m > 0 ? p.get<double>("starting point: complementarity") * scales.energy / m : 0.0;
-  {
-    auto sd = s.getData();
-    forEach(y, [&](std::size_t i) { return mu0 / sd[i]; });
-  }
-
-  const double tol = p.get<double>("kkt: tolerance");
-  const int maxIterations = p.get<int>("maximum iterations");
-  const double bnorm = qp.b->norm2();
-  ForcingRule forcing = forcingRule(p, 0.1 * tol * bnorm);
-  const double ftb = p.get<double>("primal-dual: fraction to boundary");
-  const double muFactor = p.get<double>("primal-dual: mu factor");
-  const double armijo = p.get<double>("primal-dual: armijo");
-
-  Vector Qv(vmap), rd(vmap), rhs(vmap), dv(vmap), t(vmap), trial(vmap), lambda(cmap), rp(cmap), rc(cmap), u(cmap),
-      Adv(cmap), ds(cmap), dy(cmap), sAffine(cmap), yAffine(cmap);
-  NewtonStepRecord pending;
-  bool havePending = false;
-  double mu = 0;
-
-  double rdNorm = 0.0;  // ||r_d|| of the current iterate, set with r_d in the main loop
-  // Direction for a complementarity residual rc; returns the Krylov result.
-  auto direction = [&](const Vector& rcv, bool fromCurrentStep) {
-    {
-      auto rcd = rcv.getData();
-      auto yd = y.getData();
-      auto rpd = rp.getData();
-      auto sd = s.getData();
-      forEach(u, [&](std::size_t i) { return (-rcd[i] + yd[i] * rpd[i]) / sd[i]; });
-    }
-    rhs.assign(rd);
-    qp.A->apply(u, rhs, Teuchos::TRANS, -1.0, -1.0);
-    const double rpNorm = rp.norm2();
-    const double residualScale = std::max(rdNorm, mu0 > 0 ? bnorm * mu / mu0 : 0.0);
-    // ||F|| with ||s.y - mu_target|| estimated by sqrt(m) mu
-    const double kktNorm = std::sqrt(rdNorm * rdNorm + rpNorm * rpNorm + static_cast<double>(m) * mu * mu);
-    double tolerance = forcing.tolerance(rhs.norm2(), residualScale, kktNorm);
-    // Fixed centering backtracks on 1/2 ||F||^2, along which only an inexact Newton direction,
-    // ||residual|| <= eta ||F|| with eta < 1, is sure to descend.
-    if (centering == "fixed") tolerance = std::max(forcing.floor, std::min(tolerance, forcing.eta * kktNorm));
-    KrylovResult kr =
-        newton.solve(rhs, dv, tolerance, fromCurrentStep, forcing.startReduction(), forcing.floor);
-    qp.A->apply(dv, Adv);
-    ds.update(-1.0, rp, -1.0, Adv, 0.0);
-    {
-      auto rcd = rcv.getData();
-      auto yd = y.getData();
-      auto dsd = ds.getData();
-      auto sd = s.getData();
-      forEach(dy, [&](std::size_t i) { return (-rcd[i] - yd[i] * dsd[i]) / sd[i]; });
-    }
-    ++result.newtonSteps;
-    result.krylovIterations += kr.iterations;
-    result.maxKrylovPerNewton = std::max(result.maxKrylovPerNewton, kr.iterations);
-    return kr;
-  };
-
-  double previousRdNorm = -1.0, previousAlpha = 0.0;
-  int stalls = 0;  // main iterations in a row in which r_d stalled
-  for (int k = 0;; ++k) {
-    qp.Q->apply(*v, Qv);
-    rd.assign(Qv);
-    rd.update(-1.0, *qp.b, 1.0);
-    qp.A->apply(y, rd, Teuchos::TRANS, 1.0, 1.0);
-    qp.A->apply(*v, Av);
-    rp.update(1.0, Av, 1.0, s, 0.0);
-    rp.update(-1.0, *qp.d, 1.0);
-    mu = m > 0 ? s.dot(y) / m : 0.0;
-    {
-      // The Krylov residual of a step lands in r_d alone: after a step of length alpha,
-      // r_d = (1 - alpha) r_d + alpha (residual). When, twice in a row, r_d kept more than
-      // 1 - alpha/4 of itself and lagged behind mu (its term of the safeguard binds), the solves
-      // are too loose for it: the reduction forcing's safeguard tightens for the rest of the
-      // solve. Without the contact correction, paper/K at 3 ranks otherwise stalled at
-      // stationarity 1e-5 while mu fell to nothing; a single stall (2D nx = 400, step 3) passes.
-      rdNorm = rd.norm2();
-      const bool stalled = forcing.type == "reduction" && previousRdNorm > 0 && mu0 > 0 &&
-                           rdNorm > bnorm * mu / mu0 && rdNorm > (1 - 0.25 * previousAlpha) * previousRdNorm;
-      stalls = stalled ? stalls + 1 : 0;
-      if (stalls == 2) {
-        forcing.reductionSafeguard *= 0.5;
-        stalls = 0;
-      }
-      previousRdNorm = rdNorm;
-    }
-    ++result.gradientEvaluations;
-    lambda.update(-1.0, y, 0.0);
-    const KKTMeasures kkt = kktMeasures(qp, *v, lambda);
-    // Not at the start: there v = 0 may give the complementarity measure no energy scale.
-    forcing.stationarityOnly =
-        k > 0 && kkt.complementarity <= tol && kkt.primalFeasibility <= tol && kkt.dualFeasibility <= tol;
-
-    if (havePending) {
-      pending.objective = objective(qp, *v, Qv);
-      pending.kkt = kkt;
-      pending.seconds = timer.totalElapsedTime(true);
-      result.history.push_back(pending);
-      observer.onNewtonStep(pending);
-    }
-    result.outerIterations = k;
-    if (!std::isfinite(mu) || !std::isfinite(kkt.stationarityAbs)) {
-      result.status = SolveStatus::NumericalBreakdown;
-      result.message = "non-finite iterate; check the problem data (Q must be positive definite)";
-      break;
-    }
-    if (kkt.worst() <= tol) {
-      result.status = SolveStatus::Converged;
-      result.message = convergedMessage(tol);
-      break;
-    }
-    if (mu0 > 0 && mu < 1e-30 * mu0) {
-      // Complementarity far below any need while the rest of the KKT conditions lag: the
-      // Newton systems are solved too loosely for the target, and D = y/s degenerates.
-      result.status = SolveStatus::NumericalBreakdown;
-      result.message = "the barrier parameter vanished before the KKT target was met: the Newton systems are "
-                       "solved too loosely; tighten Solver/forcing: eta";
-      break;
-    }
-    if (k == maxIterations) {
-      result.status = SolveStatus::IterationLimit;
-      result.message = "maximum iterations (" + std::to_string(maxIterations) +
-                       ") reached; raise Solver/maximum iterations or loosen Solver/kkt: tolerance";
-      break;
-    }
-
-    {
-      auto yd = y.getData();
-      auto sd = s.getData();
-      forEach(D, [&](std::size_t i) { return yd[i] / sd[i]; });
-    }
-    newton.setWeights(D);
-
-    int krylovThisStep = 0;
-    double muTarget = 0;
-    bool krylovFailed = false;
-    auto takeDirection = [&](const Vector& rcv, bool fromCurrentStep) {
-      KrylovResult kr = direction(rcv, fromCurrentStep);
-      krylovThisStep += kr.iterations;
-      if (!kr.converged && !(kr.relativeResidual < 1.0)) krylovFailed = true;
-    };
-    if (centering == "mehrotra") {
-      rc.elementWiseMultiply(1.0, s, y, 0.0);
-      takeDirection(rc, false);
-      const double ap = std::min(1.0, maxStepToBoundary(s, ds)), ad = std::min(1.0, maxStepToBoundary(y, dy));
-      double muAffine = 0;
-      if (m > 0) {
-        sAffine.update(1.0, s, ap, ds, 0.0);
-        yAffine.update(1.0, y, ad, dy, 0.0);
-        muAffine = sAffine.dot(yAffine) / m;
-      }
-      const double sigma = mu > 0 ? std::pow(muAffine / mu, 3) : 0.0;
-      muTarget = sigma * mu;
-      {
-        // rc = s.y + ds_aff.dy_aff - sigma mu, from the affine direction still in ds, dy
-        auto sd = s.getData();
-        auto yd = y.getData();
-        auto dsd = ds.getData();
-        auto dyd = dy.getData();
-        forEach(rc, [&](std::size_t i) { return sd[i] * yd[i] + dsd[i] * dyd[i] - muTarget; });
-      }
-      // The corrector's right-hand side differs from the predictor's by the centering and
-      // second-order terms only: its CG may start from the predictor's step.
-      takeDirection(rc, correctorFromPredictor);
-    } else {
-      muTarget = muFactor * mu;
-      {
-        auto sd = s.getData();
-        auto yd = y.getData();
-        forEach(rc, [&](std::size_t i) { return sd[i] * yd[i] - muTarget; });
-      }
-      takeDirection(rc, false);
-    }
-    if (krylovFailed) {
-      result.status = SolveStatus::KrylovFailure;
-      result.message = "the Krylov solver made no progress on a Newton system; raise Solver/Krylov/maximum "
-                       "iterations or choose a stronger Solver/Preconditioner";
-      break;
-    }
-
-    const double alphaMax = std::min(maxStepToBoundary(s, ds), maxStepToBoundary(y, dy));
-    double alpha = std::min(1.0, ftb * alphaMax);
-
-    if (centering == "fixed") {
-      // Backtracking on phi = 1/2 ||F||^2 along the direction; F is linear in alpha but for
-      // the complementarity block, so phi(alpha) needs no operator application.
-      qp.Q->apply(dv, t);
-      qp.A->apply(dy, t, Teuchos::TRANS, 1.0, 1.0);
-      auto phi = [&](double a) {
-        trial.update(1.0, rd, a, t, 0.0);
-        double value = trial.dot(trial) + (1 - a) * (1 - a) * rp.dot(rp);
-        double local = 0;
-        auto sd = s.getData();
-        auto yd = y.getData();
-        auto dsd = ds.getData();
-        auto dyd = dy.getData();
-        for (std::size_t i = 0; i < s.getLocalLength(); ++i) {
-          double c = (sd[i] + a * dsd[i]) * (yd[i] + a * dyd[i]) - muTarget;
-          local += c * c;
-        }
-        double global = local;
-        Teuchos::reduceAll(*cmap->getComm(), Teuchos::REDUCE_SUM, 1, &local, &global);
-        ++result.functionEvaluations;
-        return 0.5 * (value + global);
-      };
-      const double phi0 = phi(0.0);
-      double slope = rd.dot(t) - rp.dot(rp);
-      {
-        double local = 0;
-        auto sd = s.getData();
-        auto yd = y.getData();
-        auto dsd = ds.getData();
-        auto dyd = dy.getData();
-        for (std::size_t i = 0; i < s.getLocalLength(); ++i)
-          local += (sd[i] * yd[i] - muTarget) * (dsd[i] * yd[i] + sd[i] * dyd[i]);
-        double global = local;
-        Teuchos::reduceAll(*cmap->getComm(), Teuchos::REDUCE_SUM, 1, &local, &global);
-        slope += global;
-      }
-      int halvings = 0;
-      while (phi(alpha) > phi0 + armijo * alpha * slope && halvings < 40) {
-        alpha *= 0.5;
-        ++halvings;
-      }
-      if (halvings == 40 || slope >= 0) {
-        result.status = SolveStatus::LineSearchFailure;
-        result.message = "no decrease of the merit function along the Newton direction; tighten "
-                         "Solver/forcing: eta or use Solver/primal-dual: centering = mehrotra";
-        break;
-      }
-    }
-
-    v->update(alpha, dv, 1.0);
-    s.update(alpha, ds, 1.0);
-    y.update(alpha, dy, 1.0);
-    previousAlpha = alpha;
-
-    pending = NewtonStepRecord();
-    pending.outer = k + 1;
-    pending.mu = muTarget;
-    pending.step = alpha;
-    pending.krylovIterations = krylovThisStep;
-    havePending = true;
-    result.innerIterations.push_back(1);
-  }
-
-  Vector slack(cmap);
-  qp.A->apply(*v, slack);
-  slack.update(1.0, *qp.d, -1.0);
-  result.preconditionerSetups = newton.preconditionerSetups();
-  finishResult(qp, *v, lambda, slack, result);
-  result.seconds = timer.totalElapsedTime(true);
-  observer.onFinish(result);
-  return result;
+  observer.onStart("primal-dual (" + p.get<std::string>("primal-dual: centering") + " centering)",
+                   qp.Q->getDomainMap()->getGlobalNumElements(), qp.A->getRangeMap()->getGlobalNumElements());
+  PrimalDualMethod method(qp, p, v0);
+  return method.run(observer, timer);
 }
 
 }  // namespace signorini::detail

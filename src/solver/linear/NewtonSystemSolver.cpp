@@ -9,6 +9,7 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/ParameterValidation.hpp"
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
 #include "solver/preconditioner/SubspaceCorrectedPreconditioner.hpp"
@@ -37,12 +38,12 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   Teuchos::ParameterList& krylov = p.sublist("Krylov", false, "Krylov solver of the Newton systems");
   krylov.setParameters(KrylovSolver::validParameters());
   krylov.set("maximum iterations", 1000, "Krylov iterations allowed per Newton system",
-             rcp(new Teuchos::EnhancedNumberValidator<int>(1, 1000000)));
+             range(1, 1000000));
   krylov.set("initial guess: previous solutions", 2,
              "Expert: Start each Newton system from the H-orthogonal projection of its solution on this many earlier "
              "solutions (and the predictor's step, for the corrector), one application of H per vector; 0: "
              "start from zero",
-             rcp(new Teuchos::EnhancedNumberValidator<int>(0, 20)));
+             range(0, 20));
   krylov.set("initial guess: contact correction", true,
              "Expert: Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x): one "
              "application of H and one subspace solve per Newton system; needs Preconditioner/contact "
@@ -51,35 +52,44 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   prec.set("type", "amg of H",
            "\"none\", \"amg of Q\" (MueLu on Q, built once) or \"amg of H\" (MueLu on the "
            "assembled Q + A^T D A, rebuilt as \"amg of H: rebuild tolerance\" says)",
-           rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "amg of Q", "amg of H"))));
+           choices<PreconditionerType>({{"none", PreconditionerType::None},
+                                        {"amg of Q", PreconditionerType::AmgOfQ},
+                                        {"amg of H", PreconditionerType::AmgOfH}},
+                                       "type"));
   prec.set("amg of H: rebuild tolerance", 0.0,
            "Expert: Rebuild \"amg of H\" when the relative weight D_i / (D_i + q_i) of some constraint (q_i: its "
            "stiffness a_i^T diag(Q) a_i; D_i capped by amg of H: weight cap) moved by more than this since "
            "the last build; 0 rebuilds at every Newton step, 1 never after the first",
-           rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1.0)));
+           range(0.0, 1.0));
   prec.set("amg of H: weight cap", 10.0,
            "Expert: With a contact correction, \"amg of H\" is built for Q + A^T D' A, D'_i = min(D_i, cap q_i) "
            "(filtering): weights far above a constraint's stiffness stay out of the coarse levels and the "
            "contact correction solves for them exactly. 0: no cap",
-           rcp(new Teuchos::EnhancedNumberValidator<double>(0.0, 1e300)));
+           range(0.0, 1e300));
   prec.set("contact correction", "multiplicative",
            "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
            "\"additive\" or \"multiplicative\" (symmetric: subspace, AMG, subspace)",
-           rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("none", "additive", "multiplicative"))));
+           choices<ContactCorrection>({{"none", ContactCorrection::None},
+                                       {"additive", ContactCorrection::Additive},
+                                       {"multiplicative", ContactCorrection::Multiplicative}},
+                                      "contact correction"));
   prec.set("hierarchy", "auto",
            "Multigrid levels: \"geometric\" (box meshes: P_k to P1, then box grids with half the cells, "
            "Galerkin coarse matrices, Chebyshev smoothing, MueLu below geometric: coarsest size); "
            "\"algebraic\": MueLu alone; \"auto\": geometric on box meshes",
-           rcp(new Teuchos::StringValidator(Teuchos::tuple<std::string>("auto", "algebraic", "geometric"))));
+           choices<Hierarchy>({{"auto", Hierarchy::Auto},
+                               {"algebraic", Hierarchy::Algebraic},
+                               {"geometric", Hierarchy::Geometric}},
+                              "hierarchy"));
   prec.set("geometric: coarsest size", 200,
            "Expert: The geometric levels stop before a grid with fewer unknowns than this, or at one that cannot "
            "be halved; MueLu takes over there",
-           rcp(new Teuchos::EnhancedNumberValidator<int>(1, std::numeric_limits<int>::max())));
+           range(1, std::numeric_limits<int>::max()));
   prec.set("geometric: eigenvalue update steps", 5,
            "Expert: Lanczos steps that update a smoother's largest-eigenvalue estimate when only the contact rows "
-           "changed, from the previous Ritz vector; 0: a fresh estimate at every rebuild; 1 and 2 are "
-           "rejected as too inaccurate",
-           rcp(new Teuchos::EnhancedNumberValidator<int>(0, 1000)));
+           "changed, from the previous Ritz vector; 0: a fresh estimate at every rebuild (1 and 2 steps are too "
+           "inaccurate)",
+           zeroOrRange(3, 1000));
   prec.sublist("Ifpack2", false,
                "Passed unchanged to Ifpack2's Chebyshev smoother of the geometric levels, over Signorini's "
                "defaults (chebyshev: degree 2, chebyshev: ratio eigenvalue 7)");
@@ -87,27 +97,41 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   return p;
 }
 
+namespace {
+
+// The "Krylov" and "Preconditioner" sublists of a "Solver" list, validated.
+Teuchos::ParameterList newtonParameters(const Teuchos::ParameterList& solver) {
+  Teuchos::ParameterList own;
+  for (const char* name : {"Krylov", "Preconditioner"})
+    if (solver.isSublist(name)) own.set(name, solver.sublist(name));
+  return validatedParameters(own, NewtonSystemSolver::validParameters(), "Solver");
+}
+
+}  // namespace
+
 NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params)
-    : H_(rcp(new BarrierHessianOperator(qp.Q, qp.A))),
-      krylov_(params.sublist("Krylov")),
-      strategy_(params.sublist("Preconditioner").get<std::string>("type")),
-      maxIterations_(params.sublist("Krylov").get<int>("maximum iterations")),
-      initialGuess_(params.sublist("Krylov").get<int>("initial guess: previous solutions")),
-      contactCorrectedStart_(params.sublist("Krylov").get<bool>("initial guess: contact correction")) {
-  if (strategy_ == "none") {
-    if (params.sublist("Preconditioner").get<std::string>("contact correction") != "none")
+    : params_(newtonParameters(params)),
+      H_(rcp(new BarrierHessianOperator(qp.Q, qp.A))),
+      krylov_(params_.sublist("Krylov")),
+      strategy_(choice<PreconditionerType>(params_.sublist("Preconditioner"), "type")),
+      maxIterations_(params_.sublist("Krylov").get<int>("maximum iterations")),
+      initialGuess_(params_.sublist("Krylov").get<int>("initial guess: previous solutions")),
+      contactCorrectedStart_(params_.sublist("Krylov").get<bool>("initial guess: contact correction")) {
+  const Teuchos::ParameterList& prec = params_.sublist("Preconditioner");
+  correction_ = choice<ContactCorrection>(prec, "contact correction");
+  if (strategy_ == PreconditionerType::None) {
+    if (correction_ != ContactCorrection::None)
       throw InputError("Preconditioner/contact correction needs an AMG: set Preconditioner/type to \"amg of Q\" "
                        "or \"amg of H\"");
     return;
   }
   if (qp.Qmatrix().is_null())
-    throw InputError("Preconditioner/type \"" + strategy_ + "\" needs Q as an assembled CrsMatrix; "
+    throw InputError("Preconditioner/type \"" + prec.get<std::string>("type") + "\" needs Q as an assembled CrsMatrix; "
                      "use \"none\" for a matrix-free Q");
-  const Teuchos::ParameterList& prec = params.sublist("Preconditioner");
   const Teuchos::ParameterList& muelu = prec.sublist("MueLu");
-  const std::string hierarchy = prec.get<std::string>("hierarchy");
+  const Hierarchy hierarchy = choice<Hierarchy>(prec, "hierarchy");
   const bool haveGrid = qp.grid && !qp.coordinates.is_null();
-  if (hierarchy == "geometric" || (hierarchy == "auto" && haveGrid)) {
+  if (hierarchy == Hierarchy::Geometric || (hierarchy == Hierarchy::Auto && haveGrid)) {
     if (!haveGrid)
       throw InputError("Preconditioner/hierarchy \"geometric\" needs a box mesh (Problem/mesh: type \"box\")");
     amg_ = std::make_unique<GeometricMultigridPreconditioner>(*qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize,
@@ -117,16 +141,15 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   } else {
     amg_ = std::make_unique<MueLuPreconditioner>(muelu, qp.blockSize, qp.nullspace, qp.coordinates);
   }
-  correction_ = params.sublist("Preconditioner").get<std::string>("contact correction");
-  if (correction_ != "none")
+  if (correction_ != ContactCorrection::None)
     subspace_ = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A));
-  if (correction_ == "multiplicative") contactColumns_ = H_->onContactColumns();
-  rebuildTolerance_ = params.sublist("Preconditioner").get<double>("amg of H: rebuild tolerance");
+  if (correction_ == ContactCorrection::Multiplicative) contactColumns_ = H_->onContactColumns();
+  rebuildTolerance_ = prec.get<double>("amg of H: rebuild tolerance");
   // Without a contact correction, nothing else would see the weights above the cap.
-  if (correction_ != "none") weightCap_ = params.sublist("Preconditioner").get<double>("amg of H: weight cap");
-  if (strategy_ == "amg of H") constraintStiffness_ = constraintStiffness(*qp.Qmatrix(), *qp.A);
+  if (correction_ != ContactCorrection::None) weightCap_ = prec.get<double>("amg of H: weight cap");
+  if (strategy_ == PreconditionerType::AmgOfH) constraintStiffness_ = constraintStiffness(*qp.Qmatrix(), *qp.A);
   reuseHierarchy_ = muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none";
-  if (strategy_ == "amg of Q") {
+  if (strategy_ == PreconditionerType::AmgOfQ) {
     amg_->compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
     amgReady_ = true;
   }
@@ -136,10 +159,10 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
   H_->setWeights(D);
   if (!contactColumns_.is_null()) contactColumns_->setWeights(D);
   if (!subspace_.is_null()) {
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3d contact subspace setup"));
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: contact subspace setup"));
     subspace_->setWeights(D);
   }
-  if (strategy_ == "amg of H") {
+  if (strategy_ == PreconditionerType::AmgOfH) {
     // The AMG sees the weights filtered by the cap, and their relative values w_i = D_i / (D_i + q_i)
     // say how much A^T D A changes the matrix it was built for.
     auto weights = rcp(new Vector(D.getMap()));
@@ -163,10 +186,10 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
     ++amgBuilds_;
     RCP<CrsMatrix> H;
     {
-      Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3a assemble H"));
+      Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: assemble H"));
       H = H_->assemble(filtered);
     }
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b AMG setup"));
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup"));
     amg_->compute(H, reuseHierarchy_ && amgReady_);
     amgReady_ = true;
   }
@@ -178,11 +201,11 @@ KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absolu
   if (!fromGuess || rnorm == 0.0) x.putScalar(0.0);
   if (rnorm == 0.0) return KrylovResult{0, true, 0.0};
   if (initialGuess_.capacity() > 0) {
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3e initial guess"));
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: initial guesses"));
     initialGuess_.project(*H_, r, x, fromGuess);
   }
   if (contactCorrectedStart_ && !subspace_.is_null()) {
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3e initial guess"));
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: initial guesses"));
     Vector residual(r, Teuchos::Copy);
     H_->apply(x, residual, Teuchos::NO_TRANS, -1.0, 1.0);
     subspace_->apply(residual, x, Teuchos::NO_TRANS, 1.0, 1.0);
@@ -193,7 +216,7 @@ KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absolu
   auto sol = Teuchos::rcpFromRef(x);
   KrylovResult result;
   {
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3c Krylov"));
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: Krylov"));
     result = krylov_.solve(H_, M, rhs, sol, std::min(0.5, absoluteTolerance / rnorm), maxIterations_, startReduction,
                            absoluteFloor / rnorm);
   }

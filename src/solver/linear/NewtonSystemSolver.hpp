@@ -24,14 +24,21 @@
 #include "solver/linear/KrylovSolver.hpp"
 #include "solver/preconditioner/ContactSubspaceSolver.hpp"
 #include "solver/preconditioner/MultilevelPreconditioner.hpp"
+#include "solver/preconditioner/SubspaceCorrectedPreconditioner.hpp"
 
 namespace signorini {
+
+// The choices of the "Preconditioner" list.
+enum class PreconditionerType { None, AmgOfQ, AmgOfH };
+enum class Hierarchy { Auto, Algebraic, Geometric };
 
 class NewtonSystemSolver {
  public:
   // Sublists "Krylov" (see KrylovSolver) and "Preconditioner".
   static Teuchos::ParameterList validParameters();
 
+  // Reads the "Krylov" and "Preconditioner" sublists of `params`, validated here; other
+  // entries are the caller's. Throws InputError.
   NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params);
 
   // Sets D and refreshes the preconditioner as its strategy says.
@@ -53,18 +60,19 @@ class NewtonSystemSolver {
   const BarrierHessianOperator& hessian() const { return *H_; }
   int maxIterations() const { return maxIterations_; }
   // Number of AMG hierarchies built so far.
-  int preconditionerSetups() const { return amgBuilds_ + (strategy_ == "amg of Q" ? 1 : 0); }
+  int preconditionerSetups() const { return amgBuilds_ + (strategy_ == PreconditionerType::AmgOfQ ? 1 : 0); }
 
  private:
+  Teuchos::ParameterList params_;  // the validated "Krylov" and "Preconditioner" sublists
   RCP<BarrierHessianOperator> H_;
   RCP<BarrierHessianOperator> contactColumns_;  // H P P^T, for the multiplicative correction
   KrylovSolver krylov_;
-  std::string strategy_;
+  PreconditionerType strategy_;
   int maxIterations_;
   InitialGuessProjection initialGuess_;
   bool contactCorrectedStart_ = false;
   std::unique_ptr<MultilevelPreconditioner> amg_;
-  std::string correction_ = "none";
+  ContactCorrection correction_ = ContactCorrection::None;
   RCP<ContactSubspaceSolver> subspace_;
   bool reuseHierarchy_ = false;
   double rebuildTolerance_ = 0.0;

@@ -287,7 +287,8 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
   smoother_.setParameters(smoother);
   // One step is the Rayleigh quotient of the start: at 2D nx = 800 CG then did not converge.
   if (eigenvalueUpdateSteps == 1 || eigenvalueUpdateSteps == 2 || eigenvalueUpdateSteps < 0)
-    throw InputError("Preconditioner/geometric: eigenvalue update steps must be 0 (fresh estimates) or at least 3");
+    throw Error("GeometricMultigridPreconditioner: eigenvalue update steps must be 0 (fresh estimates) or at "
+                "least 3");
   const int dim = grid.dimension();
   if (static_cast<int>(coordinates.getNumVectors()) != dim || blockSize < 1 ||
       Q.getRowMap()->getNodeNumElements() != blockSize * coordinates.getLocalLength())
@@ -430,7 +431,7 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
   // products were 0.9 s of a 1.6 s setup at 3D nx = 64.
   RCP<CrsMatrix> change;
   if (levels_.size() > 1 && !levels_[0]->A.is_null()) {
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b1 Galerkin products"));
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: Galerkin products"));
     change = changedEntries(*levels_[0]->A, *A);
   }
   levels_[0]->A = A;
@@ -441,7 +442,7 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
     RCP<CrsMatrix> coarseA;
     const RCP<const CrsMatrix> levelChange = change;
     {
-      Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b1 Galerkin products"));
+      Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: Galerkin products"));
       if (!change.is_null()) {
         auto coarseChange = rcp(new CrsMatrix(level.P->getDomainMap(), 0));
         Tpetra::TripleMatrixMultiply::MultiplyRAP(*level.P, true, *change, false, *level.P, false, *coarseChange);
@@ -454,7 +455,7 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
       }
     }
     levels_[l + 1]->A = coarseA;
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b2 smoothers"));
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: smoothers"));
     level.smoother = rcp(new Chebyshev(level.A));
     Teuchos::ParameterList smoother = smoother_;
     if (!smoother.isParameter("chebyshev: max eigenvalue")) {
@@ -483,7 +484,7 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
     smoothers.push_back(level.smoother);
   }
   {
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: 3b3 coarsest level (MueLu)"));
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: coarsest level (MueLu)"));
     coarse_->compute(levels_.back()->A, reuse && !cycle_.is_null());
   }
   cycle_ = rcp(new VCycle(matrices, smoothers, prolongators, restrictions, coarse_->getOperator()));

@@ -1,22 +1,23 @@
 #include "solver/preconditioner/SubspaceCorrectedPreconditioner.hpp"
 
+#include <stdexcept>
+
 #include <Tpetra_MultiVector.hpp>
 
-#include "signorini/core/Error.hpp"
 
 namespace signorini {
 
 SubspaceCorrectedPreconditioner::SubspaceCorrectedPreconditioner(RCP<const Operator> H, RCP<const Operator> B,
                                                                  RCP<const Operator> S,
-                                                                 const std::string& combination,
+                                                                 ContactCorrection combination,
                                                                  RCP<const Operator> HP)
     : H_(std::move(H)),
       B_(std::move(B)),
       S_(std::move(S)),
       HP_(std::move(HP)),
-      multiplicative_(combination == "multiplicative") {
-  if (combination != "additive" && combination != "multiplicative")
-    throw InputError("contact correction: \"" + combination + "\" is neither \"additive\" nor \"multiplicative\"");
+      multiplicative_(combination == ContactCorrection::Multiplicative) {
+  if (combination == ContactCorrection::None)
+    throw std::logic_error("SubspaceCorrectedPreconditioner: a subspace correction needs a combination");
 }
 
 void SubspaceCorrectedPreconditioner::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, Scalar alpha,

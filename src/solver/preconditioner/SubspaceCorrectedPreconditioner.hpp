@@ -10,19 +10,21 @@
 // takes both residuals from it instead of H: the first x = S r lies on the subspace, so
 // H x = HP x; the second residual is read by S on the subspace only, so P^T H x = (HP)^T x.
 // This saves two applications of H per application of M^-1, with the same result.
-#include <string>
-
 #include <Tpetra_Operator.hpp>
 
 #include "signorini/core/TpetraTypes.hpp"
 
 namespace signorini {
 
+// How the subspace solve joins the AMG ("Preconditioner/contact correction").
+enum class ContactCorrection { None, Additive, Multiplicative };
+
 class SubspaceCorrectedPreconditioner : public Operator {
  public:
-  // S must vanish off the subspace and read only the subspace entries of its input.
+  // S must vanish off the subspace and read only the subspace entries of its input;
+  // `combination` is Additive or Multiplicative.
   SubspaceCorrectedPreconditioner(RCP<const Operator> H, RCP<const Operator> B, RCP<const Operator> S,
-                                  const std::string& combination, RCP<const Operator> HP = Teuchos::null);
+                                  ContactCorrection combination, RCP<const Operator> HP = Teuchos::null);
 
   void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
              Scalar alpha = Teuchos::ScalarTraits<Scalar>::one(),

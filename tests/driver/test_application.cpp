@@ -97,10 +97,19 @@ TEST(Application, BadValuesNameTheParameterAndTheAcceptedRange) {
     std::string path, accepted;
   };
   const Case cases[] = {
-      {[](auto& l) { l.sublist("Problem").set("element: degree", 4); }, "Problem/element: degree", "3"},
-      {[](auto& l) { l.sublist("Solver").set("method", "dual"); }, "Solver/method", "primal-dual"},
-      {[](auto& l) { l.sublist("Problem").set("material: poisson ratio", 0.6); }, "Problem/material: poisson ratio",
-       "0.4999"},
+      {[](auto& l) { l.sublist("Problem").set("element: degree", 4); }, "Problem/element: degree",
+       "accepted: an integer from 1 to 3"},
+      {[](auto& l) { l.sublist("Solver").set("method", "dual"); }, "Solver/method",
+       "accepted: one of \"primal-dual\", \"primal\""},
+      {[](auto& l) { l.sublist("Problem").set("material: poisson ratio", 0.49999); },
+       "Problem/material: poisson ratio", "accepted: a number from -0.999 to 0.4999"},
+      // A range rule holds whichever hierarchy reads the parameter.
+      {[](auto& l) {
+         auto& prec = l.sublist("Solver").sublist("Preconditioner");
+         prec.set("hierarchy", "algebraic");
+         prec.set("geometric: eigenvalue update steps", 2);
+       },
+       "Solver/Preconditioner/geometric: eigenvalue update steps", "accepted: 0, or an integer from 3 to 1000"},
       {[](auto& l) { l.sublist("Solver").set("maximum iterations", "many"); }, "Solver/maximum iterations", "int"},
   };
   for (const Case& c : cases) {

@@ -41,7 +41,7 @@ TEST(ActiveSetCriterion, DoesNotDependOnTheScaleOfAConstraintRow) {
   Vector s(p.qp.A->getRangeMap()), lambda(*r.lambda, Teuchos::Copy), d(*p.qp.d, Teuchos::Copy);
   {
     auto sd = s.getDataNonConst();
-    for (std::size_t i = 0; i < sd.size(); ++i)
+    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(sd.size()); ++i)
       sd[i] = (p.qp.A->getRangeMap()->getGlobalElement(i) % 3 == 0) ? 1e-6 : 1e2;
   }
   auto A = rcp(new CrsMatrix(*p.qp.A, Teuchos::Copy));

@@ -107,7 +107,8 @@ TEST(SubspaceCorrectedPreconditioner, SymmetricPositiveDefiniteAndExactOnTheSubs
     const ContactQP& qp = s.problem.qp;
     MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nullspace, qp.coordinates);
     amg.compute(s.H->assemble());
-    for (const char* combination : {"additive", "multiplicative"}) {
+    for (const ContactCorrection combination : {ContactCorrection::Additive, ContactCorrection::Multiplicative}) {
+      const char* combinationName = combination == ContactCorrection::Additive ? "additive" : "multiplicative";
       SubspaceCorrectedPreconditioner M(s.H, amg.getOperator(), s.S, combination);
       Vector u(qp.Q->getDomainMap()), w(qp.Q->getDomainMap()), Mu(qp.Q->getDomainMap()), Mw(qp.Q->getDomainMap());
       u.randomize();
@@ -115,10 +116,10 @@ TEST(SubspaceCorrectedPreconditioner, SymmetricPositiveDefiniteAndExactOnTheSubs
       M.apply(u, Mu);
       M.apply(w, Mw);
       const double uMw = u.dot(Mw), wMu = w.dot(Mu);
-      EXPECT_LT(std::abs(uMw - wMu), 1e-8 * std::sqrt(u.dot(Mu) * w.dot(Mw))) << name << " " << combination;
-      EXPECT_GT(u.dot(Mu), 0.0) << name << " " << combination;
-      EXPECT_GT(w.dot(Mw), 0.0) << name << " " << combination;
-      if (std::string(combination) != "multiplicative") continue;
+      EXPECT_LT(std::abs(uMw - wMu), 1e-8 * std::sqrt(u.dot(Mu) * w.dot(Mw))) << name << " " << combinationName;
+      EXPECT_GT(u.dot(Mu), 0.0) << name << " " << combinationName;
+      EXPECT_GT(w.dot(Mw), 0.0) << name << " " << combinationName;
+      if (combination != ContactCorrection::Multiplicative) continue;
       Vector x(qp.Q->getDomainMap()), Hx(qp.Q->getDomainMap()), Mx(qp.Q->getDomainMap());
       x.randomize();
       x.elementWiseMultiply(1.0, contactIndicator(qp), x, 0.0);
