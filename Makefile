@@ -1,6 +1,7 @@
 # Convenience wrapper around scripts/install-deps.sh, CMake and CTest.
 #   make run    install dependencies, build, solve the default problem (xml/default.xml)
 #   make test   install dependencies, build, run the whole test suite
+#   make doc    the API reference of the public headers (build/doc/api/html)
 BUILD ?= build
 JOBS ?= 2
 NP ?= 2
@@ -14,7 +15,7 @@ export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
 export OMPI_MCA_btl_vader_single_copy_mechanism = none
 
-.PHONY: all deps configure build run test bench clean
+.PHONY: all deps configure build run test bench doc clean
 
 all: build
 
@@ -32,6 +33,9 @@ run: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+doc: build
+	cmake --build $(BUILD) --target doc
 
 clean:
 	rm -rf $(BUILD)

@@ -1,11 +1,12 @@
 #pragma once
-// Signorini's public API in one include. Each header can also be included on its own:
-//   core/       errors, Tpetra type aliases, version
-//   solver/     the contact QP, the interior point solver, its result and observers
-//   fe/         the material law
-//   assembly/   the problem definition, expressions, contact pressure and statistics
-//   problem/    the "Problem" parameter list and the builder from it to an assembled QP
-//   io/         ParaView output
+/// \file
+/// Signorini's public API in one include. Each header can also be included on its own:
+///   core/       errors, Tpetra type aliases, version
+///   solver/     the contact QP, the interior point solver, its result and observers
+///   fe/         the material law
+///   assembly/   the problem definition, expressions, contact pressure and statistics
+///   problem/    the "Problem" parameter list and the builder from it to an assembled QP
+///   io/         ParaView output
 #include "signorini/assembly/ContactPressure.hpp"
 #include "signorini/assembly/ContactStatistics.hpp"
 #include "signorini/assembly/Expression.hpp"

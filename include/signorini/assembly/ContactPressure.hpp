@@ -1,17 +1,18 @@
 #pragma once
-// The contact pressure as a field on the contact boundary Gamma_c. The multipliers of the
-// node-wise constraints are nodal forces, f_i = -lambda_i; the pressure is their
-// boundary-L2 representative p_h = sum_j p_j phi_j, the solution of M p = f with the
-// consistent mass matrix M_ij = integral over Gamma_c of phi_i phi_j, restricted to the
-// loaded facets (those with an active node): p = 0 on the rest. On the whole of Gamma_c, the
-// projection of a pressure that drops to zero at the contact edge rings outside it
-// (alternating lobes of 10% of the peak on a P1 Hertz profile); restricted, p_h vanishes
-// where there is no contact. A uniform pressure is recovered exactly for every element
-// degree (unlike a division by lumped weights, which fails on P2 triangles, whose vertex
-// functions integrate to zero).
-// With weighted gaps (ContactFormulation::weightedGap) the multipliers already are the
-// pressure's coefficients, p = -sum lambda_a psi_a in the multiplier basis psi
-// (ContactMultiplierBasis: phi itself but for P2 tetrahedra), and need no solve.
+/// \file
+/// The contact pressure as a field on the contact boundary Gamma_c. The multipliers of the
+/// node-wise constraints are nodal forces, f_i = -lambda_i; the pressure is their
+/// boundary-L2 representative p_h = sum_j p_j phi_j, the solution of M p = f with the
+/// consistent mass matrix M_ij = integral over Gamma_c of phi_i phi_j, restricted to the
+/// loaded facets (those with an active node): p = 0 on the rest. On the whole of Gamma_c, the
+/// projection of a pressure that drops to zero at the contact edge rings outside it
+/// (alternating lobes of 10% of the peak on a P1 Hertz profile); restricted, p_h vanishes
+/// where there is no contact. A uniform pressure is recovered exactly for every element
+/// degree (unlike a division by lumped weights, which fails on P2 triangles, whose vertex
+/// functions integrate to zero).
+/// With weighted gaps (ContactFormulation::weightedGap) the multipliers already are the
+/// pressure's coefficients, p = -sum lambda_a psi_a in the multiplier basis psi
+/// (ContactMultiplierBasis: phi itself but for P2 tetrahedra), and need no solve.
 #include <array>
 #include <memory>
 #include <vector>
@@ -25,8 +26,8 @@ namespace signorini {
 class ContactMultiplierBasis;
 class DistributedSpace;
 
-// Pressure values at quadrature points of the contact boundary (exact for degree 2k + 2),
-// this rank's facets: points (dim coordinates each), weights (true measure), pressures.
+/// Pressure values at quadrature points of the contact boundary (exact for degree 2k + 2),
+/// this rank's facets: points (dim coordinates each), weights (true measure), pressures.
 struct ContactPressureSamples {
   int dim = 0;
   std::vector<double> points, weights, pressures;
@@ -34,42 +35,42 @@ struct ContactPressureSamples {
 
 class ContactPressure {
  public:
-  // Collective. `constraintMap` is A's range map: one constraint per contact node, as the
-  // assembler numbers them. Assembles M once.
+  /// Collective. `constraintMap` is A's range map: one constraint per contact node, as the
+  /// assembler numbers them. Assembles M once.
   ContactPressure(const DistributedSpace& space, const ProblemDefinition& problem, const RCP<const Map>& constraintMap);
 
-  // The pressure's nodal values on the constraint map, 0 off the nodes L of the facets that
-  // have a node with active != 0. Nodal constraints: M_LL p_L = -lambda_L (paper's sign,
-  // lambda <= 0), solved by CG on the symmetrically diagonal-scaled M to a relative residual
-  // of 1e-13; throws Error if CG does not get there (a mass matrix: it always should).
-  // Weighted gaps: the nodal values of -sum lambda_a psi_a. Collective.
+  /// The pressure's nodal values on the constraint map, 0 off the nodes L of the facets that
+  /// have a node with active != 0. Nodal constraints: M_LL p_L = -lambda_L (paper's sign,
+  /// lambda <= 0), solved by CG on the symmetrically diagonal-scaled M to a relative residual
+  /// of 1e-13; throws Error if CG does not get there (a mass matrix: it always should).
+  /// Weighted gaps: the nodal values of -sum lambda_a psi_a. Collective.
   RCP<Vector> pressure(const Vector& lambda, const Vector& active) const;
 
-  // p_j = -lambda_j / w_j with the HRZ-lumped boundary weights w (row sums for P1) on the
-  // nodes of the loaded facets, 0 elsewhere. For P1 it is the multiplier of a dual mortar
-  // method with node-wise constraints. With weighted gaps, the same as pressure(). Collective.
+  /// p_j = -lambda_j / w_j with the HRZ-lumped boundary weights w (row sums for P1) on the
+  /// nodes of the loaded facets, 0 elsewhere. For P1 it is the multiplier of a dual mortar
+  /// method with node-wise constraints. With weighted gaps, the same as pressure(). Collective.
   RCP<Vector> lumpedPressure(const Vector& lambda, const Vector& active) const;
 
-  // The contact area: the lumped boundary measure (HRZ weights) of the active nodes, each
-  // node standing for its share of the boundary. Collective.
+  /// The contact area: the lumped boundary measure (HRZ weights) of the active nodes, each
+  /// node standing for its share of the boundary. Collective.
   double activeMeasure(const Vector& active) const;
 
-  // A field on the constraints (pressure, active indicator) at the overlap nodes of the
-  // space, in overlapSpaceNodes() order, 0 off Gamma_c. Collective.
+  /// A field on the constraints (pressure, active indicator) at the overlap nodes of the
+  /// space, in overlapSpaceNodes() order, 0 off Gamma_c. Collective.
   std::vector<double> overlapNodeValues(const Vector& values) const;
 
-  // p_h at the quadrature points of this rank's contact facets. Collective.
+  /// p_h at the quadrature points of this rank's contact facets. Collective.
   ContactPressureSamples samples(const Vector& pressure) const;
 
   const CrsMatrix& massMatrix() const { return *mass_; }
   int dim() const;
 
  private:
-  // The nodal values of sum_a c_a psi_a (weighted gaps), on the constraint map.
+  /// The nodal values of sum_a c_a psi_a (weighted gaps), on the constraint map.
   RCP<Vector> nodalValues(const Vector& coefficients) const;
-  // Pressure values at this rank's facet nodes: overlap constraint values, by local index.
+  /// Pressure values at this rank's facet nodes: overlap constraint values, by local index.
   std::vector<double> overlapValues(const Vector& pressure) const;
-  // 1 on the owned constraints of facets with an active node, else 0.
+  /// 1 on the owned constraints of facets with an active node, else 0.
   RCP<Vector> loadedNodes(const Vector& active) const;
   template <class Visit>
   void forEachQuadraturePoint(const Vector& pressure, Visit&& visit) const;
@@ -79,15 +80,15 @@ class ContactPressure {
   bool weightedGap_;
   RCP<const Map> constraintMap_, overlapMap_;
   RCP<CrsMatrix> mass_, scaledMass_;
-  RCP<Vector> scaling_;  // D^-1/2, D = diag(M)
+  RCP<Vector> scaling_;  ///< D^-1/2, D = diag(M)
   RCP<Vector> lumpedWeights_;
-  std::vector<std::pair<long long, int>> facets_;  // (cell, local facet) of this rank's contact facets
-  std::vector<long long> overlapNodeConstraint_;  // per overlap space node, -1 for none
-  std::vector<int> overlapIndex_;  // local index in overlapMap_ of each space node, -1 off Gamma_c
+  std::vector<std::pair<long long, int>> facets_;  ///< (cell, local facet) of this rank's contact facets
+  std::vector<long long> overlapNodeConstraint_;  ///< per overlap space node, -1 for none
+  std::vector<int> overlapIndex_;  ///< local index in overlapMap_ of each space node, -1 off Gamma_c
 };
 
-// The statistics of a solution with recovered pressure p and active constraints `active`
-// (1 or 0 per constraint). Collective.
+/// The statistics of a solution with recovered pressure p and active constraints `active`
+/// (1 or 0 per constraint). Collective.
 ContactStatistics contactStatistics(const ContactPressure& recovery, const Vector& pressure, const CrsMatrix& A,
                                     const Vector& lambda, const Vector& active,
                                     const std::array<double, 3>& obstacleDirection);

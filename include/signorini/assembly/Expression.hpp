@@ -1,6 +1,7 @@
 #pragma once
-// A user-supplied scalar expression of the coordinates x, y, z (muparser syntax), for
-// loads, tractions, gaps and prescribed displacements given in the XML.
+/// \file
+/// A user-supplied scalar expression of the coordinates x, y, z (muparser syntax), for
+/// loads, tractions, gaps and prescribed displacements given in the XML.
 #include <memory>
 #include <string>
 
@@ -8,21 +9,21 @@ namespace signorini {
 
 class Expression {
  public:
-  // Parses `text` at once: a syntax error or an unknown variable throws InputError whose
-  // message names `what` (e.g. "Problem/body force: y").
+  /// Parses `text` at once: a syntax error or an unknown variable throws InputError whose
+  /// message names `what` (e.g. "Problem/body force: y").
   Expression(const std::string& text, const std::string& what);
   Expression(const Expression& other);
   Expression& operator=(const Expression& other);
   ~Expression();
 
-  // The value at x (dim coordinates). Throws InputError naming `what`, the expression and
-  // the point if it is not finite (sqrt of a negative number, division by zero...).
+  /// The value at x (dim coordinates). Throws InputError naming `what`, the expression and
+  /// the point if it is not finite (sqrt of a negative number, division by zero...).
   double operator()(const double* x, int dim) const;
   const std::string& text() const { return text_; }
   bool isConstantZero() const;
 
  private:
-  double evaluate(const double* x, int dim) const;  // unchecked
+  double evaluate(const double* x, int dim) const;  ///< unchecked
 
   struct Parser;
   std::string text_, what_;

@@ -1,7 +1,8 @@
 #pragma once
-// What the user asks to solve: mesh source, element degree, material, loads, boundary
-// conditions and obstacle; what the assembly turns into a ContactQP. readProblemDefinition
-// (ProblemParameters.hpp) fills it from the "Problem" parameter list.
+/// \file
+/// What the user asks to solve: mesh source, element degree, material, loads, boundary
+/// conditions and obstacle; what the assembly turns into a ContactQP. readProblemDefinition
+/// (ProblemParameters.hpp) fills it from the "Problem" parameter list.
 #include <array>
 #include <optional>
 #include <string>
@@ -12,36 +13,36 @@
 
 namespace signorini {
 
-// A vector field on a named boundary; absent components are free (Dirichlet) or zero (traction).
+/// A vector field on a named boundary; absent components are free (Dirichlet) or zero (traction).
 struct BoundaryField {
   std::string boundary;
-  std::vector<std::optional<Expression>> components;  // dim entries
+  std::vector<std::optional<Expression>> components;  ///< dim entries
 };
 
-// How the non-penetration condition -n_o . u <= g is imposed on the contact boundary, one
-// constraint per node of Gamma_c in both cases.
-//  nodal:        at the node (the paper's constraints);
-//  weightedGap:  integral of psi_j (g + n_o . u) >= 0 with the multiplier function psi_j of
-//                node j (ContactMultiplierBasis): every constraint has the positive weight
-//                integral of psi_j, also at the vertices of P2 triangles, whose nodal
-//                constraints carry no force; the multipliers are the pressure's coefficients.
+/// How the non-penetration condition -n_o . u <= g is imposed on the contact boundary, one
+/// constraint per node of Gamma_c in both cases.
+///  nodal:        at the node (the paper's constraints);
+///  weightedGap:  integral of psi_j (g + n_o . u) >= 0 with the multiplier function psi_j of
+///                node j (ContactMultiplierBasis): every constraint has the positive weight
+///                integral of psi_j, also at the vertices of P2 triangles, whose nodal
+///                constraints carry no force; the multipliers are the pressure's coefficients.
 enum class ContactFormulation { nodal, weightedGap };
 
 struct ProblemDefinition {
   std::string name;
-  std::string meshType;  // "box" or "gmsh"
+  std::string meshType;  ///< "box" or "gmsh"
   int dim = 2;
   std::array<long long, 3> cells{{1, 1, 1}};
   std::array<double, 3> lengths{{1.0, 1.0, 1.0}};
   std::string meshFile;
-  double meshSizeFactor = 1.0;  // of a .geo geometry
+  double meshSizeFactor = 1.0;  ///< of a .geo geometry
   int degree = 1;
   IsotropicMaterial material;
-  std::vector<Expression> bodyForce;  // dim components
+  std::vector<Expression> bodyForce;  ///< dim components
   int loadQuadratureDegree = 5;
   std::vector<BoundaryField> dirichlet, traction;
   std::string contactBoundary;
-  std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  // unit, from obstacle into body
+  std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body
   std::optional<Expression> gap;
   ContactFormulation contactFormulation = ContactFormulation::nodal;
 };

@@ -1,6 +1,7 @@
 #pragma once
-// The Tpetra types Signorini works with: Debian's Trilinos is instantiated for
-// <double, int, long long> on the Kokkos Serial node.
+/// \file
+/// The Tpetra types Signorini works with: Debian's Trilinos is instantiated for
+/// <double, int, long long> on the Kokkos Serial node.
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_RCP.hpp>
 #include <Tpetra_CrsMatrix_fwd.hpp>

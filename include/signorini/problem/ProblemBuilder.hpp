@@ -1,7 +1,8 @@
 #pragma once
-// From a validated "Problem" parameter list to the distributed discrete problem: mesh
-// (box generator or Gmsh file, made on rank 0 only), METIS partition, P_k space and the
-// assembled ContactQP.
+/// \file
+/// From a validated "Problem" parameter list to the distributed discrete problem: mesh
+/// (box generator or Gmsh file, made on rank 0 only), METIS partition, P_k space and the
+/// assembled ContactQP.
 #include <memory>
 #include <string>
 
@@ -14,6 +15,8 @@ namespace signorini {
 
 class DistributedSpace;
 
+/// A distributed problem ready to solve: the QP and what output needs (the definition and
+/// the space). Move-only; owns the space, shares the QP's Tpetra objects.
 struct AssembledProblem {
   AssembledProblem();
   AssembledProblem(AssembledProblem&&) noexcept;
@@ -21,17 +24,18 @@ struct AssembledProblem {
   ~AssembledProblem();
 
   ProblemDefinition definition;
-  // This rank's mesh and P_k space with their global numbering (for output and the pressure).
+  /// This rank's mesh and P_k space with their global numbering (for output and the pressure).
   std::unique_ptr<DistributedSpace> space;
   ContactQP qp;
-  double setupSeconds = 0, assemblySeconds = 0;  // max over ranks
-  // Rank 0's peak resident set during mesh and space, above its size before them (METIS'
-  // and the hash tables' transient buffers included): the serial phase's real cost when it
-  // is the process' largest allocation so far, as in the application.
+  double setupSeconds = 0, assemblySeconds = 0;  ///< max over ranks
+  /// Rank 0's peak resident set during mesh and space, above its size before them (METIS'
+  /// and the hash tables' transient buffers included): the serial phase's real cost when it
+  /// is the process' largest allocation so far, as in the application.
   double serialMeshPeakMiB = 0;
 };
 
-// `baseDirectory` resolves a relative "mesh: file".
+/// Builds the problem a "Problem" list describes; `baseDirectory` resolves a relative
+/// "mesh: file". Collective; throws InputError naming the parameter or file at fault.
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                               const std::string& baseDirectory = ".");
 

@@ -1,7 +1,8 @@
 #pragma once
-// The discrete frictionless contact problem, the interface between problem assembly and the
-// interior point solvers (and where library users hand over their own problem):
-//     minimise J(v) = 1/2 v^T Q v - b^T v   subject to   A v <= d.
+/// \file
+/// The discrete frictionless contact problem, the interface between problem assembly and the
+/// interior point solvers (and where library users hand over their own problem):
+///     minimise J(v) = 1/2 v^T Q v - b^T v   subject to   A v <= d.
 #include <memory>
 
 #include "signorini/core/TpetraTypes.hpp"
@@ -9,17 +10,21 @@
 
 namespace signorini {
 
+/// The QP's data as distributed Tpetra objects, shared (reference-counted) with the caller:
+/// the solver keeps them for the duration of a solve and never changes them. Units are the
+/// caller's: Q and b in force per displacement and force, d in displacement; the multipliers
+/// of the solution are then forces (nodal constraints) or pressures (weighted gaps).
 struct ContactQP {
-  RCP<const Operator> Q;               // symmetric positive definite; a CrsMatrix enables AMG
-  RCP<const Vector> b;                 // on Q's domain map
-  RCP<const CrsMatrix> A;              // m x n: range map = constraints, domain map = Q's domain map
-  RCP<const Vector> d;                 // on A's range map
-  RCP<const MultiVector> nullspace;    // optional: rigid body modes on Q's domain map (for MueLu)
-  RCP<const MultiVector> coordinates;  // optional: node coordinates on a node map (for MueLu)
-  int blockSize = 1;                   // unknowns per node (dof = blockSize * node + component)
-  std::shared_ptr<const GeometricGrid> grid;  // optional: the mesh's P1 grid (geometric multigrid)
+  RCP<const Operator> Q;               ///< symmetric positive definite; a CrsMatrix enables AMG
+  RCP<const Vector> b;                 ///< on Q's domain map
+  RCP<const CrsMatrix> A;              ///< m x n: range map = constraints, domain map = Q's domain map
+  RCP<const Vector> d;                 ///< on A's range map
+  RCP<const MultiVector> nullspace;    ///< optional: rigid body modes on Q's domain map (for MueLu)
+  RCP<const MultiVector> coordinates;  ///< optional: node coordinates on a node map (for MueLu)
+  int blockSize = 1;                   ///< unknowns per node (dof = blockSize * node + component)
+  std::shared_ptr<const GeometricGrid> grid;  ///< optional: the mesh's P1 grid (geometric multigrid)
 
-  // Q as an assembled matrix, or null when Q is only an operator.
+  /// Q as an assembled matrix, or null when Q is only an operator.
   RCP<const CrsMatrix> Qmatrix() const;
 };
 

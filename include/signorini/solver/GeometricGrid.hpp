@@ -1,8 +1,9 @@
 #pragma once
-// What the geometric multigrid needs of a mesh: a P1 simplex grid whose vertices are nodes
-// of the fine space, which simplex holds a point and its P1 weights there, and the next
-// coarser grid. The problem layer fills it in (a box mesh's grids are BoxGrid); the solver
-// sees no mesh. Library users whose meshes are nested refinements can implement it.
+/// \file
+/// What the geometric multigrid needs of a mesh: a P1 simplex grid whose vertices are nodes
+/// of the fine space, which simplex holds a point and its P1 weights there, and the next
+/// coarser grid. The problem layer fills it in (a box mesh's grids are BoxGrid); the solver
+/// sees no mesh. Library users whose meshes are nested refinements can implement it.
 #include <memory>
 #include <string>
 
@@ -14,16 +15,16 @@ class GeometricGrid {
 
   virtual int dimension() const = 0;
   virtual long long numVertices() const = 0;
-  // The coordinates (dimension() values) of a vertex, 0 <= vertex < numVertices().
+  /// The coordinates (dimension() values) of a vertex, 0 <= vertex < numVertices().
   virtual void vertexCoordinates(long long vertex, double* x) const = 0;
-  // The vertex at x (to a tolerance far below the grid's spacing), or -1.
+  /// The vertex at x (to a tolerance far below the grid's spacing), or -1.
   virtual long long vertexAt(const double* x) const = 0;
-  // The dimension() + 1 vertices of a simplex that holds x (a point outside the grid is first
-  // moved onto it) and their P1 basis functions at x: weights >= 0 that sum to 1.
+  /// The dimension() + 1 vertices of a simplex that holds x (a point outside the grid is first
+  /// moved onto it) and their P1 basis functions at x: weights >= 0 that sum to 1.
   virtual void interpolation(const double* x, long long* vertices, double* weights) const = 0;
-  // The next coarser grid, whose vertices are vertices of this one, or null.
+  /// The next coarser grid, whose vertices are vertices of this one, or null.
   virtual std::shared_ptr<const GeometricGrid> coarser() const = 0;
-  // For messages, e.g. "32 x 32 box grid".
+  /// For messages, e.g. "32 x 32 box grid".
   virtual std::string description() const = 0;
 };
 

@@ -1,6 +1,7 @@
 #pragma once
-// Observers of an interior point solve, kept out of the algorithm (Ginkgo's loggers):
-// the solver reports each Newton step; what is printed or stored is the observer's choice.
+/// \file
+/// Observers of an interior point solve, kept out of the algorithm (Ginkgo's loggers):
+/// the solver reports each Newton step; what is printed or stored is the observer's choice.
 #include <ostream>
 #include <string>
 
@@ -8,6 +9,8 @@
 
 namespace signorini {
 
+/// Receives the solve's progress on every rank (the data are the same on all of them); the
+/// default methods do nothing. Called synchronously from the solve: keep it cheap.
 class IterationObserver {
  public:
   virtual ~IterationObserver() = default;
@@ -16,7 +19,7 @@ class IterationObserver {
   virtual void onFinish(const SolveResult& result) { (void)result; }
 };
 
-// The iteration log: one fixed-column line per Newton step, on rank 0 only, flushed as it goes.
+/// The iteration log: one fixed-column line per Newton step, on rank 0 only, flushed as it goes.
 class IterationLog : public IterationObserver {
  public:
   IterationLog(std::ostream& out, bool isRankZero) : out_(out), print_(isRankZero) {}

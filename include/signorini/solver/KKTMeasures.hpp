@@ -1,12 +1,13 @@
 #pragma once
-// The optimality measures of min 1/2 v^T Q v - b^T v s.t. c = A v - d <= 0 with multipliers
-// lambda <= 0 (the paper's sign), absolute and relative:
-//   stationarity       ||Q v - b - A^T lambda||          / max(||b||, ||A^T lambda||)
-//   complementarity    max_i |lambda_i c_i|, relative: m max_i |lambda_i c_i| (a bound of the
-//                      duality gap, so of the error in J) / max(|b^T v|, v^T Q v)
-//   primal feasibility max(0, max_i c_i)                  / max(||v||_inf, ||d||_inf)
-//   dual feasibility   max(0, max_i lambda_i)             / ||lambda||_inf
-// (a zero scale counts as 1).
+/// \file
+/// The optimality measures of min 1/2 v^T Q v - b^T v s.t. c = A v - d <= 0 with multipliers
+/// lambda <= 0 (the paper's sign), absolute and relative:
+///   stationarity       ||Q v - b - A^T lambda||          / max(||b||, ||A^T lambda||)
+///   complementarity    max_i |lambda_i c_i|, relative: m max_i |lambda_i c_i| (a bound of the
+///                      duality gap, so of the error in J) / max(|b^T v|, v^T Q v)
+///   primal feasibility max(0, max_i c_i)                  / max(||v||_inf, ||d||_inf)
+///   dual feasibility   max(0, max_i lambda_i)             / ||lambda||_inf
+/// (a zero scale counts as 1).
 #include <cmath>
 
 #include <cmath>
@@ -17,35 +18,35 @@
 namespace signorini {
 
 struct KKTMeasures {
-  double stationarity = 0, complementarity = 0, primalFeasibility = 0, dualFeasibility = 0;  // relative
+  double stationarity = 0, complementarity = 0, primalFeasibility = 0, dualFeasibility = 0;  ///< relative
   double stationarityAbs = 0, complementarityAbs = 0, primalFeasibilityAbs = 0, dualFeasibilityAbs = 0;
 
-  double worst() const;  // largest relative measure
+  double worst() const;  ///< largest relative measure
 };
 
 KKTMeasures kktMeasures(const ContactQP& qp, const Vector& v, const Vector& lambda);
 
-// Which constraints are active: the multiplier is large against a force scale
-// (max(||b||_inf, ||lambda||_inf)) compared with the slack against a displacement scale
-// (max(||v||_inf, ||d||_inf)). Each row i of A is first normalised by its 2-norm r_i (the
-// multiplier becomes lambda_i r_i, the slack s_i / r_i), so that rows in other units than a
-// displacement, such as weighted gaps, are judged alike; node-wise rows -n.u <= g have r_i = 1.
+/// Which constraints are active: the multiplier is large against a force scale
+/// (max(||b||_inf, ||lambda||_inf)) compared with the slack against a displacement scale
+/// (max(||v||_inf, ||d||_inf)). Each row i of A is first normalised by its 2-norm r_i (the
+/// multiplier becomes lambda_i r_i, the slack s_i / r_i), so that rows in other units than a
+/// displacement, such as weighted gaps, are judged alike; node-wise rows -n.u <= g have r_i = 1.
 class ActiveSetCriterion {
  public:
-  // Collective.
+  /// Collective.
   ActiveSetCriterion(const ContactQP& qp, const Vector& v, const Vector& lambda);
-  // Constraint i (local index on A's range map) with multiplier lambda and slack d_i - A_i v.
+  /// Constraint i (local index on A's range map) with multiplier lambda and slack d_i - A_i v.
   bool isActive(LocalOrdinal i, double lambda, double slack) const {
     const double r = rowNorm_[i];
     return std::abs(lambda * r) * displacementScale_ > std::abs(slack / r) * forceScale_;
   }
 
  private:
-  std::vector<double> rowNorm_;  // per local constraint, 1 for an empty row
+  std::vector<double> rowNorm_;  ///< per local constraint, 1 for an empty row
   double forceScale_ = 1, displacementScale_ = 1;
 };
 
-// 1 on the constraints ActiveSetCriterion calls active at (v, lambda), 0 elsewhere, on A's range map.
+/// 1 on the constraints ActiveSetCriterion calls active at (v, lambda), 0 elsewhere, on A's range map.
 RCP<Vector> activeIndicator(const ContactQP& qp, const Vector& v, const Vector& lambda);
 
 }  // namespace signorini

@@ -1,6 +1,7 @@
 #pragma once
-// What an interior point solve returns: the solution, its KKT measures, the counters of the
-// paper's Table 2 and a per-Newton-step history (the paper's Figure 2 and more).
+/// \file
+/// What an interior point solve returns: the solution, its KKT measures, the counters of the
+/// paper's Table 2 and a per-Newton-step history (the paper's Figure 2 and more).
 #include <string>
 #include <vector>
 
@@ -13,35 +14,37 @@ enum class SolveStatus { Converged, IterationLimit, LineSearchFailure, KrylovFai
 
 const char* toString(SolveStatus status);
 
-// One Newton step.
+/// One Newton step.
 struct NewtonStepRecord {
-  int outer = 0;             // main iteration
-  int inner = 0;             // inner (Newton) iteration within it; 0 for primal-dual
-  double mu = 0;             // barrier parameter of the step
-  double objective = 0;      // J(v) after the step
-  KKTMeasures kkt;           // after the step
-  double step = 0;           // step length taken
-  int krylovIterations = 0;  // of this step's solve(s)
-  double seconds = 0;        // wall time since the start of the solve
+  int outer = 0;             ///< main iteration
+  int inner = 0;             ///< inner (Newton) iteration within it; 0 for primal-dual
+  double mu = 0;             ///< barrier parameter of the step
+  double objective = 0;      ///< J(v) after the step
+  KKTMeasures kkt;           ///< after the step
+  double step = 0;           ///< step length taken
+  int krylovIterations = 0;  ///< of this step's solve(s)
+  double seconds = 0;        ///< wall time since the start of the solve
 };
 
+/// The outcome of InteriorPointSolver::solve, the same on every rank but for the local
+/// entries of v and lambda.
 struct SolveResult {
   SolveStatus status = SolveStatus::IterationLimit;
-  std::string message;           // what happened and, on failure, what to change
-  RCP<Vector> v;                 // displacement
-  RCP<Vector> lambda;            // multipliers, paper's sign: lambda <= 0
-  double objective = 0;          // J(v)
+  std::string message;           ///< what happened and, on failure, what to change
+  RCP<Vector> v;                 ///< displacement
+  RCP<Vector> lambda;            ///< multipliers, paper's sign: lambda <= 0
+  double objective = 0;          ///< J(v)
   KKTMeasures kkt;
   long long activeConstraints = 0;
 
-  int outerIterations = 0;       // the paper's "it"
-  int newtonSteps = 0;           // Newton systems solved
-  int gradientEvaluations = 0;   // the paper's "ngr"
-  int functionEvaluations = 0;   // the paper's "nfc"
+  int outerIterations = 0;       ///< the paper's "it"
+  int newtonSteps = 0;           ///< Newton systems solved
+  int gradientEvaluations = 0;   ///< the paper's "ngr"
+  int functionEvaluations = 0;   ///< the paper's "nfc"
   long long krylovIterations = 0;
   int maxKrylovPerNewton = 0;
-  int preconditionerSetups = 0;  // AMG hierarchies built
-  std::vector<int> innerIterations;  // per main iteration (the paper's Figure 2)
+  int preconditionerSetups = 0;  ///< AMG hierarchies built
+  std::vector<int> innerIterations;  ///< per main iteration (the paper's Figure 2)
   std::vector<NewtonStepRecord> history;
   double seconds = 0;
 
