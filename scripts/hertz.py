@@ -156,6 +156,7 @@ def main():
     results["rows"].sort(key=lambda r: (order.index(r["example"]), r["degree"], -r["h"],
                                         VARIANTS.index((r["formulation"], r["recovery"]))))
     add_orders(results["rows"])
+    results["profiles"] = [thin(p) for p in results["profiles"]]
     with open(args.out + ".json", "w") as f:
         json.dump(results, f, indent=1)
     write_table(results, args.out + ".md")
@@ -238,6 +239,14 @@ def profile(dim, samples, center, a, p0):
     r = np.abs(samples["x"] - center[0]) if dim == 2 else np.hypot(samples["x"] - center[0], samples["y"] - center[1])
     keep = r < 1.5 * a
     return (r[keep] / a).tolist(), (samples["pressure"][keep] / p0).tolist()
+
+
+def thin(profile, points=1500):
+    """A profile with at most `points` samples (every k-th, in the order sampled), each value
+    to 5 significant digits: enough for the plot, small enough to keep in the repository."""
+    stride = max(1, -(-len(profile["r"]) // points))
+    return {**profile, "r": [float("%.5g" % x) for x in profile["r"][::stride]],
+            "p": [float("%.5g" % x) for x in profile["p"][::stride]]}
 
 
 def add_orders(rows):
