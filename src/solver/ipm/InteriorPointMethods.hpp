@@ -23,6 +23,9 @@ SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p
                             IterationObserver& observer);
 SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
                                IterationObserver& observer);
+// No constraints (m = 0): one Krylov solve of Q v = b to the KKT tolerance, whichever method.
+SolveResult solveUnconstrained(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
+                               IterationObserver& observer);
 
 // Largest alpha in (0, inf] with x + alpha dx >= 0, over all ranks (inf if dx >= 0).
 double maxStepToBoundary(const Vector& x, const Vector& dx);

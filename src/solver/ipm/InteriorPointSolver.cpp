@@ -116,6 +116,8 @@ SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initia
                                        IterationObserver* observer) const {
   IterationObserver silent;
   IterationObserver& obs = observer ? *observer : silent;
+  if (qp.A->getRangeMap()->getGlobalNumElements() == 0)
+    return detail::solveUnconstrained(qp, params_, initialGuess, obs);
   if (choice<Method>(params_, "method") == Method::Primal)
     return detail::solvePrimalBarrier(qp, params_, initialGuess, obs);
   return detail::solvePrimalDual(qp, params_, initialGuess, obs);

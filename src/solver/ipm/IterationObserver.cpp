@@ -18,7 +18,7 @@ const char* toString(SolveStatus status) {
 void IterationLog::onStart(const std::string& method, long long n, long long m) {
   if (!print_) return;
   char line[256];
-  std::snprintf(line, sizeof line, "Interior point method: %s, n = %lld, m = %lld\n", method.c_str(), n, m);
+  std::snprintf(line, sizeof line, "Method: %s, n = %lld, m = %lld\n", method.c_str(), n, m);
   out_ << line;
   std::snprintf(line, sizeof line, "%5s %5s %10s %16s %9s %9s %9s %9s %7s %6s %9s\n", "it", "inner", "mu",
                 "objective", "stat", "compl", "pfeas", "dfeas", "step", "krylov", "time[s]");

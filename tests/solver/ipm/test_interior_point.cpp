@@ -284,4 +284,25 @@ TEST(InteriorPoint, ConvergedMessageNamesTheTolerance) {
   }
 }
 
+// Without a contact boundary (m = 0) the QP is Q v = b: one Krylov solve, whichever method,
+// matching an independent CG + MueLu solve of the same system.
+TEST(InteriorPoint, NoConstraintsIsOneLinearSolve) {
+  Teuchos::ParameterList problem = shippedProblem("paper/J");
+  problem.remove("Contact");
+  const AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+  ASSERT_EQ(p.qp.A->getRangeMap()->getGlobalNumElements(), 0u);
+  Vector reference(p.qp.Q->getDomainMap());
+  ASSERT_GT(solveLinear(p.qp, reference, 1e-12 * p.qp.b->norm2()), 0);
+  for (const char* name : {"primal-dual", "primal"}) {
+    const SolveResult r = InteriorPointSolver(method(name)).solve(p.qp);
+    ASSERT_TRUE(r.converged()) << name << ": " << r.message;
+    EXPECT_EQ(r.newtonSteps, 1) << name;
+    EXPECT_EQ(r.outerIterations, 0) << name;
+    EXPECT_LE(r.kkt.stationarity, 1e-8) << name;
+    Vector difference(*r.v, Teuchos::Copy);
+    difference.update(-1.0, reference, 1.0);
+    EXPECT_LT(difference.normInf(), 1e-6 * reference.normInf()) << name;
+  }
+}
+
 }  // namespace
