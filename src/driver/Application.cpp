@@ -9,6 +9,7 @@
 #include <fstream>
 #include <optional>
 #include <sstream>
+#include <system_error>
 
 #include <MatrixMarket_Tpetra.hpp>
 #include <Teuchos_CommHelpers.hpp>
@@ -24,6 +25,7 @@
 #include "assembly/ElasticityAssembler.hpp"
 #include "core/Collectives.hpp"
 #include "core/ParameterValidation.hpp"
+#include "core/RootTask.hpp"
 #include "io/RunSummary.hpp"
 #include "io/XmlEscape.hpp"
 #include "signorini/assembly/ContactPressure.hpp"
@@ -260,6 +262,27 @@ void applyOverride(Teuchos::ParameterList& list, const std::string& assignment,
   target->setEntry(name, parseLike(model, text, path));
 }
 
+namespace {
+
+// Creates the output directory on rank 0 and writes a probe file in it, so that a directory
+// that cannot hold the results stops the run before the mesh is built. Collective.
+void checkOutputDirectory(const std::string& directory, const Comm& comm) {
+  detail::runOnRoot(comm, [&] {
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    const std::string probe = directory + "/.signorini-write-test";
+    if (!error && std::ofstream(probe).good()) {
+      std::filesystem::remove(probe, error);
+      return;
+    }
+    const std::string what = error ? "created (" + error.message() + ")" : "written";
+    throw InputError("output directory \"" + directory + "\" cannot be " + what +
+                     "; choose another with --output or Output/directory");
+  });
+}
+
+}  // namespace
+
 SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, std::ostream& out) {
   Teuchos::Time total("total");
   total.start(true);
@@ -268,6 +291,8 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   Teuchos::ParameterList user = readParameterFile(cl.input, *comm);
   for (const std::string& assignment : cl.overrides) applyOverride(user, assignment, valid);
   const Teuchos::ParameterList params = validatedParameters(user, valid, "");
+  const std::string directory = cl.output.empty() ? params.sublist("Output").get<std::string>("directory") : cl.output;
+  checkOutputDirectory(directory, *comm);
 
   const std::string baseDirectory = std::filesystem::path(cl.input).parent_path().string();
   AssembledProblem problem = buildProblem(user.sublist("Problem"), comm, baseDirectory.empty() ? "." : baseDirectory);
@@ -297,7 +322,6 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   solveTime.stop();
 
   const Teuchos::ParameterList& output = params.sublist("Output");
-  const std::string directory = cl.output.empty() ? output.get<std::string>("directory") : cl.output;
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: output"));
     const RCP<const Vector> active = activeIndicator(problem.qp, *result.v, *result.lambda);

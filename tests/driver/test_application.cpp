@@ -170,6 +170,22 @@ TEST(Application, MissingInputFileFailsOnEveryRank) {
   EXPECT_NE(message.find("/nonexistent/problem.xml"), std::string::npos);
 }
 
+// An output directory that cannot be created stops the run before the problem is built.
+TEST(Application, UnwritableOutputDirectoryStopsTheRunBeforeTheSolve) {
+  auto comm = Tpetra::getDefaultComm();
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  const std::string file = std::string(binary ? binary : "/tmp") + "/app-test-file-np" + std::to_string(comm->getSize());
+  if (comm->getRank() == 0) std::ofstream(file) << "a file, not a directory\n";
+  comm->barrier();
+  CommandLine cl;
+  cl.input = sourceDir() + "/xml/paper/M.xml";
+  cl.output = file + "/out";
+  std::ostringstream log;
+  const std::string message = inputErrorOf([&] { runApplication(cl, comm, log); });
+  EXPECT_NE(message.find("output directory \"" + cl.output + "\" cannot be created"), std::string::npos) << message;
+  EXPECT_EQ(log.str(), "");  // nothing built, nothing solved
+}
+
 // A whole run of problem M: outputs exist and summary.json carries the solver's counters.
 TEST(Application, RunWritesSummaryHistoryAndQp) {
   auto comm = Tpetra::getDefaultComm();
