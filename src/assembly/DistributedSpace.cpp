@@ -10,6 +10,7 @@
 
 #include "assembly/GlobalPartition.hpp"
 #include "assembly/MeshPart.hpp"
+#include "core/Collectives.hpp"
 #include "core/RootTask.hpp"
 #include "signorini/core/Error.hpp"
 
@@ -63,15 +64,14 @@ DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, std::shared_ptr<
 
   mesh_ = std::make_shared<const SimplexMesh>(std::move(part.mesh));
   // Rank 0 numbered the part's nodes as this space does; a mismatch is a bug, not an input error.
-  int consistent = 1, allConsistent = 0;
+  bool consistent = true;
   try {
     space_ = std::make_unique<LagrangeSpace>(*mesh_, degree, part.nodeCoordinates);
     consistent = space_->numNodes() == static_cast<long long>(part.nodeIds.size());
   } catch (const Error&) {
-    consistent = 0;
+    consistent = false;
   }
-  Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MIN, 1, &consistent, &allConsistent);
-  if (!allConsistent) throw Error("distributed space: a rank's space does not match its part");
+  if (!onEveryRank(*comm_, consistent)) throw Error("distributed space: a rank's space does not match its part");
   nodeId_ = std::move(part.nodeIds);
   nodeOwner_ = std::move(part.nodeOwners);
   globalCells_ = std::move(part.globalCells);

@@ -10,6 +10,7 @@
 #include <Tpetra_Vector.hpp>
 #include <Teuchos_CommHelpers.hpp>
 
+#include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
@@ -64,9 +65,7 @@ bool BarrierHessianOperator::findPositionsInQPattern(const CrsMatrix& Q) const {
       }
     }
   }
-  int local = found ? 1 : 0, global = 0;
-  Teuchos::reduceAll(*Q.getComm(), Teuchos::REDUCE_MIN, local, Teuchos::outArg(global));
-  return global == 1;
+  return onEveryRank(*Q.getComm(), found);
 }
 
 RCP<CrsMatrix> BarrierHessianOperator::assemble() const { return assemble(*D_); }

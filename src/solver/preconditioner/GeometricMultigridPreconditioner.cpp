@@ -5,7 +5,6 @@
 #include <vector>
 
 #include <Ifpack2_Chebyshev.hpp>
-#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_LAPACK.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <TpetraExt_TripleMatrixMultiply.hpp>
@@ -15,6 +14,7 @@
 #include <Tpetra_RowMatrixTransposer.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/solver/GeometricGrid.hpp"
 #include "solver/preconditioner/RigidBodyModes.hpp"
@@ -207,10 +207,7 @@ void updatedStart(const CrsMatrix& change, Vector& vector) {
 // two share one graph (BarrierHessianOperator assembles every H on Q's): between Newton
 // steps only A^T D A on the contact DOFs changes. Null, on every rank, otherwise. Collective.
 RCP<CrsMatrix> changedEntries(const CrsMatrix& previous, const CrsMatrix& next) {
-  int sameGraph = previous.getCrsGraph() == next.getCrsGraph() ? 1 : 0;
-  int everywhere = 0;
-  Teuchos::reduceAll(*next.getComm(), Teuchos::REDUCE_MIN, 1, &sameGraph, &everywhere);
-  if (!everywhere) return Teuchos::null;
+  if (!onEveryRank(*next.getComm(), previous.getCrsGraph() == next.getCrsGraph())) return Teuchos::null;
   const auto before = previous.getLocalMatrixHost(), after = next.getLocalMatrixHost();
   const LocalOrdinal rows = static_cast<LocalOrdinal>(after.numRows());
   Teuchos::Array<std::size_t> counts(rows, 0);  // Tpetra 13.2 matrices cannot grow past these
@@ -241,7 +238,7 @@ RCP<CrsMatrix> changedEntries(const CrsMatrix& previous, const CrsMatrix& next) 
 // not (A is then partly updated: the caller rebuilds it). Collective.
 bool addInPattern(CrsMatrix& A, const CrsMatrix& change) {
   A.resumeFill();
-  int fits = 1;
+  bool fits = true;
   for (LocalOrdinal row = 0; row < static_cast<LocalOrdinal>(change.getNodeNumRows()); ++row) {
     typename CrsMatrix::local_inds_host_view_type cols;
     typename CrsMatrix::values_host_view_type vals;
@@ -256,12 +253,10 @@ bool addInPattern(CrsMatrix& A, const CrsMatrix& change) {
     const LocalOrdinal added = A.sumIntoGlobalValues(change.getRowMap()->getGlobalElement(row),
                                                      Teuchos::ArrayView<const GlobalOrdinal>(globalCols),
                                                      Teuchos::ArrayView<const double>(rowValues));
-    if (added != static_cast<LocalOrdinal>(globalCols.size())) fits = 0;
+    if (added != static_cast<LocalOrdinal>(globalCols.size())) fits = false;
   }
   A.fillComplete(A.getDomainMap(), A.getRangeMap());
-  int everywhere = 0;
-  Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_MIN, 1, &fits, &everywhere);
-  return everywhere == 1;
+  return onEveryRank(*A.getComm(), fits);
 }
 
 }  // namespace
