@@ -12,6 +12,7 @@
 #include "core/Collectives.hpp"
 #include "core/ParameterValidation.hpp"
 #include "signorini/core/Error.hpp"
+#include "solver/RigidBodySupport.hpp"
 #include "solver/ipm/InteriorPointMethods.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
 
@@ -116,6 +117,7 @@ SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initia
                                        IterationObserver* observer) const {
   IterationObserver silent;
   IterationObserver& obs = observer ? *observer : silent;
+  checkRigidBodyMotionsHeld(qp);
   if (qp.A->getRangeMap()->getGlobalNumElements() == 0)
     return detail::solveUnconstrained(qp, params_, initialGuess, obs);
   if (choice<Method>(params_, "method") == Method::Primal)

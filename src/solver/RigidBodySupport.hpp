@@ -1,0 +1,17 @@
+#pragma once
+// Whether a contact QP holds its body. A rigid body motion r (a combination of the QP's
+// rigid body modes) with Q r = 0 is one no prescribed displacement removes; frictionless
+// contact can stop it only in the obstacle's direction. If no constraint row moves under r,
+// Q + AᵀDA is singular; if the load pulls along r and no constraint resists (A r <= 0,
+// bᵀr > 0), the energy has no minimum. Either way the solver would spend its Krylov limit
+// before failing, so the problem is refused before the solve, with the motion named.
+#include "signorini/solver/ContactQP.hpp"
+
+namespace signorini {
+
+// Throws an InputError (on every rank) naming the first rigid body motion that nothing
+// holds or that the load pulls free. Does nothing without rigid body modes (qp.nullspace).
+// Collective; costs one application of Q and of A to the modes.
+void checkRigidBodyMotionsHeld(const ContactQP& qp);
+
+}  // namespace signorini

@@ -1,0 +1,99 @@
+// A body that the boundary conditions do not hold is refused before the solve, with the
+// rigid body motion named; a body held by its contact alone is solved.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <Tpetra_Core.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include "signorini/core/Error.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "solver/RigidBodySupport.hpp"
+#include "support/TestProblems.hpp"
+
+namespace {
+
+using namespace signorini;
+using signorini::testing::boxProblem;
+using signorini::testing::contactBoxProblem;
+
+std::string checkMessage(const ContactQP& qp) {
+  try {
+    checkRigidBodyMotionsHeld(qp);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string checkMessage(const Teuchos::ParameterList& problem) {
+  return checkMessage(buildProblem(problem, Tpetra::getDefaultComm()).qp);
+}
+
+// A 2D box whose bottom is in contact and whose sides may slide vertically only (u_x = 0 on
+// xmin and xmax): only the vertical translation is left, and the contact stops it downwards.
+Teuchos::ParameterList rollerBox(const char* topTraction) {
+  Teuchos::ParameterList problem = boxProblem(2, 4, 1);
+  for (const char* side : {"xmin", "xmax"}) problem.sublist("Dirichlet").sublist(side).set("displacement: x", "0");
+  problem.sublist("Traction").sublist("ymax").set("traction: y", topTraction);
+  problem.sublist("Contact").set("boundary", "ymin");
+  return problem;
+}
+
+TEST(RigidBodySupport, ClampedBodyPasses) {
+  for (int dim : {2, 3}) EXPECT_EQ(checkMessage(contactBoxProblem(dim, 3)), "") << "dim " << dim;
+}
+
+TEST(RigidBodySupport, FreeBodyWithoutContactIsRefused) {
+  for (int dim : {2, 3}) {
+    Teuchos::ParameterList problem = boxProblem(dim, 3, 1);
+    problem.set("body force: x", "1");
+    EXPECT_NE(checkMessage(problem).find("the body is free to move by a"), std::string::npos) << "dim " << dim;
+  }
+}
+
+TEST(RigidBodySupport, SlidingAlongTheObstacleIsNamed) {
+  // Only the vertical displacement of the top is prescribed: nothing stops a slide along x.
+  Teuchos::ParameterList problem = contactBoxProblem(2, 3);
+  problem.sublist("Dirichlet").sublist("ymax").remove("displacement: x");
+  const std::string message = checkMessage(problem);
+  EXPECT_NE(message.find("free to move by a translation along (1, 0)"), std::string::npos) << message;
+  EXPECT_NE(message.find("Problem/Dirichlet"), std::string::npos) << message;
+}
+
+TEST(RigidBodySupport, BodyPressedOntoTheObstacleIsHeldByTheContact) {
+  EXPECT_EQ(checkMessage(rollerBox("-1")), "");
+  Teuchos::ParameterList params;
+  const SolveResult r = InteriorPointSolver(params).solve(buildProblem(rollerBox("-1"), Tpetra::getDefaultComm()).qp);
+  EXPECT_TRUE(r.converged()) << r.message;
+}
+
+TEST(RigidBodySupport, LoadPullingTheBodyOffIsRefusedByTheSolver) {
+  const ContactQP qp = buildProblem(rollerBox("1"), Tpetra::getDefaultComm()).qp;
+  try {
+    InteriorPointSolver(Teuchos::ParameterList()).solve(qp);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("pulls the body off the obstacle by a translation along (0, 1)"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(RigidBodySupport, RotationIsNamedByItsAxis) {
+  // A free 3D body whose rigid body modes are the rotation about z alone.
+  ContactQP qp = buildProblem(boxProblem(3, 2, 1), Tpetra::getDefaultComm()).qp;
+  const int aboutZ = 5;
+  qp.nullspace = qp.nullspace->subCopy(Teuchos::tuple<std::size_t>(aboutZ));
+  const std::string message = checkMessage(qp);
+  EXPECT_NE(message.find("free to move by a rotation about an axis along (0, 0, 1)"), std::string::npos) << message;
+}
+
+TEST(RigidBodySupport, QpWithoutModesIsNotChecked) {
+  ContactQP qp = buildProblem(boxProblem(2, 2, 1), Tpetra::getDefaultComm()).qp;
+  qp.nullspace = Teuchos::null;
+  EXPECT_EQ(checkMessage(qp), "");
+}
+
+}  // namespace
