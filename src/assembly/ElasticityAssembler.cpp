@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <sstream>
 
 #include <Kokkos_DualView.hpp>
 #include <Teuchos_CommHelpers.hpp>
@@ -14,6 +15,7 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/Collectives.hpp"
 #include "fe/ElasticityElement.hpp"
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/RigidBodyModes.hpp"
@@ -118,6 +120,51 @@ void eliminatePrescribed(const std::vector<char>& fixed, const std::vector<doubl
     Fe[j] = 0.0;
     for (int i = 0; i < n; ++i) Ke[i * n + j] = Ke[j * n + i] = 0.0;
   }
+}
+
+// A contact node whose displacement in the obstacle direction is prescribed cannot move: its
+// constraint is harmless while the prescribed displacement leaves the gap g + n_o . u_D open,
+// and contradicts the prescription where it closes or crosses it (the multiplier would move
+// a prescribed DOF). Those are refused, on every rank, with the first such node.
+void checkPrescribedContactNodes(const DistributedSpace& ds, const ProblemDefinition& problem,
+                                 const DirichletData& dirichlet, const std::vector<long long>& contactNodes) {
+  const int dim = ds.dim();
+  long long closed = 0;
+  GlobalOrdinal first = std::numeric_limits<GlobalOrdinal>::max();
+  double where[4] = {0, 0, 0, 0};  // coordinates and gap of this rank's first closed node
+  for (long long node : contactNodes) {
+    bool prescribed = true;
+    double normalDisplacement = 0;
+    for (int c = 0; c < dim; ++c) {
+      if (problem.obstacleDirection[c] == 0.0) continue;
+      prescribed = prescribed && dirichlet.fixed[dim * node + c];
+      normalDisplacement += problem.obstacleDirection[c] * dirichlet.value[dim * node + c];
+    }
+    const double* x = &ds.space().nodeCoordinates()[dim * node];
+    const double gap = prescribed ? (*problem.gap)(x, dim) + normalDisplacement : 1.0;
+    if (!prescribed || gap > 0) continue;
+    ++closed;
+    if (ds.globalNode(node) < first) {
+      first = ds.globalNode(node);
+      std::copy(x, x + dim, where);
+      where[3] = gap;
+    }
+  }
+  const Comm& comm = *ds.comm();
+  const long long total = sumOverRanks(comm, closed);
+  if (total == 0) return;
+  const GlobalOrdinal firstGlobal = minOverRanks(comm, first);
+  double located[4] = {0, 0, 0, 0}, mine[4] = {0, 0, 0, 0};
+  if (first == firstGlobal) std::copy(where, where + 4, mine);
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, mine, located);
+  std::ostringstream message;
+  message << "Problem/Contact: " << total << " node(s) of the contact boundary \"" << problem.contactBoundary
+          << "\" have their displacement towards the obstacle prescribed (Problem/Dirichlet) so that the gap "
+          << "closes or is crossed, first at (";
+  for (int c = 0; c < dim; ++c) message << (c ? ", " : "") << located[c];
+  message << "), where g + n.u = " << located[3] << ": a prescribed node cannot also be held by the contact; "
+          << "take these nodes out of one of the two boundaries, or prescribe a displacement that leaves the gap open";
+  throw InputError(message.str());
 }
 
 struct ContactConstraints {
@@ -405,6 +452,7 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   }
 
   const OwnedContactNodes contact = ownedContactNodes(ds, problem);
+  checkPrescribedContactNodes(ds, problem, dirichlet, contact.nodes);
   std::vector<GlobalOrdinal> ownedConstraints(contact.nodes.size());
   for (std::size_t k = 0; k < ownedConstraints.size(); ++k) ownedConstraints[k] = contact.first + k;
   auto constraintMap = rcp(new Map(contact.numGlobal, Teuchos::ArrayView<const GlobalOrdinal>(ownedConstraints),

@@ -271,4 +271,29 @@ TEST(ElasticityAssembler, NonFiniteExpressionsAreInputErrors) {
   EXPECT_NO_THROW(buildProblem(problem, Tpetra::getDefaultComm()));
 }
 
+// A contact node whose displacement towards the obstacle is prescribed: accepted while the
+// prescribed displacement leaves its gap open, refused (every rank, both formulations) where
+// it closes or crosses it.
+TEST(ElasticityAssembler, PrescribedContactNodesMustLeaveTheGapOpen) {
+  for (const char* formulation : {"nodal", "weighted gap"}) {
+    Teuchos::ParameterList problem = contactBoxProblem(2, 3);
+    problem.sublist("Contact").set("formulation", formulation);
+    auto& bottom = problem.sublist("Dirichlet").sublist("ymin");
+    bottom.set("displacement: y", "0.1");  // lifted off the plane: the gap opens
+    EXPECT_NO_THROW(buildProblem(problem, Tpetra::getDefaultComm())) << formulation;
+    for (const char* closing : {"0", "-0.1*(1+x)"}) {
+      bottom.set("displacement: y", closing);
+      try {
+        buildProblem(problem, Tpetra::getDefaultComm());
+        ADD_FAILURE() << formulation << ": prescribed u_y = " << closing << " on the contact boundary was accepted";
+      } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(message.find("Problem/Contact: 4 node(s) of the contact boundary \"ymin\""), std::string::npos)
+            << message;
+        EXPECT_NE(message.find(closing[0] == '0' ? "g + n.u = 0" : "g + n.u = -0."), std::string::npos) << message;
+      }
+    }
+  }
+}
+
 }  // namespace
