@@ -281,6 +281,42 @@ void checkOutputDirectory(const std::string& directory, const Comm& comm) {
   });
 }
 
+// True on every rank if the solution and the multipliers are finite everywhere.
+bool isFinite(const SolveResult& result) {
+  return !result.v.is_null() && !result.lambda.is_null() && std::isfinite(result.v->norm1()) &&
+         std::isfinite(result.lambda->norm1());
+}
+
+// The recovered contact pressure and its statistics (logged), contact.csv and the solution
+// files, as Output asks; returns the statistics (none without contact). Collective.
+std::optional<ContactStatistics> writeSolutionOutputs(const AssembledProblem& problem, const SolveResult& result,
+                                                      const Teuchos::ParameterList& output,
+                                                      const std::string& directory, std::ostream& out) {
+  const ProblemDefinition& def = problem.definition;
+  const Comm& comm = *problem.qp.b->getMap()->getComm();
+  const RCP<const Vector> active = activeIndicator(problem.qp, *result.v, *result.lambda);
+  const bool writeSolutionFiles = output.get<bool>("write solution");
+  if (problem.qp.d->getGlobalLength() == 0) {
+    if (writeSolutionFiles) writeSolution(problem, result, nullptr, directory);
+    return std::nullopt;
+  }
+  const ContactPressure recovery(*problem.space, def, problem.qp.A->getRangeMap());
+  const PressureRecovery how = choice<PressureRecovery>(output, "contact pressure");
+  const bool lumped = how == PressureRecovery::Lumped || (how == PressureRecovery::Auto && def.degree == 1);
+  const RCP<Vector> pressure =
+      lumped ? recovery.lumpedPressure(*result.lambda, *active) : recovery.pressure(*result.lambda, *active);
+  const ContactStatistics contact =
+      contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.obstacleDirection);
+  if (comm.getRank() == 0) logContact(contact, out);
+  if (output.get<bool>("write contact samples"))
+    writeContactSamples(recovery.samples(*pressure), comm, directory + "/contact.csv");
+  if (writeSolutionFiles) {
+    const ContactFields fields{recovery, *pressure, *active};
+    writeSolution(problem, result, &fields, directory);
+  }
+  return contact;
+}
+
 }  // namespace
 
 SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, std::ostream& out) {
@@ -322,30 +358,14 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   solveTime.stop();
 
   const Teuchos::ParameterList& output = params.sublist("Output");
+  const bool finite = isFinite(result);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: output"));
-    const RCP<const Vector> active = activeIndicator(problem.qp, *result.v, *result.lambda);
-    RCP<Vector> pressure = rcp(new Vector(problem.qp.A->getRangeMap()));
     std::optional<ContactStatistics> contact;
-    std::optional<ContactPressure> recovery;
-    if (m > 0) {
-      recovery.emplace(*problem.space, def, problem.qp.A->getRangeMap());
-      const PressureRecovery how = choice<PressureRecovery>(output, "contact pressure");
-      const bool lumped = how == PressureRecovery::Lumped || (how == PressureRecovery::Auto && def.degree == 1);
-      pressure = lumped ? recovery->lumpedPressure(*result.lambda, *active) : recovery->pressure(*result.lambda, *active);
-      contact = contactStatistics(*recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.obstacleDirection);
-      if (root) logContact(*contact, out);
-      if (output.get<bool>("write contact samples"))
-        writeContactSamples(recovery->samples(*pressure), *comm, directory + "/contact.csv");
-    }
-    if (output.get<bool>("write solution")) {
-      if (recovery) {
-        const ContactFields fields{*recovery, *pressure, *active};
-        writeSolution(problem, result, &fields, directory);
-      } else {
-        writeSolution(problem, result, nullptr, directory);
-      }
-    }
+    if (finite)
+      contact = writeSolutionOutputs(problem, result, output, directory, out);
+    else if (root)
+      out << "Solution not written: the solve ended in non-finite numbers (" << toString(result.status) << ")\n";
     total.stop();
     RunSummary summary;
     summary.problem = def.name;
@@ -375,7 +395,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
       if (output.get<bool>("write history")) writeHistoryCsv(result, directory + "/history.csv");
       out << "Results in " << directory << "/ (summary.json"
           << (output.get<bool>("write history") ? ", history.csv" : "")
-          << (output.get<bool>("write solution") ? ", solution.pvtu" : "") << ")\n";
+          << (finite && output.get<bool>("write solution") ? ", solution.pvtu" : "") << ")\n";
     }
   }
   Teuchos::TimeMonitor::summarize(comm.ptr(), out, false, true, false);

@@ -14,7 +14,9 @@ std::string CommandLine::usage() {
          "  --export-qp   write Q, b, A, d and the node coordinates in Matrix Market format\n"
          "  --set         override one parameter, e.g. --set \"Solver/method=primal\"\n"
          "  --defaults    print the common parameters with their defaults and documentation (XML);\n"
-         "                --defaults=all every parameter, the expert ones too\n";
+         "                --defaults=all every parameter, the expert ones too\n"
+         "exit status: 0 converged, 1 the solver did not converge (summary.json says why),\n"
+         "             2 bad input (one line names the parameter or file), 3 internal error\n";
 }
 
 CommandLine CommandLine::parse(int argc, const char* const* argv) {

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
@@ -240,3 +241,40 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
 }
 
 }  // namespace
+
+// Boundary conditions that cannot hold the body, or that contradict the contact, are bad
+// input: one message that names the cause, before any output is written.
+TEST(Application, BadPhysicsIsRefusedBeforeAnyOutput) {
+  auto comm = Tpetra::getDefaultComm();
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  const std::string dir = std::string(binary ? binary : "/tmp") + "/app-bad-physics-np" + std::to_string(comm->getSize());
+  struct Case {
+    std::vector<std::string> overrides;
+    std::string expected;
+  };
+  const Case cases[] = {
+      {{"Problem/Dirichlet/ymax/displacement: x="}, "the body is free to move by a translation along (1, 0)"},
+      {{"Problem/Dirichlet/ymax/displacement: y=", "Problem/body force: y=1"},
+       "the load pulls the body off the obstacle by a translation along (0, 1)"},
+      {{"Problem/Contact/boundary=ymax"}, "Problem/Contact: 11 node(s) of the contact boundary \"ymax\""},
+  };
+  for (const Case& c : cases) {
+    CommandLine cl;
+    cl.input = sourceDir() + "/xml/paper/M.xml";
+    cl.output = dir;
+    cl.overrides = c.overrides;
+    std::ostringstream log;
+    const std::string message = inputErrorOf([&] { runApplication(cl, comm, log); });
+    EXPECT_NE(message.find(c.expected), std::string::npos) << message;
+    for (const char* file : {"summary.json", "solution.pvtu", "history.csv"})
+      EXPECT_FALSE(std::filesystem::exists(dir + "/" + file)) << file << " after: " << message;
+  }
+  // Held by its contact alone (the top slides vertically), the body pressed down is solved.
+  CommandLine cl;
+  cl.input = sourceDir() + "/xml/paper/M.xml";
+  cl.output = dir + "/held";
+  cl.overrides = {"Problem/Dirichlet/ymax/displacement: y=", "Problem/body force: y=-1"};
+  std::ostringstream log;
+  EXPECT_TRUE(runApplication(cl, comm, log).converged()) << log.str();
+}
+
