@@ -18,6 +18,7 @@
 #include "fe/BoxGrid.hpp"
 #include "fe/BoxMesh.hpp"
 #include "fe/GmshMesh.hpp"
+#include "problem/MemoryEstimate.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/problem/ProblemParameters.hpp"
 
@@ -57,7 +58,10 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     // rank its part. A Gmsh file decides the dimension the rest of the definition is read with.
     const GmshSource gmsh = readGmshSource(problem);
     ProblemDefinition def;
-    if (gmsh.file.empty()) def = readProblemDefinition(problem);
+    if (gmsh.file.empty()) {
+      def = readProblemDefinition(problem);
+      checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree, *comm);
+    }
     std::shared_ptr<SimplexMesh> mesh;
     detail::runOnRoot(*comm, [&] {
       if (!gmsh.file.empty()) {
@@ -75,6 +79,9 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     }
     result.definition = std::move(def);
     result.space = std::make_unique<DistributedSpace>(comm, std::move(mesh), result.definition.degree);
+    if (!gmsh.file.empty())
+      checkMemoryFits(static_cast<double>(result.definition.dim) * result.space->numGlobalNodes(),
+                      result.definition.dim, result.definition.degree, *comm);
     setup.stop();
     result.serialMeshPeakMiB = std::max(0.0, peakResidentMiB() - residentBefore);
     Teuchos::broadcast(*comm, 0, 1, &result.serialMeshPeakMiB);

@@ -278,3 +278,17 @@ TEST(Application, BadPhysicsIsRefusedBeforeAnyOutput) {
   EXPECT_TRUE(runApplication(cl, comm, log).converged()) << log.str();
 }
 
+// A problem far beyond the machine's memory stops before its mesh is made, with the numbers.
+TEST(Application, ProblemThatCannotFitIsRefusedBeforeTheMesh) {
+  auto comm = Tpetra::getDefaultComm();
+  CommandLine cl;
+  cl.input = sourceDir() + "/xml/paper/M.xml";
+  cl.output = std::string(std::getenv("SIGNORINI_BINARY_DIR") ? std::getenv("SIGNORINI_BINARY_DIR") : "/tmp") +
+              "/app-too-large-np" + std::to_string(comm->getSize());
+  cl.overrides = {"Problem/mesh: cells={200000}"};
+  std::ostringstream log;
+  const std::string message = inputErrorOf([&] { runApplication(cl, comm, log); });
+  EXPECT_NE(message.find("Problem: 8e+10 unknowns (P1, 2D) need at least"), std::string::npos) << message;
+  EXPECT_NE(message.find("use fewer cells"), std::string::npos) << message;
+  EXPECT_EQ(log.str(), "");
+}
