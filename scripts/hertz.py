@@ -9,9 +9,11 @@ P = (4/3) E* sqrt(R) delta^(3/2) for several approaches delta. Writes
 bench/results/hertz.{json,md,png} and hertz-profiles.png.
 
     scripts/hertz.py [--build build] [--np 2] [--quick] [--only EXAMPLE ...] [--formulation F]
+                     [--recovery R]
 
 --only reruns the named studies and keeps the other rows of the existing JSON; --formulation
-("nodal" or "weighted gap") reruns only the rows of that contact formulation.
+("nodal" or "weighted gap") and --recovery (an Output/contact pressure choice) rerun only the
+rows of that contact formulation or pressure recovery.
 """
 import argparse
 import json
@@ -44,9 +46,15 @@ QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}, "half-dis
          "half-ball-3d": {1: 2}, "deep-block-3d": {1: 1, 2: 1}, "punch-2d": {1: 2, 2: 2}}
 # The force-approach law on the deep block: (degree, mesh size factor) and the approaches.
 FORCE_APPROACH = (2, 1.4, [0.0002, 0.0004, 0.0008])
-# (Contact/formulation, Output/contact pressure): the nodal constraints with both pressure
-# recoveries, and weighted gaps, whose multipliers are the pressure.
-VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("weighted gap", "auto")]
+# (Contact/formulation, Output/contact pressure): the nodal constraints with each pressure
+# recovery, and weighted gaps, whose multipliers are the pressure. The patch average of the
+# lumped pressure rests on HRZ weights, which suit P1 only.
+VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("nodal", "patch"), ("weighted gap", "auto")]
+P1_ONLY = {("nodal", "patch")}
+
+
+def variants(degree):
+    return [v for v in VARIANTS if degree == 1 or v not in P1_ONLY]
 
 
 def label(formulation, recovery):
@@ -133,14 +141,17 @@ def main():
     parser.add_argument("--only", nargs="+", choices=list(STUDIES), help="rerun these studies only")
     parser.add_argument("--formulation", choices=sorted({f for f, _ in VARIANTS}),
                         help="rerun the rows of this contact formulation only")
+    parser.add_argument("--recovery", choices=sorted({r for _, r in VARIANTS}),
+                        help="rerun the rows of this pressure recovery only")
     parser.add_argument("--out", default=os.path.join(ROOT, "bench", "results", "hertz"))
     args = parser.parse_args()
     results = {"provenance": {}, "rows": [], "profiles": [], "force_approach": None}
-    if args.only or args.formulation:
+    if args.only or args.formulation or args.recovery:
         with open(args.out + ".json") as f:
             results = json.load(f)
         rerun = lambda r: (not args.only or r["example"] in args.only) and (
-            not args.formulation or r["formulation"] == args.formulation)
+            not args.formulation or r["formulation"] == args.formulation) and (
+            not args.recovery or r["recovery"] == args.recovery)
         results["rows"] = [r for r in results["rows"] if not rerun(r)]
         results["profiles"] = [p for p in results["profiles"] if not rerun(p)]
     with tempfile.TemporaryDirectory() as tmp:
@@ -148,9 +159,9 @@ def main():
             rows, profiles, summary = run_study(args, example, tmp)
             results["rows"] += rows
             results["profiles"] += profiles
-            key = example + (": " + args.formulation if args.formulation else "")
+            key = example + "".join(": " + part for part in (args.formulation, args.recovery) if part)
             results["provenance"][key] = provenance(args, summary)
-            if example == "deep-block-3d" and args.formulation in (None, "nodal"):
+            if example == "deep-block-3d" and args.formulation in (None, "nodal") and args.recovery in (None, "auto"):
                 results["force_approach"] = force_approach(args, tmp)
     order = list(STUDIES)
     results["rows"].sort(key=lambda r: (order.index(r["example"]), r["degree"], -r["h"],
@@ -177,8 +188,9 @@ def run_study(args, example, tmp):
     rows, profiles = [], {}
     for degree, meshes in plan.items():
         for cells in meshes[:QUICK[example][degree]] if args.quick else meshes:
-            for formulation, recovery in VARIANTS:
-                if args.formulation and formulation != args.formulation:
+            for formulation, recovery in variants(degree):
+                if (args.formulation and formulation != args.formulation) or (
+                        args.recovery and recovery != args.recovery):
                     continue
                 summary, samples = run(args, example, degree, cells, formulation, recovery, tmp)
                 row = {"example": example, "d": dim, "degree": degree, "mesh": mesh_label(cells),
@@ -227,7 +239,8 @@ def provenance(args, summary):
                             text=True).stdout.strip()
     command = "scripts/hertz.py" + (" --quick" if args.quick else "") + (
         " --only " + " ".join(args.only) if args.only else "") + (
-        " --formulation '%s'" % args.formulation if args.formulation else "")
+        " --formulation '%s'" % args.formulation if args.formulation else "") + (
+        " --recovery " + args.recovery if args.recovery else "")
     return {"command": command, "commit": commit or "unknown",
             "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
             "host": platform.node(), "cores": os.cpu_count(), "ranks": args.np,
@@ -288,7 +301,7 @@ def plot(rows, path):
     fig, axes = plt.subplots(1, len(STUDIES), figsize=(5 * len(STUDIES), 4))
     for ax, example in zip(axes, STUDIES):
         for degree in sorted({r["degree"] for r in rows if r["example"] == example}):
-            for (formulation, recovery), style in zip(VARIANTS, ["-o", "--s", ":^"]):
+            for (formulation, recovery), style in zip(VARIANTS, ["-o", "--s", "-.d", ":^"]):
                 sel = [r for r in rows if r["example"] == example and r["degree"] == degree
                        and r["formulation"] == formulation and r["recovery"] == recovery]
                 if sel:
@@ -313,7 +326,7 @@ def plot_profiles(profiles, path):
     fig, axes = plt.subplots(1, len(hertz), figsize=(5 * len(hertz), 4))
     for ax, example in zip(axes, hertz):
         degree = max(p["degree"] for p in profiles if p["example"] == example)
-        for (formulation, recovery), marker in zip(VARIANTS, ["o", "s", "^"]):
+        for (formulation, recovery), marker in zip(VARIANTS, ["o", "s", "d", "^"]):
             for p in profiles:
                 if (p["example"], p["degree"], p["formulation"], p["recovery"]) == (example, degree, formulation,
                                                                                    recovery):

@@ -160,6 +160,10 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   scaledMass_ = rcp(new CrsMatrix(*mass_, Teuchos::Copy));
   scaledMass_->leftScale(*scaling_);
   scaledMass_->rightScale(*scaling_);
+  patchSum_ = rcp(new CrsMatrix(*mass_, Teuchos::Copy));
+  patchSum_->resumeFill();
+  patchSum_->setAllToScalar(1.0);
+  patchSum_->fillComplete(mass_->getDomainMap(), mass_->getRangeMap());
 }
 
 RCP<Vector> ContactPressure::nodalValues(const Vector& coefficients) const {
@@ -232,6 +236,40 @@ RCP<Vector> ContactPressure::lumpedPressure(const Vector& lambda, const Vector& 
   p->reciprocal(*lumpedWeights_);
   p->elementWiseMultiply(-1.0, *p, lambda, 0.0);
   p->elementWiseMultiply(1.0, *loadedNodes(active), *p, 0.0);
+  return p;
+}
+
+// P1 nodal forces oscillate from node to node in 3D, where boundary vertices differ in
+// valence, and the patch average removes that; in 2D every boundary vertex has two facets and
+// the lumped pressure is the better; HRZ weights do not suit P2/P3.
+RCP<Vector> ContactPressure::recover(PressureRecovery how, const Vector& lambda, const Vector& active) const {
+  if (how == PressureRecovery::Auto)
+    how = space_.space().degree() > 1 ? PressureRecovery::Consistent
+          : space_.dim() == 3          ? PressureRecovery::Patch
+                                       : PressureRecovery::Lumped;
+  switch (how) {
+    case PressureRecovery::Lumped:
+      return lumpedPressure(lambda, active);
+    case PressureRecovery::Patch:
+      return patchPressure(lambda, active);
+    default:
+      return pressure(lambda, active);
+  }
+}
+
+RCP<Vector> ContactPressure::patchPressure(const Vector& lambda, const Vector& active) const {
+  if (weightedGap_) return pressure(lambda, active);
+  Vector force(constraintMap_), weight(constraintMap_), forceSum(constraintMap_), weightSum(constraintMap_);
+  force.elementWiseMultiply(-1.0, active, lambda, 0.0);
+  weight.elementWiseMultiply(1.0, active, *lumpedWeights_, 0.0);
+  patchSum_->apply(force, forceSum);
+  patchSum_->apply(weight, weightSum);
+  auto p = rcp(new Vector(constraintMap_));
+  auto out = p->getDataNonConst();
+  auto a = active.getData();
+  auto f = forceSum.getData();
+  auto w = weightSum.getData();
+  for (std::size_t i = 0; i < p->getLocalLength(); ++i) out[i] = a[i] != 0 && w[i] > 0 ? f[i] / w[i] : 0.0;
   return p;
 }
 

@@ -42,8 +42,6 @@ namespace {
 // The prefix of the documentation of expert parameters, hidden from --defaults.
 constexpr const char* kExpert = "Expert: ";
 
-enum class PressureRecovery { Auto, Consistent, Lumped };
-
 Teuchos::ParameterList outputParameters() {
   Teuchos::ParameterList p("Output");
   p.set("directory", "results", "Directory of solution.pvtu, summary.json and history.csv (--output overrides)");
@@ -51,11 +49,14 @@ Teuchos::ParameterList outputParameters() {
   p.set("write history", true, "Write history.csv, one row per Newton step");
   p.set("contact pressure", "auto",
         "Recovery of the pressure from nodal constraints: \"consistent\" solves M p = -lambda (boundary "
-        "mass matrix of the loaded facets), \"lumped\" p = -lambda / w (HRZ weights), \"auto\" lumped "
-        "for P1 and consistent for P2, P3. Weighted gaps need none: their multipliers are the pressure",
+        "mass matrix of the loaded facets), \"lumped\" p = -lambda / w (HRZ weights), \"patch\" the lumped "
+        "pressure averaged over each active node's facet patch, \"auto\" lumped for 2D P1, patch for 3D P1 "
+        "and consistent for P2, P3 (doc/hertz-validation.md). Weighted gaps need none: their multipliers are "
+        "the pressure",
         choices<PressureRecovery>({{"auto", PressureRecovery::Auto},
                                    {"consistent", PressureRecovery::Consistent},
-                                   {"lumped", PressureRecovery::Lumped}},
+                                   {"lumped", PressureRecovery::Lumped},
+                                   {"patch", PressureRecovery::Patch}},
                                   "contact pressure"));
   p.set("write contact samples", false,
         "Write contact.csv: the recovered contact pressure at quadrature points of the contact "
@@ -301,10 +302,8 @@ std::optional<ContactStatistics> writeSolutionOutputs(const AssembledProblem& pr
     return std::nullopt;
   }
   const ContactPressure recovery(*problem.space, def, problem.qp.A->getRangeMap());
-  const PressureRecovery how = choice<PressureRecovery>(output, "contact pressure");
-  const bool lumped = how == PressureRecovery::Lumped || (how == PressureRecovery::Auto && def.degree == 1);
   const RCP<Vector> pressure =
-      lumped ? recovery.lumpedPressure(*result.lambda, *active) : recovery.pressure(*result.lambda, *active);
+      recovery.recover(choice<PressureRecovery>(output, "contact pressure"), *result.lambda, *active);
   const ContactStatistics contact =
       contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.obstacleDirection);
   if (comm.getRank() == 0) logContact(contact, out);

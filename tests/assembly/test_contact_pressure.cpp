@@ -117,4 +117,36 @@ TEST(ContactPressure, VanishesOffTheLoadedFacets) {
   }
 }
 
+// The patch average of P1 nodal forces: exact for a uniform pressure, 0 where a node is not
+// active, and a node's value is the ratio of the forces to the weights of its active facet
+// neighbours, which a force that alternates from node to node does not shift.
+TEST(ContactPressure, PatchAverageIsExactForAUniformPressureAndVanishesOffTheActiveNodes) {
+  for (int dim : {2, 3}) {
+    LoadedFace face = loadedBottomFace(dim, 1, "2.5");
+    const ContactPressure& recovery = *face.recovery;
+    const RCP<Vector> pressure = recovery.recover(PressureRecovery::Patch, *face.lambda, *face.everyNode);
+    Vector expected(pressure->getMap());
+    expected.putScalar(2.5);
+    expected.update(-1.0, *pressure, 1.0);
+    EXPECT_LT(expected.normInf(), 1e-12) << "dim " << dim;
+
+    // Every other constraint inactive: those get 0; the others keep 2.5, the average over
+    // their active neighbours.
+    Vector active(pressure->getMap());
+    auto a = active.getDataNonConst();
+    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(a.size()); ++i) a[i] = (active.getMap()->getGlobalElement(i) % 2 == 0) ? 1.0 : 0.0;
+    a = Teuchos::null;
+    const RCP<Vector> partial = recovery.recover(PressureRecovery::Patch, *face.lambda, active);
+    auto p = partial->getData();
+    auto on = active.getData();
+    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(p.size()); ++i) {
+      if (on[i] == 0) {
+        EXPECT_EQ(p[i], 0.0) << "dim " << dim;
+      } else {
+        EXPECT_NEAR(p[i], 2.5, 1e-12) << "dim " << dim;
+      }
+    }
+  }
+}
+
 }  // namespace

@@ -63,9 +63,7 @@ ContactSolution solveExample(const std::string& example, int degree, const std::
 
   const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
   const RCP<Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
-  // The application's default recovery ("auto"): lumped for P1, consistent otherwise.
-  const RCP<Vector> pressure =
-      degree == 1 ? recovery.lumpedPressure(*r.lambda, *active) : recovery.pressure(*r.lambda, *active);
+  const RCP<Vector> pressure = recovery.recover(PressureRecovery::Auto, *r.lambda, *active);
   return {p.definition.dim,
           contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active, p.definition.obstacleDirection),
           recovery.samples(*pressure), p.space->comm()};
@@ -202,12 +200,17 @@ TEST(Hertz, DeepBlockFollowsTheForceApproachLaw) {
   EXPECT_LT(std::abs(errors.peak), 0.03);
 }
 
-TEST(Hertz, SphereContactRadiusConvergesToHertz) {
-  // P1: only the radius; its peak pressure converges slowly (scripts/hertz.py measures it).
+// P1 on the structured box mesh, whose nodal forces alternate from node to node: with the
+// patch-averaged pressure (the default for 3D P1) the peak converges, within 10% at a contact
+// radius of 3.4 cells and falling (scripts/hertz.py: 3% at 6.8 cells); the radius within 5%.
+TEST(Hertz, SphereContactRadiusAndPeakConvergeToHertz) {
   const HertzErrors coarse = solveHertz("sphere-3d", 1, "mesh: cells", cells(16, 16, 8));
   const HertzErrors fine = solveHertz("sphere-3d", 1, "mesh: cells", cells(32, 32, 16));
   EXPECT_LT(std::abs(fine.radius), 0.05);
   EXPECT_LT(std::abs(fine.radius), std::abs(coarse.radius));
+  EXPECT_LT(std::abs(fine.peak), 0.10);
+  EXPECT_LT(std::abs(fine.peak), std::abs(coarse.peak));
+  EXPECT_LT(fine.l2, coarse.l2);
 }
 
 }  // namespace

@@ -33,6 +33,12 @@ struct ContactPressureSamples {
   std::vector<double> points, weights, pressures;
 };
 
+/// How the pressure is recovered from nodal-constraint multipliers (weighted gaps need no
+/// recovery): ContactPressure's consistent pressure(), lumpedPressure() or patchPressure();
+/// Auto is lumped for 2D P1, patch for 3D P1 and consistent for P2/P3, chosen by the Hertz
+/// studies (doc/hertz-validation.md).
+enum class PressureRecovery { Auto, Consistent, Lumped, Patch };
+
 class ContactPressure {
  public:
   /// Collective. `constraintMap` is A's range map: one constraint per contact node, as the
@@ -50,6 +56,17 @@ class ContactPressure {
   /// nodes of the loaded facets, 0 elsewhere. For P1 it is the multiplier of a dual mortar
   /// method with node-wise constraints. With weighted gaps, the same as pressure(). Collective.
   RCP<Vector> lumpedPressure(const Vector& lambda, const Vector& active) const;
+
+  /// The lumped pressure averaged over each node's facet patch: p_i = sum_j f_j / sum_j w_j
+  /// over the active nodes j that share a contact facet with node i (i included), f = -lambda,
+  /// w the HRZ weights; p_i = 0 where i is not active. Exact for a uniform pressure; removes
+  /// the node-to-node oscillation of P1 nodal forces on meshes whose boundary vertices
+  /// alternate in valence (structured tetrahedral meshes). With weighted gaps, the same as
+  /// pressure(). Collective.
+  RCP<Vector> patchPressure(const Vector& lambda, const Vector& active) const;
+
+  /// The pressure by the recovery `how`. Collective.
+  RCP<Vector> recover(PressureRecovery how, const Vector& lambda, const Vector& active) const;
 
   /// The contact area: the lumped boundary measure (HRZ weights) of the active nodes, each
   /// node standing for its share of the boundary. Collective.
@@ -80,6 +97,7 @@ class ContactPressure {
   bool weightedGap_;
   RCP<const Map> constraintMap_, overlapMap_;
   RCP<CrsMatrix> mass_, scaledMass_;
+  RCP<CrsMatrix> patchSum_;  ///< M's pattern with unit values: sums over a node's facet patch
   RCP<Vector> scaling_;  ///< D^-1/2, D = diag(M)
   RCP<Vector> lumpedWeights_;
   std::vector<std::pair<long long, int>> facets_;  ///< (cell, local facet) of this rank's contact facets
