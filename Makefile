@@ -1,8 +1,11 @@
 # Convenience wrapper around scripts/install-deps.sh, CMake and CTest.
 #   make run    install dependencies, build, solve the default problem (xml/default.xml)
-#   make test   install dependencies, build, run the whole test suite
+#   make test   install dependencies, build, run the whole test suite, then `make sanitize`
+#   make sanitize  the unit and small end-to-end tests under AddressSanitizer and
+#               UndefinedBehaviorSanitizer, and 30 s of each fuzz target (Clang, $(BUILD)-sanitize)
 #   make doc    the API reference of the public headers (build/doc/api/html)
 BUILD ?= build
+SANITIZE_BUILD ?= $(BUILD)-sanitize
 JOBS ?= 2
 NP ?= 2
 INPUT ?= xml/default.xml
@@ -15,7 +18,7 @@ export OMPI_ALLOW_RUN_AS_ROOT_CONFIRM = 1
 export OMPI_MCA_rmaps_base_oversubscribe = 1
 export OMPI_MCA_btl_vader_single_copy_mechanism = none
 
-.PHONY: all deps configure build run test bench doc clean
+.PHONY: all deps configure build run test sanitize bench doc clean
 
 all: build
 
@@ -33,9 +36,17 @@ run: build
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	$(MAKE) sanitize
+
+sanitize: deps
+	cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
+	      -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" \
+	      -DSIGNORINI_SANITIZE=ON
+	cmake --build $(SANITIZE_BUILD) -j $(JOBS) --target sanitize_checks
+	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j $(JOBS) -L sanitize
 
 doc: build
 	cmake --build $(BUILD) --target doc
 
 clean:
-	rm -rf $(BUILD)
+	rm -rf $(BUILD) $(SANITIZE_BUILD)

@@ -12,6 +12,7 @@ packages=(
   libgmsh-dev gmsh            # Gmsh SDK (mesh reading) and CLI (test meshes)
   libmuparser-dev             # user expressions for loads, gaps, displacements
   libgtest-dev                # unit tests
+  clang libclang-rt-14-dev    # the sanitizer build and the libFuzzer targets (make sanitize)
   doxygen                     # API reference (make doc)
   python3 python3-numpy python3-matplotlib python3-meshio  # scripts and output checks
 )

@@ -230,6 +230,10 @@ Teuchos::ParameterList readParameterFile(const std::string& path, const Comm& co
   if (sizes[0]) Teuchos::broadcast(comm, 0, sizes[0], error.data());
   if (!error.empty()) throw InputError(error);
   if (sizes[1]) Teuchos::broadcast(comm, 0, sizes[1], text.data());
+  return parseParameterXml(text, path);
+}
+
+Teuchos::ParameterList parseParameterXml(const std::string& text, const std::string& path) {
   try {
     return *Teuchos::getParametersFromXmlString(text);
   } catch (const std::exception& e) {

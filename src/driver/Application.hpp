@@ -25,6 +25,9 @@ std::string defaultsXml(bool all = false);
 // if it cannot be read or parsed.
 Teuchos::ParameterList readParameterFile(const std::string& path, const Comm& comm);
 
+// Parses the text of an XML parameter list; throws InputError naming `path` if it is not one.
+Teuchos::ParameterList parseParameterXml(const std::string& text, const std::string& path);
+
 // Applies "Path/To/name=value": the type is taken from the valid list where the parameter
 // is known, else from the existing entry, else inferred (int, double, bool, string).
 void applyOverride(Teuchos::ParameterList& list, const std::string& assignment,

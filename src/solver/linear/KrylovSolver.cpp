@@ -5,6 +5,7 @@
 
 #include <BelosLinearProblem.hpp>
 #include <BelosSolverFactory.hpp>
+#include <BelosSolverFactory_Generic.hpp>
 #include <BelosTpetraAdapter.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Operator.hpp>
@@ -13,6 +14,22 @@
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
+namespace {
+
+using SolverFactory = Belos::SolverFactory<Scalar, MultiVector, Operator>;
+
+// Belos' solver registry for these types, which libbelostpetra fills when it is loaded. Where
+// this file sees another registry than the library's (compiled by another compiler than
+// Trilinos: Clang does not share GCC's unique symbols), it is empty, and the header-only
+// generic factory registers Belos' solvers in it.
+SolverFactory& belosFactory() {
+  static SolverFactory factory;
+  static const bool filled = factory.isSupported("CG") || (Belos::GenericSolverFactory<Scalar, MultiVector, Operator>(), true);
+  (void)filled;
+  return factory;
+}
+
+}  // namespace
 
 Teuchos::ParameterList KrylovSolver::validParameters() {
   Teuchos::ParameterList p("Krylov");
@@ -24,8 +41,7 @@ Teuchos::ParameterList KrylovSolver::validParameters() {
 KrylovSolver::KrylovSolver(const Teuchos::ParameterList& params)
     : solver_(params.isParameter("solver") ? params.get<std::string>("solver") : "CG"),
       belos_(params.isSublist("Belos") ? params.sublist("Belos") : Teuchos::ParameterList()) {
-  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
-  if (!factory.isSupported(solver_))
+  if (!belosFactory().isSupported(solver_))
     throw InputError("Krylov solver \"" + solver_ + "\" is not a Belos solver");
 }
 
@@ -41,8 +57,7 @@ KrylovResult KrylovSolver::solve(const RCP<const Operator>& A, const RCP<const O
     if (bnorm > 0.0) tol = std::max(floor, std::min(tol, startReduction * std::min(r0norm, bnorm) / bnorm));
   }
 
-  Belos::SolverFactory<Scalar, MultiVector, Operator> factory;
-  auto solver = factory.create(solver_, Teuchos::null);
+  auto solver = belosFactory().create(solver_, Teuchos::null);
   const auto valid = solver->getValidParameters();
   auto params = rcp(new Teuchos::ParameterList(belos_));
   params->set("Convergence Tolerance", tol);

@@ -1,0 +1,18 @@
+// libFuzzer target: any bytes as a Gmsh .msh file, read through the Gmsh SDK into a
+// simplex mesh with its boundary tags.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <fstream>
+#include <string>
+
+#include "fe/GmshMesh.hpp"
+#include "fuzz/FuzzInput.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  static const std::string path = "/tmp/signorini-fuzz-" + std::to_string(getpid()) + ".msh";
+  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  signorini::fuzz::expectInputErrorOrNothing([&] { signorini::readGmshMesh(path); });
+  return 0;
+}
