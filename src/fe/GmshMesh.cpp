@@ -2,9 +2,17 @@
 
 #include <gmsh.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
+#include <cerrno>
+#include <csignal>
 #include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstring>
 #include <cstddef>
 #include <exception>
 #include <filesystem>
@@ -417,9 +425,8 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
   return mesh;
 }
 
-}  // namespace
-
-SimplexMesh readGmshMesh(const std::string& path, double sizeFactor) {
+// The mesh in this process; readGmshMesh runs it in a child.
+SimplexMesh readInThisProcess(const std::string& path, double sizeFactor) {
   const std::string prefix = "Gmsh mesh file '" + path + "': ";
   const bool geometry = std::filesystem::path(path).extension() == ".geo";
   {
@@ -471,6 +478,142 @@ SimplexMesh readGmshMesh(const std::string& path, double sizeFactor) {
     }
   }
   return buildMesh(raw, prefix);
+}
+
+// The child's answer through a pipe: 'M' and the mesh's arrays, or 'I' (an input error) or
+// 'E' (any other error) and the message.
+void writeAll(int fd, const void* data, std::size_t size) {
+  const char* bytes = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t written = ::write(fd, bytes, size);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) _exit(3);  // the parent is gone
+    bytes += written;
+    size -= static_cast<std::size_t>(written);
+  }
+}
+
+// Reads `size` bytes; false at the end of the stream.
+bool readAll(int fd, void* data, std::size_t size) {
+  char* bytes = static_cast<char*>(data);
+  while (size > 0) {
+    const ssize_t got = ::read(fd, bytes, size);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) return false;
+    bytes += got;
+    size -= static_cast<std::size_t>(got);
+  }
+  return true;
+}
+
+template <class T>
+void sendArray(int fd, const std::vector<T>& values) {
+  const std::uint64_t count = values.size();
+  writeAll(fd, &count, sizeof count);
+  writeAll(fd, values.data(), count * sizeof(T));
+}
+
+template <class T>
+bool receiveArray(int fd, std::vector<T>& values) {
+  std::uint64_t count = 0;
+  if (!readAll(fd, &count, sizeof count)) return false;
+  values.resize(count);
+  return readAll(fd, values.data(), count * sizeof(T));
+}
+
+void sendMesh(int fd, const SimplexMesh& mesh) {
+  writeAll(fd, "M", 1);
+  writeAll(fd, &mesh.dim, sizeof mesh.dim);
+  sendArray(fd, mesh.vertices);
+  sendArray(fd, mesh.cells);
+  sendArray(fd, mesh.facets);
+  sendArray(fd, mesh.facetTags);
+  std::vector<char> names;
+  std::vector<int> tags;
+  for (const auto& [name, tag] : mesh.boundaryTags) {
+    names.insert(names.end(), name.begin(), name.end());
+    names.push_back('\0');
+    tags.push_back(tag);
+  }
+  sendArray(fd, names);
+  sendArray(fd, tags);
+}
+
+bool receiveMesh(int fd, SimplexMesh& mesh) {
+  std::vector<char> names;
+  std::vector<int> tags;
+  if (!readAll(fd, &mesh.dim, sizeof mesh.dim) || !receiveArray(fd, mesh.vertices) || !receiveArray(fd, mesh.cells) ||
+      !receiveArray(fd, mesh.facets) || !receiveArray(fd, mesh.facetTags) || !receiveArray(fd, names) ||
+      !receiveArray(fd, tags))
+    return false;
+  std::size_t start = 0;
+  for (int tag : tags) {
+    const std::size_t end = std::find(names.begin() + start, names.end(), '\0') - names.begin();
+    if (end == names.size()) return false;
+    mesh.boundaryTags[std::string(names.begin() + start, names.begin() + end)] = tag;
+    start = end + 1;
+  }
+  return true;
+}
+
+void sendError(int fd, char kind, const std::string& message) {
+  writeAll(fd, &kind, 1);
+  writeAll(fd, message.data(), message.size());
+}
+
+// Runs in the child: never returns.
+[[noreturn]] void readAndSend(int fd, const std::string& path, double sizeFactor) {
+  // A crash ends the child quietly; the parent reports it (MPI's or a sanitizer's handlers
+  // would print a report of their own).
+  for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, SIG_DFL);
+  try {
+    sendMesh(fd, readInThisProcess(path, sizeFactor));
+  } catch (const InputError& e) {
+    sendError(fd, 'I', e.what());
+  } catch (const std::exception& e) {
+    sendError(fd, 'E', e.what());
+  } catch (...) {
+    sendError(fd, 'E', "unknown error");
+  }
+  ::close(fd);
+  _exit(0);  // no exit handlers: they belong to the parent (MPI, buffered output)
+}
+
+}  // namespace
+
+SimplexMesh readGmshMesh(const std::string& path, double sizeFactor) {
+  int fds[2];
+  if (::pipe(fds) != 0) throw Error("Gmsh mesh file '" + path + "': cannot create a pipe to read it");
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    throw Error("Gmsh mesh file '" + path + "': cannot start the process that reads it");
+  }
+  if (child == 0) {
+    ::close(fds[0]);
+    readAndSend(fds[1], path, sizeFactor);
+  }
+  ::close(fds[1]);
+  char kind = 0;
+  SimplexMesh mesh;
+  std::string message;
+  const bool answered = readAll(fds[0], &kind, 1);
+  const bool complete = answered && kind == 'M' && receiveMesh(fds[0], mesh);
+  if (answered && kind != 'M')
+    for (char c; readAll(fds[0], &c, 1);) message += c;
+  ::close(fds[0]);
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (complete) return mesh;
+  if (kind == 'I') throw InputError(message);
+  if (kind == 'E') throw Error(message);
+  const std::string how = WIFSIGNALED(status) ? std::string("crashed (") + strsignal(WTERMSIG(status)) + ")"
+                                               : "stopped with exit status " + std::to_string(WEXITSTATUS(status));
+  throw InputError("Gmsh mesh file '" + path + "': Gmsh " + how +
+                   " while reading it; check that it is a valid Gmsh file (gmsh -check FILE)");
 }
 
 }  // namespace signorini

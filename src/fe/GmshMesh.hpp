@@ -32,10 +32,10 @@ namespace signorini {
 // second-order elements...), a degenerate cell, a 2D node off the plane z = 0, a boundary
 // element that is not a face of a cell, or two boundary groups with the same name.
 //
-// Gmsh is initialised for the call and finalised afterwards, unless the caller already has
-// a Gmsh session open: then the file is read into a temporary model which is removed again,
-// and the caller's current model and General.Terminal option are restored. Calls are
-// serialised within the process (Gmsh is not thread-safe).
+// Gmsh reads the file in a child process (fork), which sends the mesh back through a pipe:
+// Gmsh 4.8's readers crash on some malformed files and its .geo parser does not recover from
+// a syntax error, and neither reaches this process, where a crash becomes an InputError and
+// Gmsh's state (a session the caller has open, its models and options) is left as it was.
 SimplexMesh readGmshMesh(const std::string& path, double sizeFactor = 1.0);
 
 }  // namespace signorini

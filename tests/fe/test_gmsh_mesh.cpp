@@ -541,6 +541,26 @@ TEST(GmshMesh, UnreadableFilesAreInputErrorsAndLeaveGmshUsable) {
   EXPECT_EQ(readGmshMesh(good).numCells(), expected.cells);
 }
 
+// A malformed file on which Gmsh 4.8's own reader crashes (found by tests/fuzz, a $PhysicalNames
+// entry of dimension 22): an InputError, and this process goes on reading meshes.
+TEST(GmshMesh, FileThatCrashesGmshIsAnInputError) {
+  static const char bytes[] =
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalName"
+      "s\n3\n1 1 \"cottom\"\n1 2 \"top\"\n22 3 \" 0 1 0 0 \n1 0 0"
+      " 0 1 0 0 1 1 2 1\377\377\377\377 -2 \n2 1 \313\313\313\313\313\313\313\313\313\313\377\377\377\377\377\377\377\377\377"
+      "\377\377\377\377\377\377\377\313\313\313\313\313\313\313\313\313\313\313\313\001\000\000\000\000\000\000\004\313\313\313\313\313\313\313\313\3131 1 0 1 \n7 1"
+      " 5 10 \n8 3 7 11 \n9 5 2 12 \n10 2 8 7 9 11 \n$EndEl"
+      "ement.mshs\n";
+  TempDir dir;
+  const std::string bad = dir.file("crashes-gmsh.msh");
+  std::ofstream(bad, std::ios::binary).write(bytes, sizeof bytes - 1);
+  const std::string message = inputErrorOf([&] { readGmshMesh(bad); });
+  EXPECT_NE(message.find("Gmsh crashed (Segmentation fault) while reading it"), std::string::npos) << message;
+  const std::string good = dir.file("good.msh");
+  const Expected expected = writeSquare(good, {4.1, false});
+  EXPECT_EQ(readGmshMesh(good).numCells(), expected.cells);
+}
+
 TEST(GmshMesh, LineMeshIsRejected) {
   TempDir dir;
   const std::string path = dir.file("lines.msh");
