@@ -35,7 +35,7 @@ namespace signorini {
 // Gmsh reads the file in a child process (fork), which sends the mesh back through a pipe:
 // Gmsh 4.8's readers crash on some malformed files and its .geo parser does not recover from
 // a syntax error, and neither reaches this process, where a crash becomes an InputError and
-// Gmsh's state (a session the caller has open, its models and options) is left as it was.
+// Gmsh's state (a Gmsh session the caller has open, its models and options) is left as it was.
 SimplexMesh readGmshMesh(const std::string& path, double sizeFactor = 1.0);
 
 }  // namespace signorini
