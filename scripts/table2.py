@@ -17,6 +17,8 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # the repository
+sys.path.insert(0, os.path.join(ROOT, "bench"))
+from provenance import provenance  # noqa: E402
 
 # Table 2 of the paper: n, m, ngr, nfc, it, optimal value, cpu seconds (F: not solved).
 PAPER = {
@@ -86,7 +88,8 @@ def main():
             print(rows[-1], flush=True)
     os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
     with open(os.path.join(ROOT, "bench", "results", args.name + ".json"), "w") as f:
-        json.dump({"ranks": args.ranks, "overrides": args.extra, "runs": records}, f, indent=1)
+        json.dump({"provenance": provenance(args.ranks), "ranks": args.ranks, "overrides": args.extra,
+                   "runs": records}, f, indent=1)
     with open(os.path.join(ROOT, "bench", "results", args.name + ".md"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("\n".join(rows))
