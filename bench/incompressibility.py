@@ -47,6 +47,7 @@ def main():
     parser.add_argument("--problems", default="paper/G,paper/J")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "incompressibility"))
     args = parser.parse_args()
+    made = provenance(args.ranks)  # before any result file is rewritten (git describe --dirty)
     records = []
     for problem in args.problems.split(","):
         for config, settings in CONFIGS.items():
@@ -58,7 +59,7 @@ def main():
                                                                   summary["time"]["solve"]), flush=True)
     base = os.path.join(ROOT, "bench", "results", "incompressibility")
     with open(base + ".json", "w") as f:
-        json.dump({"provenance": provenance(args.ranks), "runs": records}, f, indent=1)
+        json.dump({"provenance": made, "runs": records}, f, indent=1)
     with open(base + ".md", "w") as f:
         f.write(table(records))
 

@@ -66,6 +66,7 @@ def main():
     parser.add_argument("--name", default="table2", help="basename of the files in bench/results")
     parser.add_argument("--workdir", default=None)
     args = parser.parse_args()
+    made = provenance(args.ranks)  # before any result file is rewritten (git describe --dirty)
     workdir = args.workdir or os.path.join(ROOT, "results", args.name)
 
     rows, records = [], []
@@ -88,7 +89,7 @@ def main():
             print(rows[-1], flush=True)
     os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
     with open(os.path.join(ROOT, "bench", "results", args.name + ".json"), "w") as f:
-        json.dump({"provenance": provenance(args.ranks), "ranks": args.ranks, "overrides": args.extra,
+        json.dump({"provenance": made, "ranks": args.ranks, "overrides": args.extra,
                    "runs": records}, f, indent=1)
     with open(os.path.join(ROOT, "bench", "results", args.name + ".md"), "w") as f:
         f.write("\n".join(rows) + "\n")
