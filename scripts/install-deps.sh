@@ -13,6 +13,7 @@ packages=(
   libmuparser-dev             # user expressions for loads, gaps, displacements
   libgtest-dev                # unit tests
   clang libclang-rt-14-dev    # the sanitizer build and the libFuzzer targets (make sanitize)
+  valgrind                    # the memcheck run in the test suite
   doxygen                     # API reference (make doc)
   python3 python3-numpy python3-matplotlib python3-meshio  # scripts and output checks
 )

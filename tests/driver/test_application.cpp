@@ -242,8 +242,9 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
 
 }  // namespace
 
-// Boundary conditions that cannot hold the body, or that contradict the contact, are bad
-// input: one message that names the cause, before any output is written.
+// Boundary conditions that cannot hold the body, or that contradict the contact, and data
+// beyond double precision are bad input: one message that names the cause, before any
+// output is written.
 TEST(Application, BadPhysicsIsRefusedBeforeAnyOutput) {
   auto comm = Tpetra::getDefaultComm();
   const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
@@ -257,6 +258,9 @@ TEST(Application, BadPhysicsIsRefusedBeforeAnyOutput) {
       {{"Problem/Dirichlet/ymax/displacement: y=", "Problem/body force: y=1"},
        "the load pulls the body off the obstacle by a translation along (0, 1)"},
       {{"Problem/Contact/boundary=ymax"}, "Problem/Contact: 11 node(s) of the contact boundary \"ymax\""},
+      // Finite data whose norms overflow double precision.
+      {{"Problem/body force: y=-1e308"}, "Problem: the loads and prescribed displacements (largest entry 1e+306)"},
+      {{"Problem/Contact/gap: value=1e200"}, "Problem: the gaps (largest entry 1e+200) overflow"},
   };
   for (const Case& c : cases) {
     CommandLine cl;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -110,6 +112,23 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
   return p;
 }
 
+namespace {
+
+// Loads or gaps whose 2-norm overflows double precision (entries beyond ~1e154) break every
+// residual the solver measures: say so before the solve, in the problem's terms. Collective.
+void checkRepresentableScale(const ContactQP& qp) {
+  const auto refuse = [](const char* what, const Vector& x) {
+    std::ostringstream message;
+    message << "Problem: the " << what << " (largest entry " << std::setprecision(3) << x.normInf()
+            << ") overflow double precision in the solver's norms; rescale the units";
+    throw InputError(message.str());
+  };
+  if (!std::isfinite(qp.b->norm2())) refuse("loads and prescribed displacements", *qp.b);
+  if (!std::isfinite(qp.d->norm2())) refuse("gaps", *qp.d);
+}
+
+}  // namespace
+
 InteriorPointSolver::InteriorPointSolver(const Teuchos::ParameterList& params)
     : params_(validatedParameters(params, validParameters(), "Solver")) {}
 
@@ -117,6 +136,7 @@ SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initia
                                        IterationObserver* observer) const {
   IterationObserver silent;
   IterationObserver& obs = observer ? *observer : silent;
+  checkRepresentableScale(qp);
   checkRigidBodyMotionsHeld(qp);
   if (qp.A->getRangeMap()->getGlobalNumElements() == 0)
     return detail::solveUnconstrained(qp, params_, initialGuess, obs);
