@@ -48,11 +48,9 @@ Teuchos::ParameterList outputParameters() {
   p.set("write solution", true, "Write solution.pvtu with one .vtu per rank");
   p.set("write history", true, "Write history.csv, one row per Newton step");
   p.set("contact pressure", "auto",
-        "Recovery of the pressure from nodal constraints: \"consistent\" solves M p = -lambda (boundary "
-        "mass matrix of the loaded facets), \"lumped\" p = -lambda / w (HRZ weights), \"patch\" the lumped "
-        "pressure averaged over each active node's facet patch, \"auto\" lumped for 2D P1, patch for 3D P1 "
-        "and consistent for P2, P3 (doc/hertz-validation.md). Weighted gaps need none: their multipliers are "
-        "the pressure",
+        "Pressure recovered from nodal multipliers: \"consistent\" (boundary mass matrix solve), "
+        "\"lumped\" (HRZ weights), \"patch\" (lumped, averaged over each active node's facet patch) or "
+        "\"auto\" (lumped for 2D P1, patch for 3D P1, consistent for P2, P3); see doc/hertz-validation.md",
         choices<PressureRecovery>({{"auto", PressureRecovery::Auto},
                                    {"consistent", PressureRecovery::Consistent},
                                    {"lumped", PressureRecovery::Lumped},

@@ -97,8 +97,7 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
         "displacement scale of the unconstrained solution",
         range(1e-12, 1e6));
   p.set("gamma: adaptive", false,
-        "Adapt gamma as in the paper's section 4 (the paper: true; measured on problem M it drives "
-        "gamma to its maximum and stalls, see xml/ipm-primal.xml)");
+        "Adapt gamma by the rule of the paper's section 4 (the paper: true); see doc/algorithms.md");
   p.set("gamma: few inner iterations", 3, "Expert: Fewer inner iterations than this count as few", range(1, 1000));
   p.set("gamma: successive main iterations", 3, "Expert: Few inner iterations this many times in a row lower gamma",
         range(1, 1000));
