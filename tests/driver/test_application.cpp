@@ -55,6 +55,32 @@ TEST(Application, EveryShippedXmlValidates) {
   EXPECT_GE(count, 24);
 }
 
+// The input shown in the README is problem M, and solves as xml/paper/M.xml does.
+TEST(Application, ReadmeInputExampleIsProblemM) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string readme = readFile(sourceDir() + "/README.md");
+  const std::size_t begin = readme.find("```xml\n"), end = readme.find("```", begin + 7);
+  ASSERT_NE(begin, std::string::npos);
+  ASSERT_NE(end, std::string::npos);
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  const std::string dir = std::string(binary ? binary : "/tmp") + "/app-readme-np" + std::to_string(comm->getSize());
+  if (comm->getRank() == 0) {
+    std::filesystem::create_directories(dir);
+    std::ofstream(dir + "/example.xml") << readme.substr(begin + 7, end - begin - 7);
+  }
+  comm->barrier();
+  std::ostringstream log;
+  CommandLine example, paper;
+  example.input = dir + "/example.xml";
+  example.output = dir + "/example";
+  paper.input = sourceDir() + "/xml/paper/M.xml";
+  paper.output = dir + "/M";
+  const SolveResult fromReadme = runApplication(example, comm, log);
+  const SolveResult fromPaper = runApplication(paper, comm, log);
+  ASSERT_TRUE(fromReadme.converged()) << log.str();
+  EXPECT_NEAR(fromReadme.objective, fromPaper.objective, 1e-12 * std::abs(fromPaper.objective));
+}
+
 TEST(Application, DefaultsXmlIsCurrent) {
   EXPECT_EQ(readFile(sourceDir() + "/xml/defaults.xml"), defaultsXml(true))
       << "regenerate it: build/bin/signorini --defaults=all > xml/defaults.xml, then scripts/parameters_md.py";
