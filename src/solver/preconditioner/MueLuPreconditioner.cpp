@@ -1,6 +1,8 @@
 #include "solver/preconditioner/MueLuPreconditioner.hpp"
 
 #include <MueLu_CreateTpetraPreconditioner.hpp>
+#include <MueLu_Hierarchy.hpp>
+#include <MueLu_ParameterListInterpreter.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
@@ -9,6 +11,8 @@
 namespace signorini {
 
 using MueLuOperator = MueLu::TpetraOperator<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
+using Hierarchy = MueLu::Hierarchy<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
+using Interpreter = MueLu::ParameterListInterpreter<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
 
 Teuchos::ParameterList MueLuPreconditioner::defaultParameters(int blockSize) {
   Teuchos::ParameterList p("MueLu");
@@ -55,15 +59,23 @@ void MueLuPreconditioner::compute(const RCP<CrsMatrix>& A, bool reuse) {
     MueLu::ReuseTpetraPreconditioner(A, *mueluOp);
     return;
   }
-  Teuchos::ParameterList list = params_;
-  auto& user = list.sublist("user data");
-  if (!nullspace_.is_null())
-    user.set("Nullspace", Teuchos::rcp_const_cast<MultiVector>(nullspace_));
-  if (!coordinates_.is_null())
-    user.set("Coordinates", Teuchos::rcp_const_cast<MultiVector>(coordinates_));
+  // The parameter list is interpreted once: building MueLu's factories from it costs more
+  // than a whole setup of a small hierarchy, and every Newton step sets one up.
   try {
-    op_ = MueLu::CreateTpetraPreconditioner<Scalar, LocalOrdinal, GlobalOrdinal, Node>(
-        Teuchos::rcp_implicit_cast<Operator>(A), list);
+    if (factory_.is_null()) factory_ = rcp(new Interpreter(params_, A->getDomainMap()->getComm()));
+    const RCP<Hierarchy> hierarchy = factory_->CreateHierarchy();
+    hierarchy->setlib(Xpetra::UseTpetra);
+    const RCP<MueLu::Level> fine = hierarchy->GetLevel(0);
+    fine->Set("A", MueLu::TpetraCrs_To_XpetraMatrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>(A));
+    if (!nullspace_.is_null())
+      fine->Set("Nullspace", MueLu::TpetraMultiVector_To_XpetraMultiVector<Scalar, LocalOrdinal, GlobalOrdinal, Node>(
+                                 Teuchos::rcp_const_cast<MultiVector>(nullspace_)));
+    if (!coordinates_.is_null())
+      fine->Set("Coordinates", MueLu::TpetraMultiVector_To_XpetraMultiVector<Scalar, LocalOrdinal, GlobalOrdinal, Node>(
+                                   Teuchos::rcp_const_cast<MultiVector>(coordinates_)));
+    hierarchy->SetProcRankVerbose(A->getDomainMap()->getComm()->getRank());
+    factory_->SetupHierarchy(*hierarchy);
+    op_ = rcp(new MueLuOperator(hierarchy));
   } catch (const Teuchos::Exceptions::InvalidParameter& e) {
     throw InputError(std::string("MueLu rejected its parameter list: ") + e.what());
   }

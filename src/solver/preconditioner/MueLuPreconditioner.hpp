@@ -1,6 +1,7 @@
 #pragma once
 // Algebraic multigrid for elasticity-type matrices through MueLu, built from a "MueLu"
 // parameter list that is passed through unchanged, with the rigid body modes as nullspace.
+#include <MueLu_HierarchyManager_fwd.hpp>
 #include <Teuchos_ParameterList.hpp>
 
 #include "signorini/core/TpetraTypes.hpp"
@@ -32,6 +33,8 @@ class MueLuPreconditioner : public MultilevelPreconditioner {
   Teuchos::ParameterList params_;
   RCP<const MultiVector> nullspace_, coordinates_;
   RCP<Operator> op_;
+  // MueLu's factories, made from params_ at the first compute() and kept for the next ones.
+  RCP<MueLu::HierarchyManager<Scalar, LocalOrdinal, GlobalOrdinal, Node>> factory_;
 };
 
 }  // namespace signorini
