@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """The preconditioning table of doc/benchmarks.md, from the JSON that bench/preconditioners.py wrote:
 
-    /usr/bin/python3 bench/readme_table.py
+    /usr/bin/python3 bench/preconditioners_table.py
 
 One row per member (preconditioners-forcing{,-p2p3}.json, one run each): the default
 configuration with the default forcing ("reduction"), with the adaptive forcing and with

@@ -1,0 +1,75 @@
+#!/usr/bin/env python3
+"""Refreshes the generated tables of doc/benchmarks.md from bench/results.
+
+    scripts/benchmarks_md.py [--check]
+
+A generated table sits between two markers that name its source:
+
+    <!-- generated from bench/results/table2.md -->
+    | ... |
+    <!-- end generated -->
+
+The source is a result file that a benchmark script wrote from its JSON (its first Markdown
+table is taken) or a script under bench/ that prints the table from the JSON (its output is
+taken). --check compares instead of writing and exits 1 if a table is not current.
+"""
+import argparse
+import os
+import re
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DOC = os.path.join(ROOT, "doc", "benchmarks.md")
+BLOCK = re.compile(r"(<!-- generated from (\S+) -->\n)(.*?)(<!-- end generated -->)", re.S)
+
+
+def first_table(text):
+    lines, table = text.splitlines(), []
+    for line in lines:
+        if line.startswith("|"):
+            table.append(line)
+        elif table:
+            break
+    return "\n".join(table) + "\n"
+
+
+def table_from(source):
+    path = os.path.join(ROOT, source)
+    if not os.path.isfile(path):
+        sys.exit(f"benchmarks_md: {source}, named in doc/benchmarks.md, does not exist")
+    if source.endswith(".py"):
+        text = subprocess.run([sys.executable, path], check=True, capture_output=True, text=True).stdout
+    else:
+        with open(path) as f:
+            text = f.read()
+    table = first_table(text)
+    if table == "\n":
+        sys.exit(f"benchmarks_md: {source} holds no Markdown table")
+    return table
+
+
+def refreshed(text):
+    return BLOCK.sub(lambda m: m.group(1) + table_from(m.group(2)) + m.group(4), text)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--check", action="store_true", help="exit 1 if doc/benchmarks.md is not current")
+    args = parser.parse_args()
+    with open(DOC) as f:
+        current = f.read()
+    new = refreshed(current)
+    if args.check:
+        if new != current:
+            print("doc/benchmarks.md is not current: run scripts/benchmarks_md.py", file=sys.stderr)
+            return 1
+        print(f"doc/benchmarks.md: {len(BLOCK.findall(current))} generated tables current")
+        return 0
+    with open(DOC, "w") as f:
+        f.write(new)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
