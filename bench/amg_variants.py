@@ -17,6 +17,8 @@ import os
 import re
 import subprocess
 
+from provenance import provenance
+
 from preconditioners import ENV, ROOT
 
 MUELU = "Solver/Preconditioner/MueLu/"
@@ -65,6 +67,7 @@ def main():
     parser.add_argument("--problems", default=",".join(PROBLEMS))
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "amg-variants"))
     args = parser.parse_args()
+    made = provenance(args.ranks)  # before any result file is rewritten (git describe --dirty)
     records = []
     for variant in args.variants.split(","):
         for problem in args.problems.split(","):
@@ -77,7 +80,7 @@ def main():
                   flush=True)
     os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
     with open(os.path.join(ROOT, "bench", "results", "amg-variants.json"), "w") as f:
-        json.dump(records, f, indent=1)
+        json.dump({"provenance": made, "runs": records}, f, indent=1)
     rows = ["| variant | problem | n | levels | operator complexity | CG iterations to the end of the first main iteration | "
             "max per system | AMG setup [s] | Krylov [s] |", "|---|---|---|---|---|---|---|---|---|"]
     for r in records:

@@ -14,6 +14,8 @@ import argparse
 import json
 import os
 
+from provenance import provenance
+
 from preconditioners import ROOT, run
 
 PROBLEMS = ["paper/M", "paper/G", "paper/K", "paper/J", "family/2d-p1-nx200", "family/2d-p1-nx400",
@@ -28,6 +30,9 @@ def main():
     parser.add_argument("--reuse", action="store_true", help="reuse the outputs of earlier runs in the workdir")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "forcing"))
     args = parser.parse_args()
+    made = provenance(args.ranks)  # before any result file is rewritten (git describe --dirty)
+    if args.reuse:
+        made["reused outputs of earlier runs"] = os.path.relpath(args.workdir, ROOT)
     safeties = args.safety.split(",")
     problems = args.problems.split(",")
     records = []
@@ -43,7 +48,7 @@ def main():
                   f"solve {summary['time']['solve']:.2f} s, {summary['status']}", flush=True)
     os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
     with open(os.path.join(ROOT, "bench", "results", "forcing.json"), "w") as f:
-        json.dump(records, f, indent=1)
+        json.dump({"provenance": made, "runs": records}, f, indent=1)
     header = "| problem | n | " + " | ".join(f"safety {s}: it / Krylov / solve [s]" for s in safeties) + " |"
     rows = [header, "|---|---|" + "---|" * len(safeties)]
     for problem in problems:

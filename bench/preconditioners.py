@@ -27,6 +27,8 @@ import json
 import os
 import subprocess
 
+from provenance import provenance
+
 import matplotlib
 
 matplotlib.use("Agg")
@@ -140,6 +142,9 @@ def main():
     parser.add_argument("--output", default=os.path.join(ROOT, "bench", "results"), help="where results go")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "preconditioners"))
     args = parser.parse_args()
+    made = provenance(args.ranks)  # before any result file is rewritten (git describe --dirty)
+    if args.reuse:
+        made["reused outputs of earlier runs"] = os.path.relpath(args.workdir, ROOT)
     names = ["2d", "3d"] if args.sequence == "all" else args.sequence.split(",")
     for name in names:
         if name not in SEQUENCES:
@@ -174,7 +179,7 @@ def main():
                           f"solve {summary['time']['solve']:.2f} s, {summary['status']}", flush=True)
     os.makedirs(args.output, exist_ok=True)
     with open(os.path.join(args.output, args.name + ".json"), "w") as f:
-        json.dump(records, f, indent=1)
+        json.dump({"provenance": made, "runs": records}, f, indent=1)
 
     rows = ["| sequence | nx | n | configuration | forcing | it | Krylov total | max per Newton system | "
             "first / last Newton step | AMG setups | solve [s] |", "|---|---|---|---|---|---|---|---|---|---|---|"]

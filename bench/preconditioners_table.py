@@ -22,7 +22,8 @@ def load(*names):
     records = []
     for name in names:
         with open(os.path.join(ROOT, "bench", "results", name + ".json")) as f:
-            records += json.load(f)
+            data = json.load(f)
+        records += data["runs"] if isinstance(data, dict) else data  # files without provenance are lists
     return {(r["sequence"], r["nx"], r["config"], r["forcing"]): r for r in records}
 
 

@@ -13,13 +13,16 @@ import argparse
 import json
 import os
 import subprocess
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))  # the repository
+sys.path.insert(0, os.path.join(ROOT, "bench"))
+from provenance import provenance  # noqa: E402
 ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
            OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
 
@@ -42,6 +45,9 @@ def main():
     parser.add_argument("--reuse", action="store_true", help="tabulate the summaries of earlier runs in the workdir")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "scaling"))
     args = parser.parse_args()
+    made = provenance(args.ranks)  # before any result file is rewritten (git describe --dirty)
+    if args.reuse:
+        made["reused outputs of earlier runs"] = os.path.relpath(args.workdir, ROOT)
     ranks = [int(r) for r in args.ranks.split(",")]
     cores = os.cpu_count() or 1
     records = []
@@ -80,7 +86,7 @@ def main():
                     f"{efficiency:.0%} | {r['per_krylov_efficiency']:.0%} | {s['memory_mib']['max_rank']:.0f} |")
     os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
     with open(os.path.join(ROOT, "bench", "results", "scaling.json"), "w") as f:
-        json.dump(records, f, indent=1)
+        json.dump({"provenance": made, "runs": records}, f, indent=1)
     with open(os.path.join(ROOT, "bench", "results", "scaling.md"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("\n".join(rows))
