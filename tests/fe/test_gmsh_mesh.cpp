@@ -655,7 +655,7 @@ TEST(GmshMesh, CallerGmshSessionIsLeftAsItWas) {
   gmsh::option::getNumber("General.Terminal", terminal);
   EXPECT_EQ(terminal, 1);
 
-  // Errors while the caller's session is open leave it as it was too.
+  // Errors while the caller's Gmsh session is open leave it as it was too.
   EXPECT_NE(inputErrorOf([&] { readGmshMesh(dir.file("missing.msh")); }), "");
   EXPECT_NE(inputErrorOf([&] { readGmshMesh(quadPath); }).find("type 3"), std::string::npos);
   EXPECT_NO_THROW(gmsh::model::getCurrent(current));
