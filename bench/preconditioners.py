@@ -9,10 +9,10 @@ independent of mesh size and mu).
         [--forcing all|reduction,adaptive,relative] [--reuse]
 
 For every (problem, configuration, forcing) it runs build/bin/signorini, reads summary.json
-and history.csv, and writes into bench/results: preconditioners.json (every run, with its
-per-step history), preconditioners.md (one row per run, then three ratios per
-configuration and sequence) and preconditioners.png (Krylov iterations per Newton step
-against mu, one panel per sequence and configuration).
+and history.csv, and writes into bench/results: NAME.json (every run, with its per-step
+history), NAME.md (one row per run, then three ratios per configuration and sequence) and
+NAME.png (Krylov iterations per Newton step against mu, one panel per sequence and
+configuration); NAME is --name, "preconditioners" by default.
 
 Forcing "reduction" is the solver's default: every Krylov solve reduces the residual of its
 starting vector (the projection on earlier solutions) by 0.1. Forcing "adaptive" lets the
@@ -52,43 +52,22 @@ CONFIGS = {
     "unfiltered": UNFILTERED,
     # The AMG of H itself, rebuilt only when constraints switch between free and firmly active.
     "lagged rebuild": LAGGED,
-    # The lagged rebuild with the projected start not corrected on the contact DOFs.
-    "without contact-corrected start": {**LAGGED, "Solver/Krylov/initial guess: contact correction": "false"},
-    # The lagged rebuild with Newton systems from zero (the corrector from the predictor's
-    # step), tail safety 0.1.
-    "without projection": {**LAGGED, "Solver/Krylov/initial guess: previous solutions": "0",
-                           "Solver/Krylov/initial guess: contact correction": "false",
-                           "Solver/forcing: tail safety": "0.1"},
-    # The same with MueLu's hierarchy alone, and the forcing's tail safety equal to its
-    # safety (0.3).
-    "algebraic (from zero)": {**A, **LAGGED, "Solver/forcing: tail safety": "0.3",
-                              "Solver/Krylov/initial guess: previous solutions": "0",
-                              "Solver/Krylov/initial guess: contact correction": "false"},
-    # Variants of the algebraic hierarchy (bench/results/preconditioners.md).
-    "amg of Q": {**A, P + "type": "amg of Q", P + "contact correction": "none"},
-    "amg of H": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0", P + "contact correction": "none"},
-    "amg of H + additive": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0",
-                            P + "contact correction": "additive"},
-    "amg of H + multiplicative": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0",
-                                  P + "contact correction": "multiplicative"},
-    "amg of Q + multiplicative": {**A, P + "type": "amg of Q", P + "contact correction": "multiplicative"},
-    "lagged amg of H + multiplicative": {**A, P + "type": "amg of H", P + "amg of H: rebuild tolerance": "0.9",
-                                         P + "contact correction": "multiplicative"},
-    # The lagged algebraic configuration with a stronger cycle: fewer Krylov iterations, each dearer.
-    "algebraic + W-cycle": {**A, **LAGGED, P + "MueLu/cycle type": "W", P + "MueLu/smoother: params/chebyshev: degree": "3",
-                          P + "MueLu/aggregation: drop tol": "0.02"},
-    # The lagged algebraic configuration with forcing safety 0.1 and the corrector started
-    # from zero.
-    "algebraic (safety 0.1)": {**A, **LAGGED, "Solver/forcing: safety": "0.1", "Solver/primal-dual: corrector from predictor": "false"},
+    # The default with the projected start not corrected on the contact DOFs.
+    "without contact-corrected start": {"Solver/Krylov/initial guess: contact correction": "false"},
+    # The default with every Newton system started from zero (the corrector from the
+    # predictor's step).
+    "from zero": {"Solver/Krylov/initial guess: previous solutions": "0",
+                  "Solver/Krylov/initial guess: contact correction": "false"},
+    # The default with MueLu's smoothed aggregation alone instead of the geometric levels (what
+    # Gmsh meshes get).
+    "algebraic": A,
+    # The same with the AMG built for Q alone (no contact weights), set up once.
+    "algebraic, amg of Q": {**A, P + "type": "amg of Q"},
 }
-# Not measured with the fixed forcing "relative": "without projection", "without contact-corrected
-# start" and "algebraic (safety 0.1)" change the forcing and the starting vectors, not the
-# preconditioner (with forcing "relative" they solve the same linear problems from other
-# starting vectors; "algebraic (from zero)" in preconditioners-geometric.json has those runs);
-# the W-cycle, to keep the benchmark's time within an hour. Every configuration runs with the
-# solver's defaults for what it does not set.
-ADAPTIVE_ONLY = {"algebraic (safety 0.1)", "algebraic + W-cycle", "without projection",
-                 "without contact-corrected start"}
+# Configurations that change the starting vectors, not the preconditioner: not run with the
+# fixed forcing "relative" (a relative residual to reach from another start is not the same
+# linear problem). Every configuration runs with the solver's defaults for what it does not set.
+STARTS_ONLY = {"without contact-corrected start", "from zero"}
 FORCING = {
     "reduction": {},  # the default: each solve reduces its start's residual by 0.1
     "adaptive": {"Solver/forcing: type": "adaptive"},
@@ -167,7 +146,7 @@ def main():
                 if limited and config not in full:
                     continue
                 for forcing in forcings:
-                    if forcing not in ("reduction", "adaptive") and config in ADAPTIVE_ONLY:
+                    if forcing not in ("reduction", "adaptive") and config in STARTS_ONLY:
                         continue
                     out = os.path.join(args.workdir, "-".join([xml.replace("/", "-"), config.replace(" ", "-"), forcing]))
                     summary, history = run(xml, {**CONFIGS[config], **FORCING[forcing]}, args.ranks, out, args.reuse)
@@ -195,7 +174,7 @@ def main():
     for name in names:
         for config in configs:
             for forcing in forcings:
-                if forcing not in ("reduction", "adaptive") and config in ADAPTIVE_ONLY:
+                if forcing not in ("reduction", "adaptive") and config in STARTS_ONLY:
                     continue
                 group = [r for r in records if r["sequence"] == name and r["config"] == config and r["forcing"] == forcing]
                 # Over the members every configuration ran, then over all of this one's.

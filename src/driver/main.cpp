@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
     if (cl.version || cl.defaults) {
       if (comm->getRank() == 0) {
         if (cl.version)
-          std::cout << "signorini " << signorini::kVersion << " (" << signorini::kGitCommit << "), Trilinos "
+          std::cout << "signorini " << signorini::kVersion << " (" << signorini::gitCommit() << "), Trilinos "
                     << TRILINOS_VERSION_STRING << "\n";
         if (cl.defaults) std::cout << signorini::defaultsXml(cl.allDefaults);
       }

@@ -60,7 +60,7 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
   const SolveResult& r = *s.result;
   std::ostringstream j;
   j << "{\n"
-    << "  \"signorini\": {\"version\": " << quoted(kVersion) << ", \"commit\": " << quoted(kGitCommit)
+    << "  \"signorini\": {\"version\": " << quoted(kVersion) << ", \"commit\": " << quoted(gitCommit())
     << ", \"trilinos\": " << quoted(TRILINOS_VERSION_STRING) << "},\n"
     << "  \"problem\": " << quoted(s.problem) << ",\n"
     << "  \"d\": " << s.dim << ",\n"
