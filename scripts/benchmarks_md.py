@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Refreshes the generated tables of doc/benchmarks.md from bench/results.
+"""Refreshes the generated tables of doc/benchmarks.md and README.md from bench/results.
 
     scripts/benchmarks_md.py [--check]
 
@@ -20,7 +20,7 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DOC = os.path.join(ROOT, "doc", "benchmarks.md")
+DOCS = ["doc/benchmarks.md", "README.md"]
 BLOCK = re.compile(r"(<!-- generated from (\S+) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 
@@ -37,7 +37,7 @@ def first_table(text):
 def table_from(source):
     path = os.path.join(ROOT, source)
     if not os.path.isfile(path):
-        sys.exit(f"benchmarks_md: {source}, named in doc/benchmarks.md, does not exist")
+        sys.exit(f"benchmarks_md: {source}, named in a generated table's marker, does not exist")
     if source.endswith(".py"):
         text = subprocess.run([sys.executable, path], check=True, capture_output=True, text=True).stdout
     else:
@@ -55,21 +55,25 @@ def refreshed(text):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--check", action="store_true", help="exit 1 if doc/benchmarks.md is not current")
+    parser.add_argument("--check", action="store_true", help="exit 1 if a generated table is not current")
     args = parser.parse_args()
-    with open(DOC) as f:
-        current = f.read()
-    new = refreshed(current)
-    if args.check:
-        if new != current:
-            print("doc/benchmarks.md is not current: run scripts/benchmarks_md.py", file=sys.stderr)
-            return 1
-        print(f"doc/benchmarks.md: {len(BLOCK.findall(current))} generated tables current")
-        return 0
-    with open(DOC, "w") as f:
-        f.write(new)
+    stale = []
+    for doc in DOCS:
+        with open(os.path.join(ROOT, doc)) as f:
+            current = f.read()
+        new = refreshed(current)
+        if args.check:
+            if new != current:
+                stale.append(doc)
+            else:
+                print(f"{doc}: {len(BLOCK.findall(current))} generated tables current")
+        elif new != current:
+            with open(os.path.join(ROOT, doc), "w") as f:
+                f.write(new)
+    if stale:
+        print(f"{', '.join(stale)} not current: run scripts/benchmarks_md.py", file=sys.stderr)
+        return 1
     return 0
-
 
 if __name__ == "__main__":
     sys.exit(main())
