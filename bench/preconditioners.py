@@ -62,7 +62,7 @@ CONFIGS = {
     # Gmsh meshes get).
     "algebraic": A,
     # The same with the AMG built for Q alone (no contact weights), set up once.
-    "algebraic, amg of Q": {**A, P + "type": "amg of Q"},
+    "algebraic amg of Q": {**A, P + "type": "amg of Q"},
 }
 # Configurations that change the starting vectors, not the preconditioner: not run with the
 # fixed forcing "relative" (a relative residual to reach from another start is not the same
