@@ -27,6 +27,7 @@ import json
 import os
 import subprocess
 
+from preconditioners_table import ratios
 from provenance import provenance
 
 import matplotlib
@@ -95,15 +96,6 @@ def run(xml, settings, ranks, out, reuse):
     with open(os.path.join(out, "history.csv")) as f:
         history = [{"mu": float(r["mu"]), "krylov": int(r["krylov_iterations"])} for r in csv.DictReader(f)]
     return summary, history
-
-
-def ratios(records):
-    """Three measures over one sequence: spread of the largest count per Newton system,
-    spread of the totals, and last over first Newton step (largest over the sequence)."""
-    maxima = [r["summary"]["max_krylov_per_newton"] for r in records]
-    totals = [r["summary"]["krylov_iterations"] for r in records]
-    last_first = [r["history"][-1]["krylov"] / max(r["history"][0]["krylov"], 1) for r in records]
-    return max(maxima) / max(min(maxima), 1), max(totals) / max(min(totals), 1), max(last_first)
 
 
 def main():

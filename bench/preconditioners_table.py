@@ -27,6 +27,15 @@ def load(*names):
     return {(r["sequence"], r["nx"], r["config"], r["forcing"]): r for r in records}
 
 
+def ratios(records):
+    """Three measures over one sequence: spread of the largest count per Newton system,
+    spread of the totals, and last over first Newton step (largest over the sequence)."""
+    maxima = [r["summary"]["max_krylov_per_newton"] for r in records]
+    totals = [r["summary"]["krylov_iterations"] for r in records]
+    last_first = [r["history"][-1]["krylov"] / max(r["history"][0]["krylov"], 1) for r in records]
+    return max(maxima) / max(min(maxima), 1), max(totals) / max(min(totals), 1), max(last_first)
+
+
 def first_last(run):
     return f"{run['history'][0]['krylov']} / {run['history'][-1]['krylov']}"
 

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""The ratio table of doc/benchmarks.md, from the JSON of bench/preconditioners.py:
+"""The ratio table of doc/benchmarks.md, from the JSON of bench/preconditioners.py (standard
+library only, like every table script that scripts/benchmarks_md.py runs):
 
     /usr/bin/python3 bench/ratios_table.py
 
@@ -9,8 +10,7 @@ Newton system, max/min over the sequence (target 1.5); the total count of a solv
 (target 2); the last over the first Newton step, worst member (target 1.5). Bold: within
 the target. The other forcings are shown for the default configuration only.
 """
-from preconditioners import ratios
-from preconditioners_table import load
+from preconditioners_table import load, ratios
 
 SEQUENCES = {"2d": "2D P1", "3d": "3D P1", "2d-p2": "2D P2", "2d-p3": "2D P3", "3d-p2": "3D P2"}
 FORCINGS = {"reduction": "", "adaptive": ", adaptive", "relative": ", fixed 1e-8"}
