@@ -104,6 +104,27 @@ RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
   return graph;
 }
 
+// Local indices of each space DOF (dim * space node + component) in the overlap matrix's row
+// and column maps and in the overlap vector's map.
+struct LocalIndices {
+  std::vector<LocalOrdinal> row, column, entry;
+};
+LocalIndices localIndices(const DistributedSpace& ds, const FEMatrix& K, const Vector& overlapVector) {
+  const int dim = ds.dim();
+  const long long numNodes = ds.space().numNodes();
+  LocalIndices local{std::vector<LocalOrdinal>(dim * numNodes), std::vector<LocalOrdinal>(dim * numNodes),
+                     std::vector<LocalOrdinal>(dim * numNodes)};
+  const Map &rows = *K.getRowMap(), &columns = *K.getColMap(), &entries = *overlapVector.getMap();
+  for (long long node = 0; node < numNodes; ++node)
+    for (int c = 0; c < dim; ++c) {
+      const GlobalOrdinal dof = dim * ds.globalNode(node) + c;
+      local.row[dim * node + c] = rows.getLocalElement(dof);
+      local.column[dim * node + c] = columns.getLocalElement(dof);
+      local.entry[dim * node + c] = entries.getLocalElement(dof);
+    }
+  return local;
+}
+
 // Symmetric elimination of prescribed DOFs inside one element: their known values move to
 // the right-hand side of the free DOFs, their rows and columns are zeroed. The unit
 // diagonal and the prescribed value are set once, by the owner, after assembly.
@@ -386,9 +407,13 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   auto K = rcp(new FEMatrix(elasticityGraph(ds)));
   Vector bOverlap(ds.overlapDofMap());
 
+  K->beginAssembly();
+  // Local rows and columns of the overlap matrix, and local entries of bOverlap, per space
+  // DOF: looked up once here, not for each of the (dim * npc)^2 entries of every cell.
+  const LocalIndices local = localIndices(ds, *K, bOverlap);
   std::vector<double> vertexCoords((dim + 1) * dim), Ke, Fe, value(n);
   std::vector<char> fixed(n);
-  std::vector<GlobalOrdinal> dofs(n);
+  std::vector<LocalOrdinal> rows(n), cols(n), entries(n);
   // Expressions are evaluated at every quadrature point of every cell: skip the zero ones.
   std::vector<char> zeroForce(dim);
   for (int c = 0; c < dim; ++c) zeroForce[c] = problem.bodyForce[c].isConstantZero();
@@ -401,21 +426,24 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
     for (int i = 0; i < npc; ++i)
       for (int c = 0; c < dim; ++c) {
         const long long spaceDof = dim * nodes[i] + c;
-        dofs[dim * i + c] = dim * ds.globalNode(nodes[i]) + c;
+        rows[dim * i + c] = local.row[spaceDof];
+        cols[dim * i + c] = local.column[spaceDof];
+        entries[dim * i + c] = local.entry[spaceDof];
         fixed[dim * i + c] = dirichlet.fixed[spaceDof];
         value[dim * i + c] = dirichlet.value[spaceDof];
       }
   };
 
-  K->beginAssembly();
+  auto bData = bOverlap.getDataNonConst();
   for (long long cell = 0; cell < mesh.numCells(); ++cell) {
     gatherCell(cell);
     elasticityStiffness(space.basis(), vertexCoords.data(), problem.material, Ke);
     bodyForceLoad(space.basis(), vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
     eliminatePrescribed(fixed, value, n, Ke, Fe);
     for (int i = 0; i < n; ++i) {
-      K->sumIntoGlobalValues(dofs[i], n, &Ke[i * n], dofs.data());
-      bOverlap.sumIntoGlobalValue(dofs[i], Fe[i]);
+      if (K->sumIntoLocalValues(rows[i], n, &Ke[i * n], cols.data()) != n)
+        throw Error("assembly: an element entry lies outside the matrix graph");
+      bData[entries[i]] += Fe[i];
     }
   }
   for (const BoundaryField& bc : problem.traction) {
@@ -427,9 +455,10 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
       facetTractionLoad(space.basis(), vertexCoords.data(), facet, traction,
                         problem.loadQuadratureDegree, Fe);
       for (int i = 0; i < n; ++i)
-        if (!fixed[i]) bOverlap.sumIntoGlobalValue(dofs[i], Fe[i]);
+        if (!fixed[i]) bData[entries[i]] += Fe[i];
     }
   }
+  bData = Teuchos::null;
   // Owners put the unit diagonal of prescribed DOFs.
   const auto& overlap = ds.overlapSpaceNodes();
   const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
