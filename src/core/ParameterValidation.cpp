@@ -44,6 +44,43 @@ std::string validNames(const Teuchos::ParameterList& valid) {
   return out.str();
 }
 
+// "auto", or a number from lo to hi (as a double, an int or a string).
+class AutoOrRangeValidator : public Teuchos::ParameterEntryValidator {
+ public:
+  AutoOrRangeValidator(double lo, double hi) : lo_(lo), hi_(hi) {}
+  const std::string getXMLTypeName() const override { return "AutoOrRangeValidator(double)"; }
+  void printDoc(const std::string& docString, std::ostream& out) const override {
+    out << "# " << docString << "\n# " << description() << "\n";
+  }
+  ValidStringsList validStringValues() const override { return Teuchos::null; }
+  void validate(const Teuchos::ParameterEntry& entry, const std::string& name,
+                const std::string& sublist) const override {
+    if (entry.isType<std::string>() && Teuchos::getValue<std::string>(entry) == "auto") return;
+    double value = 0;
+    if (!number(entry, value) || value < lo_ || value > hi_)
+      throw Teuchos::Exceptions::InvalidParameterValue(sublist + "/" + name + ": " + description());
+  }
+  std::string description() const {
+    std::ostringstream out;
+    out << "\"auto\", or a number from " << lo_ << " to " << hi_;
+    return out.str();
+  }
+  // The entry's value as a number, if it is one (a string must hold nothing else).
+  static bool number(const Teuchos::ParameterEntry& entry, double& value) {
+    if (entry.isType<double>()) value = Teuchos::getValue<double>(entry);
+    else if (entry.isType<int>()) value = Teuchos::getValue<int>(entry);
+    else if (!entry.isType<std::string>()) return false;
+    else {
+      std::istringstream in(Teuchos::getValue<std::string>(entry));
+      if (!(in >> value) || !(in >> std::ws).eof()) return false;
+    }
+    return true;
+  }
+
+ private:
+  double lo_, hi_;
+};
+
 void validateInto(const Teuchos::ParameterList& user, Teuchos::ParameterList& merged,
                   const std::string& path) {
   const bool anyName = merged.isSublist(kAnyNameSublist);
@@ -84,7 +121,10 @@ void validateInto(const Teuchos::ParameterList& user, Teuchos::ParameterList& me
 
     Teuchos::ParameterEntry value = entry;
     const auto& expected = target.getAny(false).type();
-    if (value.getAny(false).type() != expected) {
+    // A number stands where an autoOrRange() parameter's "auto" does; its validator checks it.
+    const bool numberForAuto = dynamic_cast<const AutoOrRangeValidator*>(target.validator().get()) &&
+                               (value.isType<double>() || value.isType<int>());
+    if (value.getAny(false).type() != expected && !numberForAuto) {
       if (expected == typeid(double) && value.isType<int>()) {
         value.setValue(static_cast<double>(Teuchos::getValue<int>(value)));
       } else {
@@ -153,6 +193,19 @@ Teuchos::RCP<const Teuchos::ParameterEntryValidator> zeroOrRange(int lo, int hi)
   return Teuchos::rcp(new ZeroOrRangeValidator(lo, hi));
 }
 
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> autoOrRange(double lo, double hi) {
+  return Teuchos::rcp(new AutoOrRangeValidator(lo, hi));
+}
+
+double autoOrNumber(const Teuchos::ParameterList& list, const std::string& name, double automatic) {
+  const Teuchos::ParameterEntry& entry = list.getEntry(name);
+  if (entry.isType<std::string>() && Teuchos::getValue<std::string>(entry) == "auto") return automatic;
+  double value = 0;
+  if (!AutoOrRangeValidator::number(entry, value))
+    throw Error(name + ": \"auto\" or a number expected (the list was not validated)");
+  return value;
+}
+
 std::string acceptedValues(const Teuchos::ParameterEntryValidator& validator) {
   std::ostringstream out;
   if (auto* real = dynamic_cast<const Teuchos::EnhancedNumberValidator<double>*>(&validator)) {
@@ -161,6 +214,8 @@ std::string acceptedValues(const Teuchos::ParameterEntryValidator& validator) {
     out << "an integer from " << integer->getMin() << " to " << integer->getMax();
   } else if (auto* zeroOr = dynamic_cast<const ZeroOrRangeValidator*>(&validator)) {
     out << zeroOr->description();
+  } else if (auto* autoOr = dynamic_cast<const AutoOrRangeValidator*>(&validator)) {
+    out << autoOr->description();
   } else if (const auto names = validator.validStringValues(); !names.is_null()) {
     out << (names->size() == 1 ? "" : "one of ") << quotedList(*names);
   } else {

@@ -16,7 +16,8 @@ namespace signorini {
 //   or "Ifpack2", which are passed through to those packages unchanged;
 // - a valid sublist holding a sublist named "<name>" accepts any number of user sublists
 //   of any name, each validated against that template (e.g. one per boundary);
-// - an int where a double is expected is accepted and converted;
+// - an int where a double is expected is accepted and converted, and a number where an
+//   autoOrRange() parameter's "auto" stands;
 // - validators attached to valid entries (ranges, string choices) are applied.
 // `path` prefixes messages, e.g. "Problem". Throws InputError.
 Teuchos::ParameterList validatedParameters(const Teuchos::ParameterList& user,
@@ -58,6 +59,14 @@ Enum choice(const Teuchos::ParameterList& list, const std::string& name) {
 
 // 0, or an integer from lo to hi.
 Teuchos::RCP<const Teuchos::ParameterEntryValidator> zeroOrRange(int lo, int hi);
+
+// "auto" (the reader picks the value from the context), or a number from lo to hi given as a
+// double, an int or a string. The valid entry holds the string "auto"; read it with
+// autoOrNumber().
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> autoOrRange(double lo, double hi);
+
+// The number of a validated autoOrRange() parameter, or `automatic` when it is "auto".
+double autoOrNumber(const Teuchos::ParameterList& list, const std::string& name, double automatic);
 
 // What a validator accepts, in words: "a number from 0 to 0.4999", "one of "a", "b"".
 std::string acceptedValues(const Teuchos::ParameterEntryValidator& validator);

@@ -2,11 +2,14 @@
 
 #include <gmsh.h>
 
+#include <poll.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cerrno>
 #include <csignal>
 #include <cmath>
@@ -21,6 +24,7 @@
 #include <new>
 #include <numeric>
 #include <set>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -579,9 +583,36 @@ void sendError(int fd, char kind, const std::string& message) {
   _exit(0);  // no exit handlers: they belong to the parent (MPI, buffered output)
 }
 
+// Waits until `fd` can be read (data, or the end of the stream when the child is gone) or
+// `seconds` have passed (negative: no limit); false on the time limit.
+bool readableWithin(int fd, double seconds) {
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                                        std::chrono::duration<double>(std::max(seconds, 0.0)));
+  for (;;) {
+    int wait = -1;
+    if (seconds >= 0) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+      if (left <= 0) return false;
+      wait = static_cast<int>(std::min<long long>(left, 60000));
+    }
+    pollfd request{fd, POLLIN, 0};
+    const int ready = ::poll(&request, 1, wait);
+    if (ready > 0) return true;
+    if (ready < 0 && errno != EINTR) return true;  // let the read report it
+  }
+}
+
+double defaultTimeLimit(const std::string& path) {
+  if (std::filesystem::path(path).extension() == ".geo") return -1;
+  std::error_code error;
+  const auto bytes = std::filesystem::file_size(path, error);
+  return 60.0 + (error ? 0.0 : static_cast<double>(bytes) / 1e6);
+}
+
 }  // namespace
 
-SimplexMesh readGmshMesh(const std::string& path, double sizeFactor) {
+SimplexMesh readGmshMesh(const std::string& path, double sizeFactor, double timeLimitSeconds) {
   int fds[2];
   if (::pipe(fds) != 0) throw Error("Gmsh mesh file '" + path + "': cannot create a pipe to read it");
   std::fflush(nullptr);
@@ -596,6 +627,18 @@ SimplexMesh readGmshMesh(const std::string& path, double sizeFactor) {
     readAndSend(fds[1], path, sizeFactor);
   }
   ::close(fds[1]);
+  const double limit = timeLimitSeconds < 0 ? defaultTimeLimit(path) : timeLimitSeconds;
+  int status = 0;
+  if (!readableWithin(fds[0], limit)) {
+    ::kill(child, SIGKILL);
+    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    }
+    ::close(fds[0]);
+    std::ostringstream seconds;
+    seconds << limit;
+    throw InputError("Gmsh mesh file '" + path + "': Gmsh did not finish reading it within " + seconds.str() +
+                     " s; check that it is a valid Gmsh file (gmsh -check FILE)");
+  }
   char kind = 0;
   SimplexMesh mesh;
   std::string message;
@@ -604,7 +647,6 @@ SimplexMesh readGmshMesh(const std::string& path, double sizeFactor) {
   if (answered && kind != 'M')
     for (char c; readAll(fds[0], &c, 1);) message += c;
   ::close(fds[0]);
-  int status = 0;
   while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
   if (complete) return mesh;

@@ -36,6 +36,10 @@ namespace signorini {
 // Gmsh 4.8's readers crash on some malformed files and its .geo parser does not recover from
 // a syntax error, and neither reaches this process, where a crash becomes an InputError and
 // Gmsh's state (a Gmsh session the caller has open, its models and options) is left as it was.
-SimplexMesh readGmshMesh(const std::string& path, double sizeFactor = 1.0);
+// A malformed file can also send Gmsh's reader into an endless loop: a child that has not
+// answered after `timeLimitSeconds` is stopped, and that too is an InputError. A negative
+// limit is the default: a minute plus a second per MB for a .msh file, none for a .geo file
+// (meshing takes as long as the geometry asks).
+SimplexMesh readGmshMesh(const std::string& path, double sizeFactor = 1.0, double timeLimitSeconds = -1);
 
 }  // namespace signorini

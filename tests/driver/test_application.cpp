@@ -138,6 +138,10 @@ TEST(Application, BadValuesNameTheParameterAndTheAcceptedRange) {
        },
        "Solver/Preconditioner/geometric: eigenvalue update steps", "accepted: 0, or an integer from 3 to 1000"},
       {[](auto& l) { l.sublist("Solver").set("maximum iterations", "many"); }, "Solver/maximum iterations", "int"},
+      {[](auto& l) { l.sublist("Solver").sublist("Preconditioner").set("amg of H: rebuild tolerance", 1.5); },
+       "Solver/Preconditioner/amg of H: rebuild tolerance", "accepted: \"auto\", or a number from 0 to 1"},
+      {[](auto& l) { l.sublist("Solver").sublist("Preconditioner").set("amg of H: rebuild tolerance", "often"); },
+       "Solver/Preconditioner/amg of H: rebuild tolerance", "accepted: \"auto\", or a number from 0 to 1"},
   };
   for (const Case& c : cases) {
     Teuchos::ParameterList user;
@@ -171,6 +175,17 @@ TEST(Application, SetOverridesTakeTheTypeOfTheParameter) {
   EXPECT_EQ(user.sublist("Problem").sublist("Dirichlet").sublist("ymax").get<std::string>("displacement: y"), "-0.1*x");
   EXPECT_EQ(user.sublist("Solver").sublist("Preconditioner").sublist("MueLu").get<int>("smoother: sweeps"), 3);
   EXPECT_NO_THROW(validatedParameters(user, valid, ""));
+  // "auto" or a number: --set gives the text, an XML file may give a double; both are read as numbers.
+  const char* tolerance = "amg of H: rebuild tolerance";
+  applyOverride(user, std::string("Solver/Preconditioner/") + tolerance + "=0.5", valid);
+  EXPECT_EQ(autoOrNumber(validatedParameters(user, valid, "").sublist("Solver").sublist("Preconditioner"), tolerance, 0),
+            0.5);
+  user.sublist("Solver").sublist("Preconditioner").set(tolerance, 0.25);
+  EXPECT_EQ(autoOrNumber(validatedParameters(user, valid, "").sublist("Solver").sublist("Preconditioner"), tolerance, 0),
+            0.25);
+  user.sublist("Solver").sublist("Preconditioner").remove(tolerance);
+  EXPECT_EQ(autoOrNumber(validatedParameters(user, valid, "").sublist("Solver").sublist("Preconditioner"), tolerance, 7),
+            7.0);
   EXPECT_NE(inputErrorOf([&] { applyOverride(user, "Problem/element: degree=two", valid); }).find("int"),
             std::string::npos);
   EXPECT_NE(inputErrorOf([&] { applyOverride(user, "no equals sign", valid); }), "");

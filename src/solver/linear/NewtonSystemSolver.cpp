@@ -56,11 +56,11 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
                                         {"amg of Q", PreconditionerType::AmgOfQ},
                                         {"amg of H", PreconditionerType::AmgOfH}},
                                        "type"));
-  prec.set("amg of H: rebuild tolerance", 0.0,
+  prec.set("amg of H: rebuild tolerance", std::string("auto"),
            "Expert: Rebuild \"amg of H\" when the relative weight D_i / (D_i + q_i) of some constraint (q_i: its "
-           "stiffness a_i^T diag(Q) a_i; D_i capped by amg of H: weight cap) moved by more than this since "
-           "the last build; 0 rebuilds at every Newton step, 1 never after the first",
-           range(0.0, 1.0));
+           "stiffness a_i^T diag(Q) a_i) moved by more than this since the last build; 0: at every Newton "
+           "step, 1: never after the first; \"auto\": 0 with the geometric levels, 0.9 with MueLu alone",
+           autoOrRange(0.0, 1.0));
   prec.set("amg of H: weight cap", 10.0,
            "Expert: With a contact correction, \"amg of H\" is built for Q + A^T D' A, D'_i = min(D_i, cap q_i) "
            "(filtering): weights far above a constraint's stiffness stay out of the coarse levels and the "
@@ -138,13 +138,16 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
                                                               prec.get<int>("geometric: coarsest size"),
                                                               prec.sublist("Ifpack2"), muelu,
                                                               prec.get<int>("geometric: eigenvalue update steps"));
+    // A rebuild on the geometric levels updates the Galerkin products of the changed rows.
+    rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.0);
   } else {
     amg_ = std::make_unique<MueLuPreconditioner>(muelu, qp.blockSize, qp.nullspace, qp.coordinates);
+    // A rebuild of MueLu's hierarchy is a whole setup: only when constraints switch.
+    rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.9);
   }
   if (correction_ != ContactCorrection::None)
     subspace_ = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A));
   if (correction_ == ContactCorrection::Multiplicative) contactColumns_ = H_->onContactColumns();
-  rebuildTolerance_ = prec.get<double>("amg of H: rebuild tolerance");
   // Without a contact correction, nothing else would see the weights above the cap.
   if (correction_ != ContactCorrection::None) weightCap_ = prec.get<double>("amg of H: weight cap");
   if (strategy_ == PreconditionerType::AmgOfH) constraintStiffness_ = constraintStiffness(*qp.Qmatrix(), *qp.A);

@@ -7,7 +7,9 @@
 //   "amg of H":  MueLu on the assembled Q + A^T D A (assembled for the preconditioner only),
 //                rebuilt when some constraint's relative weight D_i / (D_i + q_i) moved by
 //                more than "amg of H: rebuild tolerance" since the last build (0: every
-//                step, 1: never after the first), with MueLu's "reuse: type" if set; with a
+//                step, 1: never after the first; by default 0 with the geometric levels,
+//                whose rebuild is an update, and 0.9 with MueLu's hierarchy alone, whose
+//                rebuild is a whole setup), with MueLu's "reuse: type" if set; with a
 //                contact correction, D_i is capped at "amg of H: weight cap" times q_i
 //                (filtering: the correction solves the stiff contact part exactly);
 // and its "contact correction": the AMG combined with an exact solve on the contact DOFs
