@@ -42,6 +42,7 @@ Vector contactZoneWeights(const ContactQP& qp, int step) {
 std::vector<int> cgCounts(const ContactQP& qp, const Teuchos::ParameterList& preconditioner, const Vector& r,
                           int steps) {
   Teuchos::ParameterList params = NewtonSystemSolver::validParameters();
+  params.sublist("Preconditioner").set("amg of H: rebuild tolerance", 0.0);  // either hierarchy
   params.sublist("Preconditioner").setParameters(preconditioner);
   params.sublist("Krylov").set("initial guess: previous solutions", 0);  // the preconditioner alone
   params.sublist("Krylov").set("initial guess: contact correction", false);
