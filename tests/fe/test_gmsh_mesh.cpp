@@ -676,16 +676,22 @@ TEST(GmshMesh, CallerGmshSessionIsLeftAsItWas) {
   gmsh::option::setNumber("General.Terminal", 0);
 }
 
-// A .geo geometry is meshed when read, with linear triangles, its physical groups as the
-// boundaries; the size factor scales its mesh sizes.
-TEST(GmshGeometry, IsMeshedWhenReadAndRefinedByTheSizeFactor) {
-  TempDir dir;
-  const std::string path = dir.file("quarter-disk.geo");
+// A quarter of the unit disk as a .geo geometry (mesh size 0.1), with physical groups
+// "bottom", "arc" and "body".
+void writeQuarterDisk(const std::string& path) {
   std::ofstream(path) << "Point(1) = {0, 0, 0, 0.1};\nPoint(2) = {1, 0, 0, 0.1};\nPoint(3) = {0, 1, 0, 0.1};\n"
                          "Line(1) = {1, 2};\nCircle(2) = {2, 1, 3};\nLine(3) = {3, 1};\n"
                          "Curve Loop(1) = {1, 2, 3};\nPlane Surface(1) = {1};\n"
                          "Physical Curve(\"bottom\") = {1};\nPhysical Curve(\"arc\") = {2};\n"
                          "Physical Surface(\"body\") = {1};\n";
+}
+
+// A .geo geometry is meshed when read, with linear triangles, its physical groups as the
+// boundaries; the size factor scales its mesh sizes.
+TEST(GmshGeometry, IsMeshedWhenReadAndRefinedByTheSizeFactor) {
+  TempDir dir;
+  const std::string path = dir.file("quarter-disk.geo");
+  writeQuarterDisk(path);
   const SimplexMesh coarse = readGmshMesh(path, 1.0);
   const SimplexMesh fine = readGmshMesh(path, 0.5);
   EXPECT_EQ(coarse.dim, 2);
@@ -708,10 +714,7 @@ TEST(GmshGeometry, IsMeshedWhenReadAndRefinedByTheSizeFactor) {
 TEST(GmshGeometry, ReaderPastItsTimeLimitIsStopped) {
   TempDir dir;
   const std::string path = dir.file("quarter-disk.geo");
-  std::ofstream(path) << "Point(1) = {0, 0, 0, 0.1};\nPoint(2) = {1, 0, 0, 0.1};\nPoint(3) = {0, 1, 0, 0.1};\n"
-                         "Line(1) = {1, 2};\nCircle(2) = {2, 1, 3};\nLine(3) = {3, 1};\n"
-                         "Curve Loop(1) = {1, 2, 3};\nPlane Surface(1) = {1};\n"
-                         "Physical Curve(\"bottom\") = {1};\nPhysical Surface(\"body\") = {1};\n";
+  writeQuarterDisk(path);
   const std::string message = inputErrorOf([&] { readGmshMesh(path, 0.005, 0.1); });
   EXPECT_NE(message.find("Gmsh mesh file '" + path + "': Gmsh did not finish reading it within 0.1 s"),
             std::string::npos)
