@@ -157,13 +157,13 @@ KKTMeasures PrimalDualMethod::evaluate(int k) {
 
 // The Krylov residual of a step lands in r_d alone: after a step of length alpha,
 // r_d = (1 - alpha) r_d + alpha (residual). When, twice in a row, r_d kept more than
-// 1 - alpha/4 of itself and lagged behind mu (its term of the safeguard binds), the solves
+// 1 - alpha/2 of itself and lagged behind mu (its term of the safeguard binds), the solves
 // are too loose for it: the reduction forcing's safeguard tightens for the rest of the
 // solve (without it, paper/K without the contact correction stalls at stationarity 1e-5 on
 // 3 ranks while mu falls to nothing).
 void PrimalDualMethod::tightenStalledForcing() {
   const bool stalled = forcing_.type == ForcingType::Reduction && previousRdNorm_ > 0 && mu0_ > 0 &&
-                       rdNorm_ > bnorm_ * mu_ / mu0_ && rdNorm_ > (1 - 0.25 * previousAlpha_) * previousRdNorm_;
+                       rdNorm_ > bnorm_ * mu_ / mu0_ && rdNorm_ > (1 - 0.5 * previousAlpha_) * previousRdNorm_;
   stalls_ = stalled ? stalls_ + 1 : 0;
   if (stalls_ == 2) {
     forcing_.reductionSafeguard *= 0.5;

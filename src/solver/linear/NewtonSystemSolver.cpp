@@ -12,6 +12,7 @@
 #include "core/ParameterValidation.hpp"
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
+#include "solver/preconditioner/MueLuPreconditioner.hpp"
 #include "solver/preconditioner/SubspaceCorrectedPreconditioner.hpp"
 
 namespace signorini {
@@ -73,9 +74,18 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
                                        {"additive", ContactCorrection::Additive},
                                        {"multiplicative", ContactCorrection::Multiplicative}},
                                       "contact correction"));
+  prec.set("contact correction: blocks", "auto",
+           "Expert: How P^T H P is factored for the contact correction: \"per rank\", each rank the block of "
+           "the contact DOFs it owns (block Jacobi, nothing gathered); \"gathered\", all of it on rank 0 "
+           "(exact; its residual gathered in every Krylov iteration); \"auto\": per rank unless a constraint's "
+           "DOFs lie on several ranks",
+           choices<ContactSubspaceBlocks>({{"auto", ContactSubspaceBlocks::Auto},
+                                           {"per rank", ContactSubspaceBlocks::PerRank},
+                                           {"gathered", ContactSubspaceBlocks::Gathered}},
+                                          "contact correction: blocks"));
   prec.set("hierarchy", "auto",
            "Multigrid levels: \"geometric\" (box meshes: P_k to P1, then box grids with half the cells, "
-           "Galerkin coarse matrices, Chebyshev smoothing, MueLu below geometric: coarsest size); "
+           "Galerkin coarse matrices, Chebyshev smoothing, a direct solve or MueLu below); "
            "\"algebraic\": MueLu alone; \"auto\": geometric on box meshes",
            choices<Hierarchy>({{"auto", Hierarchy::Auto},
                                {"algebraic", Hierarchy::Algebraic},
@@ -83,8 +93,13 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
                               "hierarchy"));
   prec.set("geometric: coarsest size", 200,
            "Expert: The geometric levels stop before a grid with fewer unknowns than this, or at one that cannot "
-           "be halved; MueLu takes over there",
+           "be halved",
            range(1, std::numeric_limits<int>::max()));
+  prec.set("geometric: direct solve size", 5000,
+           "Expert: The coarsest geometric grid is solved exactly (gathered to rank 0 and factored by KLU2) when "
+           "it has at most this many unknowns; MueLu's algebraic multigrid takes over below it otherwise. 0: "
+           "always MueLu",
+           range(0, std::numeric_limits<int>::max()));
   prec.set("geometric: eigenvalue update steps", 5,
            "Expert: Lanczos steps that update a smoother's largest-eigenvalue estimate when only the contact rows "
            "changed, from the previous Ritz vector; 0: a fresh estimate at every rebuild (1 and 2 steps are too "
@@ -136,6 +151,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
       throw InputError("Preconditioner/hierarchy \"geometric\" needs a box mesh (Problem/mesh: type \"box\")");
     amg_ = std::make_unique<GeometricMultigridPreconditioner>(*qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize,
                                                               prec.get<int>("geometric: coarsest size"),
+                                                              prec.get<int>("geometric: direct solve size"),
                                                               prec.sublist("Ifpack2"), muelu,
                                                               prec.get<int>("geometric: eigenvalue update steps"));
     // A rebuild on the geometric levels updates the Galerkin products of the changed rows.
@@ -146,7 +162,8 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
     rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.9);
   }
   if (correction_ != ContactCorrection::None)
-    subspace_ = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A));
+    subspace_ = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A,
+                                              choice<ContactSubspaceBlocks>(prec, "contact correction: blocks")));
   if (correction_ == ContactCorrection::Multiplicative) contactColumns_ = H_->onContactColumns();
   // Without a contact correction, nothing else would see the weights above the cap.
   if (correction_ != ContactCorrection::None) weightCap_ = prec.get<double>("amg of H: weight cap");

@@ -5,16 +5,19 @@
 #include <vector>
 
 #include <Amesos2.hpp>
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_ComputeGatherMap.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Export.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
+#include <Tpetra_RowMatrixTransposer.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
 #include "solver/linear/BarrierHessianOperator.hpp"
+#include "solver/preconditioner/LocalBlock.hpp"
 
 namespace signorini {
 
@@ -22,68 +25,93 @@ using DirectSolver = Amesos2::Solver<CrsMatrix, MultiVector>;
 
 struct ContactSubspaceSolver::Impl {
   RCP<const Map> dofMap;
-  RCP<const Map> rootDofs;         // the contact DOFs, all on rank 0
-  RCP<const Map> rootConstraints;  // the constraints, all on rank 0
-  RCP<const Import> toRootDofs, toRootConstraints;
-  bool onRoot = false;
-  // Rank 0 only, on a one-rank communicator: P^T Q P and A P with contact-local column
-  // indices, and H_c = P^T Q P + (A P)^T D (A P) with its factorization.
+  // The contact DOFs of this rank's block, and the constraints on them: on rank 0 all of
+  // them (gathered), or those this rank owns and the constraints that touch them (per rank).
+  RCP<const Map> blockDofs, blockConstraints;
+  RCP<const Import> toBlockDofs, toBlockConstraints;
+  bool perRank = false;
+  // Ranks with a nonempty block, on a one-rank communicator: P^T Q P and A P with
+  // block-local column indices, and H_c = P^T Q P + (A P)^T D (A P) with its factorization.
   RCP<const Map> localDofs, localConstraints;
   RCP<BarrierHessianOperator> hessian;
   RCP<DirectSolver> solver;
   // Scratch of apply(), which runs in every Krylov iteration; sized for `numVectors` columns.
   std::size_t numVectors = 0;
-  RCP<MultiVector> rootX, rootY, localB, localX, correction;
+  RCP<MultiVector> blockX, blockY, localB, localX, correction;
 };
 
 namespace {
 
-// Rows of M imported to `rootRows` (all on rank 0), kept on rank 0 with only the columns in
-// `columnIndex` (global id -> contact index), as a matrix on the one-rank communicator.
-RCP<CrsMatrix> rootRestriction(const CrsMatrix& M, const RCP<const Map>& rootRows, const Import& importer,
-                               const std::unordered_map<GlobalOrdinal, LocalOrdinal>& columnIndex,
-                               const RCP<const Map>& localRows, const RCP<const Map>& localColumns) {
-  RCP<CrsMatrix> gathered = Tpetra::importAndFillCompleteCrsMatrix<CrsMatrix>(
-      Teuchos::rcpFromRef(M), importer, M.getDomainMap(), rootRows);
-  if (localRows.is_null()) return Teuchos::null;
-  const LocalOrdinal numRows = static_cast<LocalOrdinal>(gathered->getNodeNumRows());
-  const std::size_t maxEntries = gathered->getNodeMaxNumRowEntries();
-  Teuchos::Array<GlobalOrdinal> cols(maxEntries);
-  Teuchos::Array<Scalar> vals(maxEntries);
-  std::vector<std::vector<GlobalOrdinal>> keptCols(numRows);
-  std::vector<std::vector<Scalar>> keptVals(numRows);
-  Teuchos::Array<std::size_t> rowLengths(numRows);
-  for (LocalOrdinal i = 0; i < numRows; ++i) {
-    std::size_t count = 0;
-    gathered->getGlobalRowCopy(rootRows->getGlobalElement(i), cols(), vals(), count);
-    for (std::size_t k = 0; k < count; ++k) {
-      auto it = columnIndex.find(cols[k]);
-      if (it == columnIndex.end()) continue;
-      keptCols[i].push_back(it->second);
-      keptVals[i].push_back(vals[k]);
-    }
-    rowLengths[i] = keptCols[i].size();
+// The DOFs that appear with a nonzero entry in A's rows on this rank, sorted.
+std::vector<GlobalOrdinal> contactDofsInRows(const CrsMatrix& A) {
+  std::vector<GlobalOrdinal> touched;
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(A.getNodeNumRows()); ++i) {
+    typename CrsMatrix::local_inds_host_view_type cols;
+    typename CrsMatrix::values_host_view_type vals;
+    A.getLocalRowView(i, cols, vals);
+    for (std::size_t k = 0; k < cols.extent(0); ++k)
+      if (vals(k) != 0.0) touched.push_back(A.getColMap()->getGlobalElement(cols(k)));
   }
-  auto result = rcp(new CrsMatrix(localRows, rowLengths()));
-  for (LocalOrdinal i = 0; i < numRows; ++i)
-    result->insertGlobalValues(i, Teuchos::ArrayView<const GlobalOrdinal>(keptCols[i]),
-                               Teuchos::ArrayView<const Scalar>(keptVals[i]));
-  result->fillComplete(localColumns, localRows);
-  return result;
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  return touched;
 }
 
-// Copies the local rows of `from` into `to` (same local length and number of columns).
-void copyLocalRows(const MultiVector& from, MultiVector& to) {
-  for (std::size_t j = 0; j < from.getNumVectors(); ++j) {
-    auto f = from.getData(j);
-    auto t = to.getDataNonConst(j);
-    for (std::size_t i = 0; i < from.getLocalLength(); ++i) t[i] = f[i];
+RCP<const Map> mapOf(const std::vector<GlobalOrdinal>& ids, const RCP<const Comm>& comm) {
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  return rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ids), 0, comm));
+}
+
+// Per rank: the contact DOFs it owns in `dofMap`, and the constraints whose rows touch them.
+void ownedBlock(const CrsMatrix& A, const RCP<const Map>& dofMap, const std::vector<GlobalOrdinal>& touched,
+                RCP<const Map>& dofs, RCP<const Map>& constraints) {
+  const RCP<const Comm> comm = dofMap->getComm();
+  Vector seen(mapOf(touched, comm)), owned(dofMap);
+  seen.putScalar(1.0);
+  owned.doExport(seen, Export(seen.getMap(), dofMap), Tpetra::INSERT);
+  std::vector<GlobalOrdinal> ownedDofs;
+  auto o = owned.getData();
+  for (std::size_t i = 0; i < owned.getLocalLength(); ++i)
+    if (o[i] != 0.0) ownedDofs.push_back(dofMap->getGlobalElement(i));
+  dofs = mapOf(ownedDofs, comm);
+  // Constraint ids carried to the owners of the DOFs they touch, through A^T's rows there.
+  const RCP<CrsMatrix> At = Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node>(
+                                Teuchos::rcpFromRef(const_cast<CrsMatrix&>(A)))
+                                .createTranspose();
+  std::vector<GlobalOrdinal> ids;
+  for (GlobalOrdinal dof : ownedDofs) {
+    typename CrsMatrix::local_inds_host_view_type cols;
+    typename CrsMatrix::values_host_view_type vals;
+    At->getLocalRowView(At->getRowMap()->getLocalElement(dof), cols, vals);
+    for (std::size_t k = 0; k < cols.extent(0); ++k)
+      if (vals(k) != 0.0) ids.push_back(At->getColMap()->getGlobalElement(cols(k)));
   }
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  constraints = mapOf(ids, comm);
+}
+
+// Whether every row of A has all its DOFs on one rank of `dofMap`, on every rank. Collective.
+bool constraintsWithinRanks(const CrsMatrix& A, const Map& dofMap) {
+  const auto columns = A.getColMap();
+  Teuchos::Array<GlobalOrdinal> ids(columns->getNodeNumElements());
+  for (long c = 0; c < ids.size(); ++c) ids[c] = columns->getGlobalElement(c);
+  Teuchos::Array<int> owners(ids.size());
+  dofMap.getRemoteIndexList(ids(), owners());
+  bool within = true;
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(A.getNodeNumRows()); ++i) {
+    typename CrsMatrix::local_inds_host_view_type cols;
+    typename CrsMatrix::values_host_view_type vals;
+    A.getLocalRowView(i, cols, vals);
+    for (std::size_t k = 1; k < cols.extent(0); ++k)
+      if (owners[cols(k)] != owners[cols(0)]) within = false;
+  }
+  return onEveryRank(*dofMap.getComm(), within);
 }
 
 }  // namespace
 
-ContactSubspaceSolver::ContactSubspaceSolver(const CrsMatrix& Q, const CrsMatrix& A)
+ContactSubspaceSolver::ContactSubspaceSolver(const CrsMatrix& Q, const CrsMatrix& A, ContactSubspaceBlocks blocks)
     : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
   s.dofMap = Q.getDomainMap();
@@ -91,53 +119,46 @@ ContactSubspaceSolver::ContactSubspaceSolver(const CrsMatrix& Q, const CrsMatrix
     throw Error("ContactSubspaceSolver: Q's row map must be its domain map");
   if (!A.getDomainMap()->isSameAs(*s.dofMap)) throw Error("ContactSubspaceSolver: A's domain map differs from Q's");
   const RCP<const Comm> comm = s.dofMap->getComm();
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-
-  // The contact DOFs: every column of A with an entry, gathered to rank 0 without repeats.
-  std::vector<GlobalOrdinal> touched;
-  {
-    const std::size_t maxEntries = A.getNodeMaxNumRowEntries();
-    Teuchos::Array<GlobalOrdinal> cols(maxEntries);
-    Teuchos::Array<Scalar> vals(maxEntries);
-    for (std::size_t i = 0; i < A.getNodeNumRows(); ++i) {
-      std::size_t count = 0;
-      A.getGlobalRowCopy(A.getRowMap()->getGlobalElement(i), cols(), vals(), count);
-      for (std::size_t k = 0; k < count; ++k)
-        if (vals[k] != 0.0) touched.push_back(cols[k]);
-    }
-    std::sort(touched.begin(), touched.end());
-    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  const std::vector<GlobalOrdinal> touched = contactDofsInRows(A);
+  if (blocks == ContactSubspaceBlocks::Auto)
+    blocks = constraintsWithinRanks(A, *s.dofMap) ? ContactSubspaceBlocks::PerRank : ContactSubspaceBlocks::Gathered;
+  s.perRank = blocks == ContactSubspaceBlocks::PerRank;
+  if (blocks == ContactSubspaceBlocks::Gathered) {
+    s.blockDofs = Tpetra::Details::computeGatherMap(Tpetra::createOneToOne(mapOf(touched, comm)), Teuchos::null);
+    s.blockConstraints = Tpetra::Details::computeGatherMap(A.getRangeMap(), Teuchos::null);
+  } else {
+    ownedBlock(A, s.dofMap, touched, s.blockDofs, s.blockConstraints);
   }
-  RCP<const Map> touchedMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(touched), 0, comm));
-  s.rootDofs = Tpetra::Details::computeGatherMap(Tpetra::createOneToOne(touchedMap), Teuchos::null);
-  s.rootConstraints = Tpetra::Details::computeGatherMap(A.getRangeMap(), Teuchos::null);
-  s.toRootDofs = rcp(new Import(s.dofMap, s.rootDofs));
-  s.toRootConstraints = rcp(new Import(A.getRowMap(), s.rootConstraints));
-  s.onRoot = comm->getRank() == 0;
+  s.toBlockDofs = rcp(new Import(s.dofMap, s.blockDofs));
+  s.toBlockConstraints = rcp(new Import(A.getRowMap(), s.blockConstraints));
 
-  std::unordered_map<GlobalOrdinal, LocalOrdinal> contactIndex;
-  if (s.onRoot) {
-    const RCP<const Comm> self = rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF));
-    s.localDofs = rcp(new Map(s.rootDofs->getNodeNumElements(), 0, self));
-    s.localConstraints = rcp(new Map(s.rootConstraints->getNodeNumElements(), 0, self));
-    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(s.rootDofs->getNodeNumElements()); ++i)
-      contactIndex[s.rootDofs->getGlobalElement(i)] = i;
+  std::unordered_map<GlobalOrdinal, LocalOrdinal> blockIndex;
+  if (s.blockDofs->getNodeNumElements() > 0) {
+    const RCP<const Comm> self = selfComm();
+    s.localDofs = rcp(new Map(s.blockDofs->getNodeNumElements(), 0, self));
+    s.localConstraints = rcp(new Map(s.blockConstraints->getNodeNumElements(), 0, self));
+    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(s.blockDofs->getNodeNumElements()); ++i)
+      blockIndex[s.blockDofs->getGlobalElement(i)] = i;
   }
-  RCP<CrsMatrix> Qc = rootRestriction(Q, s.rootDofs, *s.toRootDofs, contactIndex, s.localDofs, s.localDofs);
+  const auto blockColumn = [&blockIndex](GlobalOrdinal gid) {
+    const auto it = blockIndex.find(gid);
+    return it == blockIndex.end() ? LocalOrdinal(-1) : it->second;
+  };
+  RCP<CrsMatrix> Qc = importedBlock(Q, s.blockDofs, *s.toBlockDofs, blockColumn, s.localDofs, s.localDofs);
   RCP<CrsMatrix> Ac =
-      rootRestriction(A, s.rootConstraints, *s.toRootConstraints, contactIndex, s.localConstraints, s.localDofs);
-  if (s.onRoot) s.hessian = rcp(new BarrierHessianOperator(Qc, Ac));
+      importedBlock(A, s.blockConstraints, *s.toBlockConstraints, blockColumn, s.localConstraints, s.localDofs);
+  if (!s.localDofs.is_null()) s.hessian = rcp(new BarrierHessianOperator(Qc, Ac));
 }
 
 ContactSubspaceSolver::~ContactSubspaceSolver() = default;
 
 void ContactSubspaceSolver::setWeights(const Vector& D) {
   Impl& s = *impl_;
-  Vector rootD(s.rootConstraints);
-  rootD.doImport(D, *s.toRootConstraints, Tpetra::INSERT);
-  if (!s.onRoot || s.localDofs->getNodeNumElements() == 0) return;
+  Vector blockD(s.blockConstraints);
+  blockD.doImport(D, *s.toBlockConstraints, Tpetra::INSERT);
+  if (s.localDofs.is_null()) return;
   Vector localD(s.localConstraints);
-  copyLocalRows(rootD, localD);
+  copyLocalRows(blockD, localD);
   s.hessian->setWeights(localD);
   RCP<CrsMatrix> Hc = s.hessian->assemble();
   s.solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", Hc);
@@ -150,30 +171,32 @@ void ContactSubspaceSolver::apply(const MultiVector& X, MultiVector& Y, Teuchos:
   const std::size_t numVectors = X.getNumVectors();
   if (s.numVectors != numVectors) {
     s.numVectors = numVectors;
-    s.rootX = rcp(new MultiVector(s.rootDofs, numVectors));
-    s.rootY = rcp(new MultiVector(s.rootDofs, numVectors));
+    s.blockX = rcp(new MultiVector(s.blockDofs, numVectors));
+    s.blockY = rcp(new MultiVector(s.blockDofs, numVectors));
     s.correction = rcp(new MultiVector(s.dofMap, numVectors));
-    if (s.onRoot) {
+    if (!s.localDofs.is_null()) {
       s.localB = rcp(new MultiVector(s.localDofs, numVectors));
       s.localX = rcp(new MultiVector(s.localDofs, numVectors));
     }
   }
-  s.rootX->doImport(X, *s.toRootDofs, Tpetra::INSERT);
-  if (s.onRoot && s.localDofs->getNodeNumElements() > 0) {
+  s.blockX->doImport(X, *s.toBlockDofs, Tpetra::INSERT);
+  if (!s.localDofs.is_null()) {
     if (s.solver.is_null()) throw Error("ContactSubspaceSolver::apply called before setWeights()");
-    copyLocalRows(*s.rootX, *s.localB);
+    copyLocalRows(*s.blockX, *s.localB);
     s.solver->solve(s.localX.ptr(), s.localB.ptr());
-    copyLocalRows(*s.localX, *s.rootY);
+    copyLocalRows(*s.localX, *s.blockY);
   }
-  s.correction->putScalar(0.0);  // the export writes the contact DOFs only
-  s.correction->doExport(*s.rootY, *s.toRootDofs, Tpetra::INSERT);
+  s.correction->putScalar(0.0);  // the export writes the contact DOFs only, each from one block
+  s.correction->doExport(*s.blockY, *s.toBlockDofs, Tpetra::INSERT);
   Y.update(alpha, *s.correction, beta);
 }
+
+bool ContactSubspaceSolver::perRank() const { return impl_->perRank; }
 
 RCP<const Map> ContactSubspaceSolver::getDomainMap() const { return impl_->dofMap; }
 RCP<const Map> ContactSubspaceSolver::getRangeMap() const { return impl_->dofMap; }
 long long ContactSubspaceSolver::dimension() const {
-  return static_cast<long long>(impl_->rootDofs->getGlobalNumElements());
+  return static_cast<long long>(impl_->blockDofs->getGlobalNumElements());
 }
 
 }  // namespace signorini

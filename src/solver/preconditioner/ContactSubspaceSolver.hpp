@@ -1,10 +1,18 @@
 #pragma once
-// The exact solve on the contact subspace: with P the injection of the degrees of freedom
-// that appear in A (the contact DOFs), applies P (P^T H P)^-1 P^T for H = Q + A^T D A.
-// P^T H P has one row per contact DOF, so it is small, and it is factored by Amesos2's KLU2
-// on rank 0 alone: Debian's Amesos2 solvers are wrong on communicators of more than one
-// rank, so the subspace residual is gathered to rank 0, solved there on a one-rank
-// communicator, and the correction scattered back.
+// The solve on the contact subspace: with P the injection of the degrees of freedom that
+// appear in A (the contact DOFs), applies P (P^T H P)^-1 P^T for H = Q + A^T D A, exactly or
+// block by block. P^T H P has one row per contact DOF and is factored by Amesos2's KLU2 on
+// one-rank communicators (Debian's Amesos2 solvers are wrong on more than one rank):
+//   Gathered: the whole of it on rank 0; every application gathers the subspace residual
+//             to rank 0 and scatters the correction back. Exact on any rank count.
+//   PerRank:  each rank factors the block of the contact DOFs it owns (P_r^T H P_r, with
+//             every constraint that touches them) and applies its inverse, block Jacobi over
+//             the ranks: no step gathers the subspace. The same as Gathered on one rank;
+//             close to it when every constraint's DOFs lie on one rank (nodal constraints:
+//             the blocks then drop only stiffness couplings), far from it when constraints
+//             that couple several nodes (weighted gaps) are split between ranks (their large
+//             barrier weights couple the blocks; CG stalled on 3D P1 nx = 40 at 4 ranks).
+//   Auto:     PerRank when every constraint's DOFs lie on one rank, Gathered otherwise.
 #include <memory>
 
 #include <Tpetra_Operator.hpp>
@@ -13,13 +21,16 @@
 
 namespace signorini {
 
+enum class ContactSubspaceBlocks { Auto, Gathered, PerRank };
+
 class ContactSubspaceSolver : public Operator {
  public:
-  // Q and A as in the contact QP; Q's row map must be its domain map.
-  ContactSubspaceSolver(const CrsMatrix& Q, const CrsMatrix& A);
+  // Q and A as in the contact QP; Q's row map must be its domain map. Collective.
+  ContactSubspaceSolver(const CrsMatrix& Q, const CrsMatrix& A,
+                        ContactSubspaceBlocks blocks = ContactSubspaceBlocks::Auto);
   ~ContactSubspaceSolver() override;
 
-  // D on A's range map: refactors P^T (Q + A^T D A) P.
+  // D on A's range map: refactors P^T (Q + A^T D A) P, or each rank's block of it.
   void setWeights(const Vector& D);
 
   // Y = alpha P (P^T H P)^-1 P^T X + beta Y.
@@ -32,6 +43,8 @@ class ContactSubspaceSolver : public Operator {
 
   // Number of contact DOFs (the dimension of the subspace).
   long long dimension() const;
+  // Whether each rank solves its own block (PerRank, or Auto resolved to it).
+  bool perRank() const;
 
  private:
   struct Impl;

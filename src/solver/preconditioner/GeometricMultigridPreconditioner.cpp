@@ -17,6 +17,8 @@
 #include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/solver/GeometricGrid.hpp"
+#include "solver/preconditioner/GatheredDirectSolver.hpp"
+#include "solver/preconditioner/MueLuPreconditioner.hpp"
 #include "solver/preconditioner/RigidBodyModes.hpp"
 
 namespace signorini {
@@ -277,7 +279,7 @@ Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParamete
 
 GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
     const GeometricGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates, int blockSize, long long coarsestSize,
-    const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps)
+    long long directSolveSize, const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps)
     : smoother_(defaultSmootherParameters()), eigenvalueUpdateSteps_(eigenvalueUpdateSteps) {
   smoother_.setParameters(smoother);
   // One step is the Rayleigh quotient of the start: at 2D nx = 800 CG then did not converge.
@@ -323,8 +325,13 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
     levels_.push_back(coarse);
   }
 
-  // The coarsest level's rigid body modes and coordinates for MueLu.
   const Level& coarsest = *levels_.back();
+  directCoarsest_ = static_cast<long long>(coarsest.dofMap->getGlobalNumElements()) <= directSolveSize;
+  if (directCoarsest_) {
+    coarse_ = std::make_unique<GatheredDirectSolver>();
+    return;
+  }
+  // The coarsest level's rigid body modes and coordinates for MueLu.
   RCP<const MultiVector> nullspace, coarseCoordinates;
   if (levels_.size() == 1) {
     coarseCoordinates = Teuchos::rcpFromRef(coordinates);
@@ -362,7 +369,7 @@ RCP<const CrsMatrix> GeometricMultigridPreconditioner::prolongator(int level) co
 namespace {
 
 // One V-cycle over the levels: Chebyshev before and after each coarse correction, the
-// coarse operator (MueLu) at the bottom.
+// coarse operator (a direct solve or MueLu) at the bottom.
 class VCycle : public Operator {
  public:
   VCycle(std::vector<RCP<CrsMatrix>> A, std::vector<RCP<Chebyshev>> S, std::vector<RCP<CrsMatrix>> P,
@@ -479,7 +486,7 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
     smoothers.push_back(level.smoother);
   }
   {
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: coarsest level (MueLu)"));
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: coarsest level"));
     coarse_->compute(levels_.back()->A, reuse && !cycle_.is_null());
   }
   cycle_ = rcp(new VCycle(matrices, smoothers, prolongators, restrictions, coarse_->getOperator()));

@@ -3,8 +3,10 @@
 // (for a box mesh, box grids with half the cells of the one above; a P_k space, k > 1, first
 // goes to P1 on its own mesh's grid), each a P1 space, joined by P1 interpolation P. The
 // coarse matrices are Galerkin products P^T A P, the smoother is Ifpack2's Chebyshev, and
-// once a grid has fewer unknowns than "coarsest size" or has no coarser one, MueLu's
-// algebraic multigrid, with the grid's rigid body modes, takes over.
+// once a grid has fewer unknowns than "coarsest size" or has no coarser one, that grid is
+// solved exactly (gathered to rank 0 and factored) when it has at most "direct solve size"
+// unknowns, and MueLu's algebraic multigrid, with the grid's rigid body modes, takes over
+// there otherwise.
 // The cycle is a V-cycle, symmetric positive definite for CG.
 //
 // Why: smoothed aggregation on these meshes needs more CG iterations as the mesh is refined
@@ -23,7 +25,6 @@
 
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/solver/GeometricGrid.hpp"
-#include "solver/preconditioner/MueLuPreconditioner.hpp"
 #include "solver/preconditioner/MultilevelPreconditioner.hpp"
 
 namespace signorini {
@@ -42,7 +43,8 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // default, 5, is Preconditioner/geometric: eigenvalue update steps in NewtonSystemSolver).
   // Throws InputError when the nodes do not contain the coarse grid's vertices.
   GeometricMultigridPreconditioner(const GeometricGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates,
-                                   int blockSize, long long coarsestSize, const Teuchos::ParameterList& smoother,
+                                   int blockSize, long long coarsestSize, long long directSolveSize,
+                                   const Teuchos::ParameterList& smoother,
                                    const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps);
   ~GeometricMultigridPreconditioner() override;
 
@@ -52,6 +54,8 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // Grids below the fine level (0: MueLu alone), and their global unknowns, finest first.
   int geometricLevels() const { return static_cast<int>(levels_.size()) - 1; }
   std::vector<long long> levelSizes() const;
+  // Whether the coarsest level is solved exactly (else by MueLu).
+  bool directCoarsestSolve() const { return directCoarsest_; }
   // The interpolation from level l + 1 to level l (l = 0: to the fine space). Coarse DOF
   // blockSize * v + c is component c at vertex v of that level's grid (GeometricGrid numbering).
   RCP<const CrsMatrix> prolongator(int level) const;
@@ -65,7 +69,8 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   std::vector<std::shared_ptr<Level>> levels_;  // levels_[0] is the fine space
   Teuchos::ParameterList smoother_;
   int eigenvalueUpdateSteps_;
-  std::unique_ptr<MueLuPreconditioner> coarse_;
+  bool directCoarsest_ = false;
+  std::unique_ptr<MultilevelPreconditioner> coarse_;
   RCP<Operator> cycle_;
 };
 

@@ -37,10 +37,11 @@ AssembledProblem box(int dim, int cells, int degree, bool clamped = true) {
   return buildProblem(p, Tpetra::getDefaultComm());
 }
 
+// `directSolveSize` 0: MueLu below the coarsest grid.
 GeometricMultigridPreconditioner multigrid(const ContactQP& qp, long long coarsestSize = 200,
-                                           int eigenvalueUpdateSteps = 5) {
+                                           int eigenvalueUpdateSteps = 5, long long directSolveSize = 5000) {
   return GeometricMultigridPreconditioner(*qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize, coarsestSize,
-                                          Teuchos::ParameterList(), Teuchos::ParameterList(), eigenvalueUpdateSteps);
+                                          directSolveSize, Teuchos::ParameterList(), Teuchos::ParameterList(), eigenvalueUpdateSteps);
 }
 
 // A box clamped on its top face with contact on its bottom one, and the Hessians
@@ -156,19 +157,39 @@ TEST(GeometricMultigrid, CgCountsDoNotGrowWithTheMesh) {
   }
 }
 
-// x^T M y = y^T M x: CG needs a symmetric preconditioner.
+// x^T M y = y^T M x: CG needs a symmetric preconditioner, with either coarsest solve.
 TEST(GeometricMultigrid, CycleIsSymmetric) {
   const AssembledProblem problem = box(3, 8, 1);
-  GeometricMultigridPreconditioner gmg = multigrid(problem.qp, 50);
-  gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
-  ASSERT_EQ(gmg.geometricLevels(), 2);
-  Vector x(problem.qp.Q->getDomainMap()), y(x.getMap()), Mx(x.getMap()), My(x.getMap());
+  for (long long directSolveSize : {0, 5000}) {
+    GeometricMultigridPreconditioner gmg = multigrid(problem.qp, 50, 5, directSolveSize);
+    gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
+    ASSERT_EQ(gmg.geometricLevels(), 2);
+    EXPECT_EQ(gmg.directCoarsestSolve(), directSolveSize > 0);
+    Vector x(problem.qp.Q->getDomainMap()), y(x.getMap()), Mx(x.getMap()), My(x.getMap());
+    x.randomize();
+    y.randomize();
+    gmg.getOperator()->apply(x, Mx);
+    gmg.getOperator()->apply(y, My);
+    EXPECT_NEAR(y.dot(Mx), x.dot(My), 1e-11 * std::abs(y.dot(Mx))) << "direct solve size " << directSolveSize;
+    EXPECT_GT(x.dot(Mx), 0.0);
+  }
+}
+
+// The coarsest grid is factored when it has at most "direct solve size" unknowns: with no
+// geometric level below the fine one, the cycle is then Q^-1 itself.
+TEST(GeometricMultigrid, SmallCoarsestGridIsSolvedExactly) {
+  const AssembledProblem problem = box(2, 5, 1);  // 5 cells cannot be halved: one level
+  const ContactQP& qp = problem.qp;
+  EXPECT_FALSE(multigrid(qp, 1, 5, 71).directCoarsestSolve());  // 72 unknowns
+  GeometricMultigridPreconditioner gmg = multigrid(qp, 1, 5, 72);
+  ASSERT_TRUE(gmg.directCoarsestSolve());
+  gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
+  Vector x(qp.Q->getDomainMap()), Qx(x.getMap()), MQx(x.getMap());
   x.randomize();
-  y.randomize();
-  gmg.getOperator()->apply(x, Mx);
-  gmg.getOperator()->apply(y, My);
-  EXPECT_NEAR(y.dot(Mx), x.dot(My), 1e-11 * std::abs(y.dot(Mx)));
-  EXPECT_GT(x.dot(Mx), 0.0);
+  qp.Q->apply(x, Qx);
+  gmg.getOperator()->apply(Qx, MQx);
+  MQx.update(-1.0, x, 1.0);
+  EXPECT_LT(MQx.norm2(), 1e-10 * x.norm2());
 }
 
 // Between Newton steps only A^T D A changes; the coarse matrices are then updated in place
@@ -254,7 +275,7 @@ TEST(GeometricMultigrid, RejectsAGridTheMeshDoesNotRefine) {
   const AssembledProblem problem = box(2, 8, 1);
   BoxGrid wrong = dynamic_cast<const BoxGrid&>(*problem.qp.grid);
   wrong.cells = {6, 6, 1};  // halved: vertices at thirds, which the 8-cell mesh lacks
-  EXPECT_THROW(GeometricMultigridPreconditioner(wrong, *problem.qp.Qmatrix(), *problem.qp.coordinates, 2, 1,
+  EXPECT_THROW(GeometricMultigridPreconditioner(wrong, *problem.qp.Qmatrix(), *problem.qp.coordinates, 2, 1, 0,
                                                 Teuchos::ParameterList(), Teuchos::ParameterList(), 5),
                InputError);
 }

@@ -1,0 +1,34 @@
+#pragma once
+// An exact solve with a small distributed matrix, for the coarsest level of a multigrid
+// hierarchy: the matrix is gathered to rank 0 and factored there by Amesos2's KLU2 on a
+// one-rank communicator (Debian's Amesos2 solvers are wrong on more than one rank); each
+// application gathers the right-hand side to rank 0 and scatters the solution back.
+// Why: an algebraic hierarchy rebuilt at every Newton step for a matrix of a few hundred
+// unknowns cost more than the factorization, and solved only approximately.
+#include <memory>
+
+#include "signorini/core/TpetraTypes.hpp"
+#include "solver/preconditioner/MultilevelPreconditioner.hpp"
+
+namespace signorini {
+
+class GatheredDirectSolver : public MultilevelPreconditioner {
+ public:
+  GatheredDirectSolver();
+  ~GatheredDirectSolver() override;
+
+  // Gathers and factors A (nonsingular; its row, range and domain maps the same set of rows).
+  // `reuse` is ignored: a factorization of a few thousand unknowns is cheaper than MueLu's
+  // reuse machinery. Collective.
+  void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
+  // Y = alpha A^-1 X + beta Y for the last A computed.
+  RCP<Operator> getOperator() const override;
+
+ private:
+  struct Factorization;
+  class RootSolve;
+  std::shared_ptr<Factorization> factorization_;
+  RCP<Operator> op_;
+};
+
+}  // namespace signorini
