@@ -75,9 +75,8 @@ void ownedBlock(const CrsMatrix& A, const RCP<const Map>& dofMap, const std::vec
     if (o[i] != 0.0) ownedDofs.push_back(dofMap->getGlobalElement(i));
   dofs = mapOf(ownedDofs, comm);
   // Constraint ids carried to the owners of the DOFs they touch, through A^T's rows there.
-  const RCP<CrsMatrix> At = Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node>(
-                                Teuchos::rcpFromRef(const_cast<CrsMatrix&>(A)))
-                                .createTranspose();
+  const RCP<CrsMatrix> At =
+      Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node>(Teuchos::rcpFromRef(A)).createTranspose();
   std::vector<GlobalOrdinal> ids;
   for (GlobalOrdinal dof : ownedDofs) {
     typename CrsMatrix::local_inds_host_view_type cols;
