@@ -65,10 +65,9 @@ void GatheredDirectSolver::compute(const RCP<CrsMatrix>& A, bool) {
   if (factorization_ && factorization_->rowMap->isSameAs(*A->getRowMap())) {
     *f = *factorization_;  // the maps and the import stay
   } else {
-    f->rowMap = A->getRowMap();
-    f->rootRows = Tpetra::Details::computeGatherMap(f->rowMap, Teuchos::null);
-    f->toRoot = rcp(new Import(f->rowMap, f->rootRows));
-    if (f->rowMap->getComm()->getRank() == 0)
+    f->rootRows = Tpetra::Details::computeGatherMap(A->getRowMap(), Teuchos::null);
+    f->toRoot = rcp(new Import(A->getRowMap(), f->rootRows));
+    if (A->getRowMap()->getComm()->getRank() == 0)
       f->localRows = rcp(new Map(f->rootRows->getNodeNumElements(), 0, selfComm()));
   }
   f->rowMap = A->getRowMap();

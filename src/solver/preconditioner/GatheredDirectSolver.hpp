@@ -4,7 +4,7 @@
 // one-rank communicator (Debian's Amesos2 solvers are wrong on more than one rank); each
 // application gathers the right-hand side to rank 0 and scatters the solution back.
 // Why: an algebraic hierarchy rebuilt at every Newton step for a matrix of a few hundred
-// unknowns cost more than the factorization, and solved only approximately.
+// unknowns costs more than the factorization, and solves only approximately.
 #include <memory>
 
 #include "signorini/core/TpetraTypes.hpp"
