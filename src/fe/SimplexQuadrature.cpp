@@ -39,11 +39,45 @@ void gaussJacobi(int n, int alpha, std::vector<double>& t, std::vector<double>& 
   }
 }
 
+// Adds the points of one symmetry orbit: every distinct permutation of the barycentric
+// coordinates `lambda` (dim + 1 of them), each with weight w. Points are the barycentric
+// coordinates 1..dim.
+void addOrbit(QuadratureRule& rule, std::vector<double> lambda, double w) {
+  std::sort(lambda.begin(), lambda.end());
+  do {
+    rule.points.insert(rule.points.end(), lambda.begin() + 1, lambda.end());
+    rule.weights.push_back(w);
+  } while (std::next_permutation(lambda.begin(), lambda.end()));
+}
+
+// Fully symmetric degree-5 rules with positive weights and interior points: Radon's 7-point
+// rule on the triangle, and the 14-point rule on the tetrahedron (Walkington, "Quadrature on
+// simplices of arbitrary dimension", 2000; also Keast 1986). The collapsed rule of the same
+// degree needs 9 and 27 points; loads are integrated with degree 5 on P1 cells.
+QuadratureRule symmetricDegree5Rule(int dim) {
+  QuadratureRule rule;
+  rule.dim = dim;
+  if (dim == 2) {
+    const double r = std::sqrt(15.0);
+    const double a1 = (6.0 - r) / 21.0, a2 = (6.0 + r) / 21.0;
+    addOrbit(rule, {1.0 / 3, 1.0 / 3, 1.0 / 3}, 9.0 / 80);
+    addOrbit(rule, {a1, a1, 1 - 2 * a1}, (155.0 - r) / 2400);
+    addOrbit(rule, {a2, a2, 1 - 2 * a2}, (155.0 + r) / 2400);
+  } else {
+    const double a1 = 0.092735250310891226402, a2 = 0.31088591926330060980, b = 0.045503704125649649492;
+    addOrbit(rule, {a1, a1, a1, 1 - 3 * a1}, 0.012248840519393658257);
+    addOrbit(rule, {a2, a2, a2, 1 - 3 * a2}, 0.018781320953002641800);
+    addOrbit(rule, {b, b, 0.5 - b, 0.5 - b}, 0.0070910034628469110730);
+  }
+  return rule;
+}
+
 }  // namespace
 
 QuadratureRule simplexQuadrature(int dim, int degree) {
   if (dim < 1 || dim > 3) throw InputError("simplex quadrature: dimension must be 1, 2 or 3, got " + std::to_string(dim));
   if (degree < 0) throw InputError("simplex quadrature: degree must be >= 0, got " + std::to_string(degree));
+  if (dim >= 2 && (degree == 4 || degree == 5)) return symmetricDegree5Rule(dim);
   const int n = degree / 2 + 1;
   // Direction j of the collapsed cube carries the weight (1-t)^(dim-1-j) of the collapse.
   std::vector<double> t[3], w[3];
