@@ -125,6 +125,50 @@ LocalIndices localIndices(const DistributedSpace& ds, const FEMatrix& K, const V
   return local;
 }
 
+// Adds element matrices straight into the local CSR arrays of the overlap matrix (valid
+// between beginAssembly and endAssembly). The dim rows of a node share one column pattern, in
+// which a neighbour's dim components are adjacent columns: one search per pair of element
+// nodes finds all dim * dim entries of the pair, each still checked against its column.
+class ElementMatrixFill {
+ public:
+  explicit ElementMatrixFill(const FEMatrix& K) : local_(K.getLocalMatrixHost()) {}
+
+  // Ke is the (dim * npc)^2 element matrix in row-major order, rows and cols its local
+  // row and column indices.
+  void add(int dim, int npc, const LocalOrdinal* rows, const LocalOrdinal* cols, const double* Ke) const {
+    const int n = dim * npc;
+    for (int i = 0; i < npc; ++i) {
+      const LocalOrdinal* row = rows + dim * i;
+      for (int j = 0; j < npc; ++j) {
+        const LocalOrdinal* col = cols + dim * j;
+        const std::size_t offset = find(row[0], col[0]) - local_.graph.row_map(row[0]);
+        for (int a = 0; a < dim; ++a) {
+          const std::size_t begin = local_.graph.row_map(row[a]), end = local_.graph.row_map(row[a] + 1);
+          for (int e = 0; e < dim; ++e) {
+            std::size_t k = begin + offset + e;
+            if (k >= end || local_.graph.entries(k) != col[e]) k = find(row[a], col[e]);
+            local_.values(k) += Ke[(dim * i + a) * n + dim * j + e];
+          }
+        }
+      }
+    }
+  }
+
+ private:
+  // The position of (row, col) in the CSR arrays; rows are sorted by Tpetra's fillComplete.
+  std::size_t find(LocalOrdinal row, LocalOrdinal col) const {
+    const auto& entries = local_.graph.entries;
+    const LocalOrdinal* begin = entries.data() + local_.graph.row_map(row);
+    const LocalOrdinal* end = entries.data() + local_.graph.row_map(row + 1);
+    const LocalOrdinal* at = std::lower_bound(begin, end, col);
+    if (at == end || *at != col) at = std::find(begin, end, col);
+    if (at == end) throw Error("assembly: an element entry lies outside the matrix graph");
+    return at - entries.data();
+  }
+
+  FEMatrix::local_matrix_host_type local_;
+};
+
 // Symmetric elimination of prescribed DOFs inside one element: their known values move to
 // the right-hand side of the free DOFs, their rows and columns are zeroed. The unit
 // diagonal and the prescribed value are set once, by the owner, after assembly.
@@ -435,15 +479,15 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   };
 
   auto bData = bOverlap.getDataNonConst();
-  for (long long cell = 0; cell < mesh.numCells(); ++cell) {
-    gatherCell(cell);
-    elasticityStiffness(space.basis(), vertexCoords.data(), problem.material, Ke);
-    bodyForceLoad(space.basis(), vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
-    eliminatePrescribed(fixed, value, n, Ke, Fe);
-    for (int i = 0; i < n; ++i) {
-      if (K->sumIntoLocalValues(rows[i], n, &Ke[i * n], cols.data()) != n)
-        throw Error("assembly: an element entry lies outside the matrix graph");
-      bData[entries[i]] += Fe[i];
+  {
+    const ElementMatrixFill fill(*K);
+    for (long long cell = 0; cell < mesh.numCells(); ++cell) {
+      gatherCell(cell);
+      elasticityStiffness(space.basis(), vertexCoords.data(), problem.material, Ke);
+      bodyForceLoad(space.basis(), vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
+      eliminatePrescribed(fixed, value, n, Ke, Fe);
+      fill.add(dim, npc, rows.data(), cols.data(), Ke.data());
+      for (int i = 0; i < n; ++i) bData[entries[i]] += Fe[i];
     }
   }
   for (const BoundaryField& bc : problem.traction) {
