@@ -161,13 +161,16 @@ void LagrangeSpace::build(const std::vector<double>* nonVertexCoordinates) {
       int size = 0;
       for (int i = 0; i <= d; ++i)
         if (a[i] > 0) key[size++] = vertex[i] << 2 | a[i];  // a_i <= 3 fits two bits
-      nodes[local] = nodeIndex.findOrInsert(sortedKey(key, size), numNodes_);
+      key = sortedKey(key, size);
+      nodes[local] = nodeIndex.findOrInsert(key, numNodes_);
       if (nodes[local] != numNodes_) continue;
       ++numNodes_;
       if (nonVertexCoordinates) continue;
+      // Summed in key order (by vertex id), not cell order: the value is the node's own,
+      // the same whichever cell meets it first and in any part numbered in global order.
       for (int j = 0; j < d; ++j) {
         double x = 0.0;
-        for (int i = 0; i <= d; ++i) x += a[i] * mesh.vertices[d * vertex[i] + j];
+        for (int i = 0; i < size; ++i) x += (key[i] & 3) * mesh.vertices[d * (key[i] >> 2) + j];
         nodeCoordinates_.push_back(x / degree);
       }
     }

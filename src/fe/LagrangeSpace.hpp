@@ -22,10 +22,11 @@ class LagrangeSpace {
   LagrangeSpace(const SimplexMesh& mesh, int degree);
   LagrangeSpace(SimplexMesh&&, int) = delete;  // would keep a reference to a temporary
 
+  // A node past the vertices sits at sum_i a_i x_i / degree, summed in increasing vertex id:
+  // any part of a mesh whose vertices keep the global order computes the same bits.
   // The space of a part of a larger mesh, whose nodes past the vertices take the given
-  // coordinates (dim each, in node order) instead of computing them: a face node's sum of
-  // three vertices depends on the cell that meets it first, so only the whole mesh's values
-  // make the part bit-identical to it. Throws InputError if the count does not fit.
+  // coordinates (dim each, in node order) instead of computing them. Throws InputError if
+  // the count does not fit.
   LagrangeSpace(const SimplexMesh& mesh, int degree, const std::vector<double>& nonVertexCoordinates);
   LagrangeSpace(SimplexMesh&&, int, const std::vector<double>&) = delete;
 
