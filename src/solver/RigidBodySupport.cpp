@@ -94,7 +94,7 @@ std::string vectorText(const double* v, int dim, bool keepSign) {
   std::string text = "(";
   for (int c = 0; c < dim; ++c) {
     char number[32];
-    const double value = std::abs(v[c]) < 1e-8 * norm ? 0.0 : v[c] / norm;
+    const double value = std::abs(v[c]) < 1e-8 * std::abs(norm) ? 0.0 : v[c] / norm;
     std::snprintf(number, sizeof number, "%s%.3g", c ? ", " : "", value);
     text += number;
   }
