@@ -8,6 +8,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Map.hpp>
 
+#include "assembly/BoxMeshPart.hpp"
 #include "assembly/GlobalPartition.hpp"
 #include "assembly/MeshPart.hpp"
 #include "core/Collectives.hpp"
@@ -62,8 +63,29 @@ DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, std::shared_ptr<
   if (rank == 0) malloc_trim(0);  // glibc keeps freed heap pages resident: hand them back
 #endif
 
+  adopt(std::move(part), degree);
+}
+
+DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, const BoxGrid& box, int degree) : comm_(comm) {
+  const BoxDecomposition blocks = decomposeBox(box.dim, box.cells, comm->getSize());
+  if (blocks.numBlocks() != comm->getSize()) {  // more ranks than the boxes can be cut into
+    std::shared_ptr<const SimplexMesh> global;
+    detail::runOnRoot(*comm_, [&] {
+      global = std::make_shared<const SimplexMesh>(makeBoxMesh(box.dim, box.cells, box.lengths));
+    });
+    *this = DistributedSpace(comm, std::move(global), degree);
+    return;
+  }
+  detail::DistributedBoxPart part = detail::makeBoxMeshPart(comm_, box, blocks, degree);
+  numGlobalNodes_ = part.numGlobalNodes;
+  numGlobalCells_ = part.numGlobalCells;
+  adopt(std::move(part.part), degree);
+}
+
+void DistributedSpace::adopt(detail::MeshPart&& part, int degree) {
+  const int rank = comm_->getRank();
   mesh_ = std::make_shared<const SimplexMesh>(std::move(part.mesh));
-  // Rank 0 numbered the part's nodes as this space does; a mismatch is a bug, not an input error.
+  // The part's node data follows this space's numbering; a mismatch is a bug, not an input error.
   bool consistent = true;
   try {
     space_ = std::make_unique<LagrangeSpace>(*mesh_, degree, part.nodeCoordinates);

@@ -1,14 +1,17 @@
 #pragma once
 // The vector-valued P_k space of a mesh partitioned over the ranks of a communicator.
 // Nodes are renumbered so that each rank owns a contiguous range (rank order); degrees of
-// freedom are dof = dim * node + component. Rank 0 alone holds the global mesh, once: it
-// builds the global space, partitions the cells with METIS and sends every rank its part.
-// From then on each rank holds only its cells, as a mesh of their own, and the P_k space
-// on them; the nodes of those cells are its overlap (owned first, then ghosts).
+// freedom are dof = dim * node + component. Each rank holds only its cells, as a mesh of
+// their own, and the P_k space on them; the nodes of those cells are its overlap (owned
+// first, then ghosts). A general mesh is held once, by rank 0 alone: it builds the global
+// space, partitions the cells with METIS and sends every rank its part. A box mesh is made
+// by every rank for its own block of boxes, with no global mesh anywhere.
 #include <cstddef>
 #include <memory>
 #include <vector>
 
+#include "assembly/MeshPart.hpp"
+#include "fe/BoxGrid.hpp"
 #include "fe/LagrangeSpace.hpp"
 #include "fe/SimplexMesh.hpp"
 #include "signorini/core/TpetraTypes.hpp"
@@ -22,6 +25,12 @@ class DistributedSpace {
   // Throws on every rank InputError for a missing or inconsistent mesh or a bad degree,
   // Error if the partition fails.
   DistributedSpace(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> globalMesh, int degree);
+
+  // Collective. The space of makeBoxMesh(box.dim, box.cells, box.lengths), cut into one block
+  // of boxes per rank (decomposeBox); when the box counts admit no such blocks, rank 0 makes
+  // the global mesh and partitions it as above. Throws on every rank InputError for a bad
+  // box or degree.
+  DistributedSpace(const RCP<const Comm>& comm, const BoxGrid& box, int degree);
 
   const RCP<const Comm>& comm() const { return comm_; }
   // This rank's cells as a mesh (vertices and cells renumbered locally, in global order,
@@ -57,10 +66,13 @@ class DistributedSpace {
   const std::vector<long long>& overlapSpaceNodes() const { return overlapSpaceNodes_; }
 
   // What the serial phase cost rank 0: heap bytes of the global mesh, the global space and
-  // the partition arrays (from their capacities), the same on every rank.
+  // the partition arrays (from their capacities), the same on every rank; 0 without one.
   std::size_t serialPhaseBytes() const { return serialPhaseBytes_; }
 
  private:
+  // Takes this rank's part: builds the space on it, the owned and overlap maps.
+  void adopt(detail::MeshPart&& part, int degree);
+
   RCP<const Comm> comm_;
   std::shared_ptr<const SimplexMesh> mesh_;
   std::unique_ptr<LagrangeSpace> space_;

@@ -24,6 +24,7 @@
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/ElasticityAssembler.hpp"
 #include "core/Collectives.hpp"
+#include "core/CommunicationPhase.hpp"
 #include "core/ParameterValidation.hpp"
 #include "core/RootTask.hpp"
 #include "io/RunSummary.hpp"
@@ -336,11 +337,17 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   const ProblemDefinition& def = problem.definition;
   const long long n = problem.qp.b->getGlobalLength(), m = problem.qp.d->getGlobalLength();
   const double serialMeshMiB = problem.space->serialPhaseBytes() / (1024.0 * 1024.0);
-  if (root)
+  if (root) {
     out << "Signorini: problem \"" << def.name << "\": d = " << def.dim << ", P" << def.degree << ", "
-        << problem.space->numGlobalCells() << " cells (serial mesh phase on rank 0: " << serialMeshMiB
-        << " MiB of arrays, peak resident +" << problem.serialMeshPeakMiB << " MiB), n = " << n << ", m = " << m << ", " << comm->getSize()
-        << " MPI rank(s); setup " << problem.setupSeconds << " s, assembly " << problem.assemblySeconds << " s\n";
+        << problem.space->numGlobalCells() << " cells (";
+    if (problem.space->serialPhaseBytes() > 0)
+      out << "serial mesh phase on rank 0: " << serialMeshMiB << " MiB of arrays, ";
+    else
+      out << "each rank made its own part, ";
+    out << "setup peak resident on rank 0 +" << problem.serialMeshPeakMiB << " MiB), n = " << n << ", m = " << m
+        << ", " << comm->getSize() << " MPI rank(s); setup " << problem.setupSeconds << " s, assembly "
+        << problem.assemblySeconds << " s\n";
+  }
 
   if (!cl.exportQp.empty()) {
     exportQp(problem, cl.exportQp, *comm);
@@ -354,6 +361,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   SolveResult result;
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve"));
+    const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::solve);
     result = solver.solve(problem.qp, nullptr, &log);
   }
   solveTime.stop();
@@ -362,6 +370,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   const bool finite = isFinite(result);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: output"));
+    const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::output);
     std::optional<ContactStatistics> contact;
     if (finite)
       contact = writeSolutionOutputs(problem, result, output, directory, out);

@@ -14,9 +14,9 @@
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/ElasticityAssembler.hpp"
 #include "core/Collectives.hpp"
+#include "core/CommunicationPhase.hpp"
 #include "core/RootTask.hpp"
 #include "fe/BoxGrid.hpp"
-#include "fe/BoxMesh.hpp"
 #include "fe/GmshMesh.hpp"
 #include "problem/MemoryEstimate.hpp"
 #include "signorini/core/Error.hpp"
@@ -52,42 +52,39 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
   Teuchos::Time setup("setup"), assembly("assembly");
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: mesh and space"));
+    const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::meshAndSpace);
     setup.start(true);
     const double residentBefore = residentMiB();
-    // Only rank 0 makes the global mesh, once; DistributedSpace frees it after sending each
-    // rank its part. A Gmsh file decides the dimension the rest of the definition is read with.
+    // Every rank makes its own part of a box mesh. A Gmsh mesh is read by rank 0 alone,
+    // once; DistributedSpace frees it after sending each rank its part, and its dimension
+    // decides the one the rest of the definition is read with.
     const GmshSource gmsh = readGmshSource(problem);
-    ProblemDefinition def;
     if (gmsh.file.empty()) {
-      def = readProblemDefinition(problem);
+      ProblemDefinition def = readProblemDefinition(problem);
       checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree, *comm);
-    }
-    std::shared_ptr<SimplexMesh> mesh;
-    detail::runOnRoot(*comm, [&] {
-      if (!gmsh.file.empty()) {
+      result.space = std::make_unique<DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
+      result.definition = std::move(def);
+    } else {
+      std::shared_ptr<SimplexMesh> mesh;
+      detail::runOnRoot(*comm, [&] {
         std::filesystem::path file(gmsh.file);
         if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
         mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor));
-      } else {
-        mesh = std::make_shared<SimplexMesh>(makeBoxMesh(def.dim, def.cells, def.lengths));
-      }
-    });
-    if (!gmsh.file.empty()) {
+      });
       int dim = mesh ? mesh->dim : 0;
       Teuchos::broadcast(*comm, 0, 1, &dim);
-      def = readProblemDefinition(problem, dim);
-    }
-    result.definition = std::move(def);
-    result.space = std::make_unique<DistributedSpace>(comm, std::move(mesh), result.definition.degree);
-    if (!gmsh.file.empty())
+      result.definition = readProblemDefinition(problem, dim);
+      result.space = std::make_unique<DistributedSpace>(comm, std::move(mesh), result.definition.degree);
       checkMemoryFits(static_cast<double>(result.definition.dim) * result.space->numGlobalNodes(),
                       result.definition.dim, result.definition.degree, *comm);
+    }
     setup.stop();
     result.serialMeshPeakMiB = std::max(0.0, peakResidentMiB() - residentBefore);
     Teuchos::broadcast(*comm, 0, 1, &result.serialMeshPeakMiB);
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: assembly"));
+    const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::assembly);
     assembly.start(true);
     result.qp = assembleContactQP(*result.space, result.definition);
     if (result.definition.meshType == "box")

@@ -1,7 +1,8 @@
 // The distributed space holds only its rank's part of the mesh, and that part agrees with the
 // global mesh: cells, node ids, owners and boundary node sets (checked against a global
 // space the test builds on every rank), with every global cell and boundary facet on
-// exactly one rank.
+// exactly one rank. Both ways of making the parts: partitioned by rank 0, and made by every
+// rank for its block of boxes.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <Tpetra_Map.hpp>
 
 #include "assembly/DistributedSpace.hpp"
+#include "fe/BoxGrid.hpp"
 #include "fe/BoxMesh.hpp"
 #include "signorini/core/Error.hpp"
 
@@ -33,6 +35,7 @@ long long sumOverRanks(const Comm& comm, long long local) { return sumOverRanks(
 
 struct Case {
   int dim, degree;
+  bool blocks;  // every rank makes its block of boxes, instead of rank 0 partitioning
 };
 
 class DistributedSpaceTest : public ::testing::TestWithParam<Case> {};
@@ -41,18 +44,22 @@ TEST_P(DistributedSpaceTest, EachRankHoldsOnlyItsPartOfTheGlobalMesh) {
   const Case k = GetParam();
   auto comm = Tpetra::getDefaultComm();
   const int rank = comm->getRank(), size = comm->getSize();
-  const SimplexMesh global = k.dim == 2 ? makeBoxMesh(2, {7, 5, 1}, {1.0, 0.7, 1.0})
-                                        : makeBoxMesh(3, {3, 4, 3}, {1.0, 0.8, 0.6});
+  const BoxGrid box = k.dim == 2 ? BoxGrid(2, {7, 5, 1}, {1.0, 0.7, 1.0}) : BoxGrid(3, {3, 4, 3}, {1.0, 0.8, 0.6});
+  const SimplexMesh global = makeBoxMesh(box.dim, box.cells, box.lengths);
   const LagrangeSpace globalSpace(global, k.degree);
   // Only rank 0 passes a mesh: the others have none to give.
-  const DistributedSpace ds(comm, rank == 0 ? std::make_shared<const SimplexMesh>(global) : nullptr, k.degree);
+  const DistributedSpace ds = k.blocks ? DistributedSpace(comm, box, k.degree)
+                                       : DistributedSpace(comm, rank == 0 ? std::make_shared<const SimplexMesh>(global) : nullptr, k.degree);
   const SimplexMesh& mesh = ds.mesh();
   const LagrangeSpace& space = ds.space();
   const int d = k.dim, npc = space.nodesPerCell();
 
   EXPECT_EQ(ds.numGlobalCells(), global.numCells());
   EXPECT_EQ(ds.numGlobalNodes(), globalSpace.numNodes());
-  EXPECT_GT(ds.serialPhaseBytes(), global.bytes() + globalSpace.bytes());
+  if (k.blocks)
+    EXPECT_EQ(ds.serialPhaseBytes(), 0u);
+  else
+    EXPECT_GT(ds.serialPhaseBytes(), global.bytes() + globalSpace.bytes());
   EXPECT_EQ(mesh.boundaryTags, global.boundaryTags);
 
   // Cells: a strict part on several ranks; together every global cell exactly once.
@@ -141,9 +148,12 @@ TEST_P(DistributedSpaceTest, EachRankHoldsOnlyItsPartOfTheGlobalMesh) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BoxMeshes, DistributedSpaceTest,
-                         ::testing::Values(Case{2, 1}, Case{2, 2}, Case{2, 3}, Case{3, 1}, Case{3, 2}, Case{3, 3}),
+                         ::testing::Values(Case{2, 1, false}, Case{2, 2, false}, Case{2, 3, false}, Case{3, 1, false},
+                                           Case{3, 2, false}, Case{3, 3, false}, Case{2, 1, true}, Case{2, 2, true},
+                                           Case{2, 3, true}, Case{3, 1, true}, Case{3, 2, true}, Case{3, 3, true}),
                          [](const ::testing::TestParamInfo<Case>& info) {
-                           return std::to_string(info.param.dim) + "D_P" + std::to_string(info.param.degree);
+                           return std::to_string(info.param.dim) + "D_P" + std::to_string(info.param.degree) +
+                                  (info.param.blocks ? "_Blocks" : "_Rank0");
                          });
 
 TEST(DistributedSpace, NoMeshOnRankZeroThrowsOnEveryRank) {

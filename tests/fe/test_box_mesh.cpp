@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <set>
@@ -183,6 +184,66 @@ TEST(BoxMesh, SubdivisionOfProblemSet) {
     EXPECT_EQ(cellVertexSet(cube, t), even[t]) << "even tet " << t;
     EXPECT_EQ(cellVertexSet(cube, 5 + t), odd[t]) << "odd tet " << t;
   }
+}
+
+// The blocks of a decomposition together are the whole mesh: each block's cells are the
+// global cells (same vertex coordinates, same order), and its facets the global ones.
+TEST(BoxMesh, BlocksMakeUpTheWholeMesh) {
+  for (int dim = 2; dim <= 3; ++dim) {
+    const std::array<long long, 3> n = {5, 4, 3};
+    const std::array<double, 3> lengths = {1.0, 0.8, 0.6};
+    const SimplexMesh whole = makeBoxMesh(dim, n, lengths);
+    const BoxDecomposition blocks = decomposeBox(dim, n, 6);
+    ASSERT_EQ(blocks.numBlocks(), 6);
+    std::vector<int> seen(whole.numCells(), 0);
+    long long facets = 0;
+    std::vector<double> x((dim + 1) * dim), y((dim + 1) * dim);
+    for (int b = 0; b < 6; ++b) {
+      const SimplexMesh part = makeBoxMesh(dim, n, lengths, blocks.block(b));
+      const std::vector<long long> cells = boxBlockCells(dim, n, blocks.block(b));
+      ASSERT_EQ(static_cast<long long>(cells.size()), part.numCells());
+      for (long long c = 0; c < part.numCells(); ++c) {
+        ++seen[cells[c]];
+        part.cellVertexCoordinates(c, x.data());
+        whole.cellVertexCoordinates(cells[c], y.data());
+        EXPECT_EQ(x, y) << "block " << b << " cell " << cells[c];
+      }
+      facets += part.numFacets();
+    }
+    for (int count : seen) EXPECT_EQ(count, 1);
+    EXPECT_EQ(facets, whole.numFacets());
+  }
+}
+
+TEST(BoxMesh, DecompositionPicksTheSmallestLargestBlock) {
+  auto counts = [](const BoxDecomposition& d) {
+    return std::array<std::size_t, 3>{d.splits[0].size() - 1, d.splits[1].size() - 1, d.splits[2].size() - 1};
+  };
+  EXPECT_EQ(counts(decomposeBox(3, {40, 40, 40}, 8)), (std::array<std::size_t, 3>{2, 2, 2}));
+  EXPECT_EQ(counts(decomposeBox(2, {7, 5, 1}, 8)), (std::array<std::size_t, 3>{4, 2, 1}));
+  // A tie in size and interface: the most blocks along the first axes.
+  EXPECT_EQ(counts(decomposeBox(3, {3, 4, 3}, 3)), (std::array<std::size_t, 3>{3, 1, 1}));
+  EXPECT_EQ(counts(decomposeBox(3, {10, 10, 10}, 2)), (std::array<std::size_t, 3>{2, 1, 1}));
+  // More ranks than the boxes can be cut into.
+  EXPECT_EQ(decomposeBox(2, {2, 2, 1}, 7).numBlocks(), 0);
+  const BoxDecomposition d = decomposeBox(2, {7, 5, 1}, 8);
+  EXPECT_EQ(d.splits[0], (std::vector<long long>{0, 1, 3, 5, 7}));
+  EXPECT_EQ(d.block(5).begin, (std::array<long long, 3>{1, 2, 0}));
+  EXPECT_EQ(d.block(5).end, (std::array<long long, 3>{3, 5, 1}));
+}
+
+// A point on a face between blocks belongs to the lower-numbered block.
+TEST(BoxMesh, LowestBlockHoldingAPoint) {
+  const BoxDecomposition d = decomposeBox(2, {4, 4, 1}, 4);  // 2 x 2 blocks of 2 x 2 boxes
+  ASSERT_EQ(d.numBlocks(), 4);
+  const int degree = 2;  // lattice points at half box widths
+  EXPECT_EQ(d.lowestBlockHolding({0, 0, 0}, degree), 0);
+  EXPECT_EQ(d.lowestBlockHolding({4, 0, 0}, degree), 0);  // x = 2 boxes: the face of blocks 0 and 1
+  EXPECT_EQ(d.lowestBlockHolding({5, 0, 0}, degree), 1);
+  EXPECT_EQ(d.lowestBlockHolding({5, 4, 0}, degree), 1);
+  EXPECT_EQ(d.lowestBlockHolding({5, 5, 0}, degree), 3);
+  EXPECT_EQ(d.lowestBlockHolding({8, 8, 0}, degree), 3);
+  EXPECT_EQ(d.lowestBlockHolding({3, 7, 0}, degree), 2);
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/CommunicationPhase.hpp"
 #include "core/ParameterValidation.hpp"
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
@@ -176,6 +177,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
 }
 
 void NewtonSystemSolver::setWeights(const Vector& D) {
+  const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::preconditionerSetup);
   H_->setWeights(D);
   if (!contactColumns_.is_null()) contactColumns_->setWeights(D);
   if (!subspace_.is_null()) {
@@ -237,6 +239,7 @@ KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absolu
   KrylovResult result;
   {
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: Krylov"));
+    const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::krylov);
     result = krylov_.solve(H_, M, rhs, sol, std::min(0.5, absoluteTolerance / rnorm), maxIterations_, startReduction,
                            absoluteFloor / rnorm);
   }

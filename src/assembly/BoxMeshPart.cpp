@@ -1,0 +1,105 @@
+#include "assembly/BoxMeshPart.hpp"
+
+#include <array>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "fe/LagrangeSpace.hpp"
+
+namespace signorini::detail {
+namespace {
+
+using Point = std::array<long long, 3>;
+
+// Every node's point on the lattice of spacing h/k, h the box size: a vertex (i,j,l) is
+// k (i,j,l), a node with barycentric lattice indices a_v is sum_v a_v (vertex v).
+std::vector<Point> latticePoints(const LagrangeSpace& space, const BoxBlock& block) {
+  const SimplexMesh& mesh = space.mesh();
+  const int dim = mesh.dim, k = space.degree(), npc = space.nodesPerCell();
+  const long long count[3] = {block.end[0] - block.begin[0] + 1, block.end[1] - block.begin[1] + 1,
+                              block.end[2] - block.begin[2] + 1};
+  std::vector<Point> point(space.numNodes(), Point{0, 0, 0});
+  for (long long v = 0, rest = 0; v < mesh.numVertices(); ++v) {
+    rest = v;
+    for (int axis = 0; axis < dim; ++axis) {
+      point[v][axis] = k * (block.begin[axis] + rest % count[axis]);
+      rest /= count[axis];
+    }
+  }
+  const auto& lattice = space.basis().latticeIndices();
+  for (long long cell = 0; cell < mesh.numCells(); ++cell) {
+    const long long* nodes = space.cellNodes(cell);
+    for (int local = dim + 1; local < npc; ++local) {
+      Point& x = point[nodes[local]];
+      x = Point{0, 0, 0};
+      for (int v = 0; v <= dim; ++v)
+        for (int axis = 0; axis < dim; ++axis) x[axis] += lattice[local][v] * point[nodes[v]][axis] / k;
+    }
+  }
+  return point;
+}
+
+}  // namespace
+
+DistributedBoxPart makeBoxMeshPart(const RCP<const Comm>& comm, const BoxGrid& box, const BoxDecomposition& blocks,
+                                   int degree) {
+  const int rank = comm->getRank(), dim = box.dim;
+  const BoxBlock block = blocks.block(rank);
+  DistributedBoxPart result;
+  MeshPart& part = result.part;
+  part.mesh = makeBoxMesh(dim, box.cells, box.lengths, block);
+  part.globalCells = boxBlockCells(dim, box.cells, block);
+  const LagrangeSpace space(part.mesh, degree);
+  const long long numNodes = space.numNodes();
+
+  // Lattice points, their keys (the point's index on the whole lattice) and owners.
+  const std::vector<Point> point = latticePoints(space, block);
+  const long long side[3] = {degree * box.cells[0] + 1, degree * box.cells[1] + 1, 0};
+  std::vector<GlobalOrdinal> key(numNodes), ownedKeys;
+  part.nodeOwners.resize(numNodes);
+  for (long long n = 0; n < numNodes; ++n) {
+    key[n] = point[n][0] + side[0] * (point[n][1] + side[1] * point[n][2]);
+    part.nodeOwners[n] = blocks.lowestBlockHolding(point[n], degree);
+    if (part.nodeOwners[n] == rank) ownedKeys.push_back(key[n]);
+  }
+
+  // Owners number their nodes after those of the ranks before them; the others import.
+  const long long numOwned = static_cast<long long>(ownedKeys.size());
+  long long upTo = 0;
+  Teuchos::scan(*comm, Teuchos::REDUCE_SUM, 1, &numOwned, &upTo);
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &numOwned, &result.numGlobalNodes);
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto ownedMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ownedKeys), 0, comm));
+  auto allMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(key), 0, comm));
+  Vector ownedIds(ownedMap), ids(allMap);  // ids below 2^53 are exact in a double
+  {
+    auto data = ownedIds.getDataNonConst();
+    for (long long i = 0; i < numOwned; ++i) data[i] = static_cast<double>(upTo - numOwned + i);
+  }
+  ids.doImport(ownedIds, Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>(ownedMap, allMap), Tpetra::INSERT);
+  {
+    auto data = ids.getData();
+    part.nodeIds.resize(numNodes);
+    for (long long n = 0; n < numNodes; ++n) part.nodeIds[n] = static_cast<GlobalOrdinal>(data[n]);
+  }
+  part.nodeCoordinates.assign(space.nodeCoordinates().begin() + dim * part.mesh.numVertices(),
+                              space.nodeCoordinates().end());
+
+  // Boundary nodes by their lattice point: tag 2a + 1 is the plane x_a = 0, 2a + 2 is x_a = L_a.
+  part.boundaryStart.push_back(0);
+  for (int axis = 0; axis < dim; ++axis)
+    for (int sideOfBox = 0; sideOfBox < 2; ++sideOfBox) {
+      const long long plane = sideOfBox == 0 ? 0 : degree * box.cells[axis];
+      part.boundaryTags.push_back(2 * axis + sideOfBox + 1);
+      for (long long n = 0; n < numNodes; ++n)
+        if (point[n][axis] == plane) part.boundaryNodes.push_back(n);
+      part.boundaryStart.push_back(static_cast<long long>(part.boundaryNodes.size()));
+    }
+  result.numGlobalCells = (dim == 2 ? 2 : 5) * box.cells[0] * box.cells[1] * (dim == 3 ? box.cells[2] : 1);
+  return result;
+}
+
+}  // namespace signorini::detail
