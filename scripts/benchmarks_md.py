@@ -11,7 +11,7 @@ A generated table sits between two markers that name its source:
 
 The source is a result file that a benchmark script wrote from its JSON (its first Markdown
 table is taken) or a script under bench/ that prints the table from the JSON (its output is
-taken). --check compares instead of writing and exits 1 if a table is not current.
+taken; "bench/x.py:word" runs it with the argument word). --check compares instead of writing and exits 1 if a table is not current.
 """
 import argparse
 import os
@@ -20,7 +20,7 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DOCS = ["doc/benchmarks.md", "README.md"]
+DOCS = ["doc/benchmarks.md", "doc/performance-model.md", "README.md"]
 BLOCK = re.compile(r"(<!-- generated from (\S+) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 
@@ -35,11 +35,13 @@ def first_table(text):
 
 
 def table_from(source):
-    path = os.path.join(ROOT, source)
+    name, _, argument = source.partition(":")
+    path = os.path.join(ROOT, name)
     if not os.path.isfile(path):
-        sys.exit(f"benchmarks_md: {source}, named in a generated table's marker, does not exist")
-    if source.endswith(".py"):
-        text = subprocess.run([sys.executable, path], check=True, capture_output=True, text=True).stdout
+        sys.exit(f"benchmarks_md: {name}, named in a generated table's marker, does not exist")
+    if name.endswith(".py"):
+        command = [sys.executable, path] + ([argument] if argument else [])
+        text = subprocess.run(command, check=True, capture_output=True, text=True).stdout
     else:
         with open(path) as f:
             text = f.read()

@@ -1,0 +1,153 @@
+#!/usr/bin/python3
+"""The communication model of doc/performance-model.md, calibrated on the 2-rank run of
+bench/results/communication.json and checked against its runs at more ranks.
+
+A rank's block (the box decomposition of src/fe/BoxMesh.cpp) talks to every block it
+touches (face, edge or corner). Per CG iteration it sends E messages to each neighbour
+(E: the halo exchanges of one CG iteration, measured on 2 ranks, where every rank has one
+neighbour and the coarsest-grid gather adds its 2 messages) and, to each face neighbour,
+bytes in proportion to the nodes of the shared face. Rank 0 also receives and sends the
+coarsest-grid gather: 2 (p - 1) messages. All-reduces: the measured count per CG iteration,
+each costing 2 log2(p) latencies (a reduction tree and a broadcast).
+
+    bench/performance_model.py check     # model against the measured counts
+    bench/performance_model.py predict   # time per CG iteration at 64-1024 ranks
+
+Times in milliseconds per CG iteration: compute from the measured Krylov time per unknown
+of 3D P1 nx = 100 on this machine (bench/results/reference-solve.json), communication from
+LATENCY and BANDWIDTH below.
+"""
+import itertools
+import json
+import math
+import os
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+RESULTS = os.path.join(ROOT, "bench", "results")
+
+# A typical InfiniBand cluster: MPI latency per message and bandwidth per rank.
+LATENCY = 2e-6  # s
+BANDWIDTH = 10e9  # bytes/s
+CASES = {"3d-p1-nx40": (3, 40), "2d-p1-nx200": (2, 200)}
+
+
+def decompose(dim, n, parts):
+    """Blocks per axis, as decomposeBox chooses them (cubic boxes, n per axis)."""
+    best = None
+    for p0 in range(parts, 0, -1):
+        for p1 in range(parts // p0, 0, -1):
+            if parts % p0 or (parts // p0) % p1:
+                continue
+            p = [p0, p1, parts // p0 // p1]
+            if dim == 2 and p[2] != 1:
+                continue
+            boxes = [n] * dim + [1] * (3 - dim)
+            if any(p[a] > boxes[a] for a in range(3)):
+                continue
+            largest = math.prod(-(-boxes[a] // p[a]) for a in range(3))
+            area = sum((p[a] - 1) * math.prod(boxes) // boxes[a] for a in range(3))
+            if best is None or (largest, area) < best[0]:
+                best = ((largest, area), p)
+    return best[1]
+
+
+def neighbours(p, block):
+    """(all neighbours, face neighbours' axes) of a block."""
+    count, faces = 0, []
+    for offset in itertools.product((-1, 0, 1), repeat=3):
+        if offset == (0, 0, 0):
+            continue
+        if all(0 <= block[a] + offset[a] < p[a] for a in range(3)):
+            count += 1
+            if sum(map(abs, offset)) == 1:
+                faces.append([a for a in range(3) if offset[a]][0])
+    return count, faces
+
+
+def blocks(p):
+    return [(b0, b1, b2) for b2 in range(p[2]) for b1 in range(p[1]) for b0 in range(p[0])]
+
+
+def face_nodes(dim, n, p, axis):
+    """Nodes of a block face normal to axis (P1: boxes + 1 per side)."""
+    return math.prod(n // p[a] + 1 for a in range(dim) if a != axis)
+
+
+def load(name):
+    with open(os.path.join(RESULTS, name)) as f:
+        return json.load(f)
+
+
+def calibration(runs, case):
+    """E (messages per neighbour and CG iteration) and bytes per face node, from 2 ranks."""
+    dim, n = CASES[case]
+    two = next(r for r in runs if r["case"] == case and r["ranks"] == 2)
+    per_cg = two["per_cg_iteration"]
+    halo = per_cg["messages_sent"]["mean"] - 1  # less the rank's half of the coarse gather
+    p = decompose(dim, n, 2)
+    return halo, per_cg["bytes_sent"]["mean"] / face_nodes(dim, n, p, 0), per_cg["allreduces"]["max"]
+
+
+def predicted(dim, n, parts, halo, per_node):
+    """Mean messages and bytes sent per rank and CG iteration."""
+    p = decompose(dim, n, parts)
+    messages = volume = 0.0
+    for block in blocks(p):
+        count, faces = neighbours(p, block)
+        messages += halo * count
+        volume += per_node * sum(face_nodes(dim, n, p, axis) for axis in faces)
+    messages += 2 * (parts - 1)  # the coarse gather and scatter, all on rank 0's side
+    return messages / parts, volume / parts
+
+
+def check():
+    runs = load("communication.json")["runs"]
+    print("| case | ranks | blocks | messages per CG iteration, measured | model | KiB sent, measured | model |")
+    print("|---|---|---|---|---|---|---|")
+    for case, (dim, n) in CASES.items():
+        halo, per_node, _ = calibration(runs, case)
+        for r in sorted((r for r in runs if r["case"] == case and r["ranks"] > 2), key=lambda r: r["ranks"]):
+            messages, volume = predicted(dim, n, r["ranks"], halo, per_node)
+            measured = r["per_cg_iteration"]
+            p = decompose(dim, n, r["ranks"])
+            print(f"| {case} | {r['ranks']} | {' x '.join(map(str, p[:dim]))} | {measured['messages_sent']['mean']:.0f} "
+                  f"| {messages:.0f} | {measured['bytes_sent']['mean'] / 1024:.0f} | {volume / 1024:.0f} |")
+
+
+def predict():
+    """3D P1: 128^3 boxes (6.4 M unknowns) over 64-1024 ranks (strong), and blocks of 40^3
+    boxes (~200 000 unknowns) per rank (weak). Both hierarchies end in a coarsest geometric
+    grid of at most 5000 unknowns, gathered to rank 0."""
+    runs = load("communication.json")["runs"]
+    halo, per_node, allreduces = calibration(runs, "3d-p1-nx40")
+    reference = next(c for c in load("reference-solve.json")["cases"] if c["problem"] == "family/3d-p1-nx100")
+    contact = reference["contact"]
+    # Compute time per unknown and CG iteration on one rank of the measured run.
+    per_unknown = contact["seconds"]["krylov"] / contact["cg_iterations"] * reference["ranks"] / contact["n"]
+    ms = lambda t: f"{1e3 * t:.2f}"
+    print("| scaling | ranks | unknowns per rank | compute | halo latency | halo volume | coarse gather | all-reduces "
+          "| per CG iteration | compute share |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for label, boxes in (("strong, 128^3 boxes", lambda parts: 128), ("weak, 40^3 boxes per rank", None)):
+        for parts in (64, 256, 1024):
+            if boxes:  # the interior block of the decomposition
+                n = boxes(parts)
+                p = decompose(3, n, parts)
+                count, faces = neighbours(p, tuple(min(1, p[a] - 1) for a in range(3)))
+                faceNodes = sum(face_nodes(3, n, p, a) for a in faces)
+                unknowns = 3 * (n + 1) ** 3 / parts
+            else:
+                count, faceNodes, unknowns = 26, 6 * 41 ** 2, 3 * 40 ** 3
+            compute = per_unknown * unknowns
+            latency = halo * count * LATENCY
+            volume = per_node * faceNodes / BANDWIDTH
+            gather = 2 * (parts - 1) * LATENCY
+            reduce = allreduces * 2 * math.log2(parts) * LATENCY
+            total = compute + latency + volume + gather + reduce
+            print(f"| {label} | {parts} | {unknowns:.0f} | {ms(compute)} | {ms(latency)} | {ms(volume)} "
+                  f"| {ms(gather)} | {ms(reduce)} | {ms(total)} | {compute / total:.0%} |")
+
+
+if __name__ == "__main__":
+    {"check": check, "predict": predict}[sys.argv[1] if len(sys.argv) > 1 else "check"]()
