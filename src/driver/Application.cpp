@@ -397,6 +397,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     summary.peakMemoryMiBMaxRank = maxOverRanks(*comm, rss);
     summary.serialMeshMiB = serialMeshMiB;
     summary.serialMeshPeakMiB = problem.serialMeshPeakMiB;
+    summary.setupPeakMiBPerRank = problem.setupPeakMiBPerRank;
     summary.contact = contact;
     summary.peakMemoryMiBAllRanks = sumOverRanks(*comm, rss);
     if (root) {

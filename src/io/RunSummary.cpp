@@ -101,6 +101,9 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     << ", \"all_ranks\": " << number(s.peakMemoryMiBAllRanks) << "},\n"
     << "  \"serial_mesh_mib\": " << number(s.serialMeshMiB) << ",\n"
     << "  \"serial_mesh_peak_rss_mib\": " << number(s.serialMeshPeakMiB) << ",\n"
+    << "  \"setup_peak_rss_mib\": [";
+  for (std::size_t i = 0; i < s.setupPeakMiBPerRank.size(); ++i) j << (i ? ", " : "") << number(s.setupPeakMiBPerRank[i]);
+  j << "],\n"
     << "  \"time\": {\"setup\": " << number(s.setupSeconds) << ", \"assembly\": " << number(s.assemblySeconds)
     << ", \"solve\": " << number(s.solveSeconds) << ", \"total\": " << number(s.totalSeconds) << "}\n"
     << "}\n";

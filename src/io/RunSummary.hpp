@@ -4,6 +4,7 @@
 // temporary name then renamed, so no half-written file is ever left.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "signorini/assembly/ContactStatistics.hpp"
 #include "signorini/solver/SolveResult.hpp"
@@ -20,6 +21,7 @@ struct RunSummary {
   // Rank 0's serial mesh phase: global mesh, space and partition arrays (capacities), and
   // the growth of its peak resident set over that phase.
   double serialMeshMiB = 0, serialMeshPeakMiB = 0;
+  std::vector<double> setupPeakMiBPerRank;  // every rank's peak growth over mesh and space
   std::optional<ContactStatistics> contact;  // when the problem has a contact boundary
 };
 

@@ -79,8 +79,10 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
                       result.definition.dim, result.definition.degree, *comm);
     }
     setup.stop();
-    result.serialMeshPeakMiB = std::max(0.0, peakResidentMiB() - residentBefore);
-    Teuchos::broadcast(*comm, 0, 1, &result.serialMeshPeakMiB);
+    const double growth = std::max(0.0, peakResidentMiB() - residentBefore);
+    result.setupPeakMiBPerRank.resize(comm->getSize());
+    Teuchos::gatherAll(*comm, 1, &growth, comm->getSize(), result.setupPeakMiBPerRank.data());
+    result.serialMeshPeakMiB = result.setupPeakMiBPerRank[0];
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: assembly"));

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <algorithm>
 #include <vector>
 
 #include <Teuchos_XMLParameterListHelpers.hpp>
@@ -260,6 +261,12 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_TRUE(has("\"memory_mib\": {\"max_rank\": "));
   EXPECT_TRUE(has("\"serial_mesh_mib\": "));
   EXPECT_TRUE(has("\"serial_mesh_peak_rss_mib\": "));
+  {  // one setup peak per rank
+    const std::size_t at = summary.find("\"setup_peak_rss_mib\": [");
+    ASSERT_NE(at, std::string::npos);
+    const std::string list = summary.substr(at, summary.find(']', at) - at);
+    EXPECT_EQ(std::count(list.begin(), list.end(), ','), comm->getSize() - 1) << list;
+  }
   // Problem M is a box: every rank makes its own part, rank 0 holds no global mesh.
   EXPECT_TRUE(has("\"serial_mesh_mib\": 0,"));
   EXPECT_NE(log.str().find("each rank made its own part"), std::string::npos);

@@ -5,6 +5,7 @@
 /// assembled ContactQP.
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -32,6 +33,8 @@ struct AssembledProblem {
   /// and the hash tables' transient buffers included): the serial phase's real cost when it
   /// is the process' largest allocation so far, as in the application.
   double serialMeshPeakMiB = 0;
+  /// The same growth of the peak resident set over mesh and space, on every rank (rank order).
+  std::vector<double> setupPeakMiBPerRank;
 };
 
 /// Builds the problem a "Problem" list describes; `baseDirectory` resolves a relative
