@@ -50,6 +50,20 @@ void addOrbit(QuadratureRule& rule, std::vector<double> lambda, double w) {
   } while (std::next_permutation(lambda.begin(), lambda.end()));
 }
 
+// Fully symmetric degree-2 rules (Stroud): 3 points on the triangle and 4 on the
+// tetrahedron, where the collapsed rule needs 4 and 8; they integrate P2 gradient products.
+QuadratureRule symmetricDegree2Rule(int dim) {
+  QuadratureRule rule;
+  rule.dim = dim;
+  if (dim == 2) {
+    addOrbit(rule, {2.0 / 3, 1.0 / 6, 1.0 / 6}, 1.0 / 6);
+  } else {
+    const double a = (5.0 - std::sqrt(5.0)) / 20.0;
+    addOrbit(rule, {a, a, a, 1 - 3 * a}, 1.0 / 24);
+  }
+  return rule;
+}
+
 // Fully symmetric degree-5 rules with positive weights and interior points: Radon's 7-point
 // rule on the triangle, and the 14-point rule on the tetrahedron (Walkington, "Quadrature on
 // simplices of arbitrary dimension", 2000; also Keast 1986). The collapsed rule of the same
@@ -77,6 +91,7 @@ QuadratureRule symmetricDegree5Rule(int dim) {
 QuadratureRule simplexQuadrature(int dim, int degree) {
   if (dim < 1 || dim > 3) throw InputError("simplex quadrature: dimension must be 1, 2 or 3, got " + std::to_string(dim));
   if (degree < 0) throw InputError("simplex quadrature: degree must be >= 0, got " + std::to_string(degree));
+  if (dim >= 2 && degree == 2) return symmetricDegree2Rule(dim);
   if (dim >= 2 && (degree == 4 || degree == 5)) return symmetricDegree5Rule(dim);
   const int n = degree / 2 + 1;
   // Direction j of the collapsed cube carries the weight (1-t)^(dim-1-j) of the collapse.

@@ -67,13 +67,15 @@ TEST(SimplexQuadrature, ExactForMonomialsUpToItsDegree) {
     }
 }
 
-// Loads are integrated with degree 5 on P1 cells: the symmetric rules use far fewer points
-// than the collapsed ones (9 and 27).
-TEST(SimplexQuadrature, DegreeFiveRulesAreTheSmallSymmetricOnes) {
+// Loads are integrated with degree 5 on P1 cells and P2 gradient products with degree 2:
+// the symmetric rules use far fewer points than the collapsed ones (9 and 27, 4 and 8).
+TEST(SimplexQuadrature, SymmetricRulesAreTheSmallOnes) {
   EXPECT_EQ(simplexQuadrature(2, 5).size(), 7);
   EXPECT_EQ(simplexQuadrature(3, 5).size(), 14);
   EXPECT_EQ(simplexQuadrature(3, 4).size(), 14);
   EXPECT_EQ(simplexQuadrature(1, 5).size(), 3);
+  EXPECT_EQ(simplexQuadrature(2, 2).size(), 3);
+  EXPECT_EQ(simplexQuadrature(3, 2).size(), 4);
 }
 
 // Gauss rules are exact to 2n - 1 with n points per direction, and no further: an odd
