@@ -440,6 +440,10 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
   return weights;
 }
 
+RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const DistributedSpace& ds, const ProblemDefinition& problem) {
+  return rcp(new MatrixFreeElasticityOperator(ds, problem.material, dirichletData(ds, problem).fixed));
+}
+
 ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition& problem) {
   const LagrangeSpace& space = ds.space();
   const SimplexMesh& mesh = ds.mesh();

@@ -7,12 +7,17 @@
 #include <vector>
 
 #include "assembly/DistributedSpace.hpp"
+#include "assembly/MatrixFreeElasticityOperator.hpp"
 #include "signorini/assembly/ProblemDefinition.hpp"
 #include "signorini/solver/ContactQP.hpp"
 
 namespace signorini {
 
 ContactQP assembleContactQP(const DistributedSpace& space, const ProblemDefinition& problem);
+
+// Q of assembleContactQP applied cell by cell, with the same Dirichlet elimination. Keeps a
+// reference to space, which must outlive it.
+RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const DistributedSpace& space, const ProblemDefinition& problem);
 
 // The contact nodes this rank owns, as space node ids in constraint order: row first + k of
 // A is node nodes[k]. Constraints follow the renumbered nodes, so each rank owns the

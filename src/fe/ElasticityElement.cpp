@@ -251,6 +251,14 @@ double IsotropicMaterial::effectiveLame1(int dim) const {
   return dim == 2 && !planeStrain ? 2.0 * lambda * mu / (lambda + 2.0 * mu) : lambda;
 }
 
+double inverseJacobian(int dim, const double* vertexCoords, double* inverse) {
+  if (dim != 2 && dim != 3) throw InputError("elasticity element: dimension must be 2 or 3, got " + std::to_string(dim));
+  const AffineMap map(dim, vertexCoords);
+  for (int s = 0; s < dim; ++s)
+    for (int c = 0; c < dim; ++c) inverse[s * dim + c] = map.inverse[s][c];
+  return std::fabs(map.det);
+}
+
 void elasticityStiffness(const LagrangeBasis& basis, const double* vertexCoords, const IsotropicMaterial& material,
                          std::vector<double>& Ke) {
   requireElasticityDim(basis);

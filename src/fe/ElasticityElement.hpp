@@ -16,6 +16,10 @@ namespace signorini {
 void elasticityStiffness(const LagrangeBasis& basis, const double* vertexCoords, const IsotropicMaterial& material,
                          std::vector<double>& Ke);
 
+// The inverse of the Jacobian J = d x / d xi of the cell's affine map, row-major
+// (inverse[s * dim + c] = d xi_s / d x_c), and |det J|. Throws Error for a degenerate cell.
+double inverseJacobian(int dim, const double* vertexCoords, double* inverse);
+
 // Fe_(dim a + c) = integral over the cell of f_c phi_a, with a rule exact for total degree
 // quadratureDegree; force(x, f) writes dim components at point x.
 void bodyForceLoad(const LagrangeBasis& basis, const double* vertexCoords,

@@ -89,6 +89,10 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::assembly);
     assembly.start(true);
     result.qp = assembleContactQP(*result.space, result.definition);
+    if (result.definition.matrixFreeStiffness) {
+      result.qp.Qassembled = result.qp.Qmatrix();
+      result.qp.Q = matrixFreeStiffness(*result.space, result.definition);
+    }
     if (result.definition.meshType == "box")
       result.qp.grid = std::make_shared<BoxGrid>(result.definition.dim, result.definition.cells,
                                                  result.definition.lengths);

@@ -75,6 +75,10 @@ ParameterList validProblemParameters() {
         "Expert: Quadrature degree for body forces and tractions; -1: element degree + 4 (exact for "
         "the benchmark family)",
         range(-1, 30));
+  p.set("stiffness: operator", "assembled",
+        "\"assembled\": Q is a sparse matrix; \"matrix-free\": Q is applied cell by cell "
+        "(the assembled matrix is still built for the preconditioner)",
+        choices({"assembled", "matrix-free"}));
 
   ParameterList& dirichlet = p.sublist("Dirichlet", false,
                                        "One sublist per clamped boundary, named after it");
@@ -156,6 +160,7 @@ ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) 
   }
   const int q = p.get<int>("load: quadrature degree");
   def.loadQuadratureDegree = q < 0 ? def.degree + 4 : q;
+  def.matrixFreeStiffness = p.get<std::string>("stiffness: operator") == "matrix-free";
 
   def.dirichlet = boundaryFields(p, "Dirichlet", "displacement: ", dim);
   def.traction = boundaryFields(p, "Traction", "traction: ", dim);

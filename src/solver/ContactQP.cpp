@@ -4,6 +4,8 @@
 
 namespace signorini {
 
-RCP<const CrsMatrix> ContactQP::Qmatrix() const { return Teuchos::rcp_dynamic_cast<const CrsMatrix>(Q); }
+RCP<const CrsMatrix> ContactQP::Qmatrix() const {
+  return Qassembled.is_null() ? Teuchos::rcp_dynamic_cast<const CrsMatrix>(Q) : Qassembled;
+}
 
 }  // namespace signorini

@@ -23,8 +23,11 @@ struct ContactQP {
   RCP<const MultiVector> coordinates;  ///< optional: node coordinates on a node map (for MueLu)
   int blockSize = 1;                   ///< unknowns per node (dof = blockSize * node + component)
   std::shared_ptr<const GeometricGrid> grid;  ///< optional: the mesh's P1 grid (geometric multigrid)
+  /// optional: Q assembled, when Q is an operator of its own (matrix-free): the
+  /// preconditioners and scale estimates use it, every application of Q uses Q.
+  RCP<const CrsMatrix> Qassembled;
 
-  /// Q as an assembled matrix, or null when Q is only an operator.
+  /// Q as an assembled matrix: Qassembled if given, else Q if it is a CrsMatrix, else null.
   RCP<const CrsMatrix> Qmatrix() const;
 };
 

@@ -15,8 +15,12 @@
 
 namespace signorini {
 
-BarrierHessianOperator::BarrierHessianOperator(RCP<const Operator> Q, RCP<const CrsMatrix> A)
-    : Q_(std::move(Q)), A_(std::move(A)), D_(rcp(new Vector(A_->getRangeMap()))) {
+BarrierHessianOperator::BarrierHessianOperator(RCP<const Operator> Q, RCP<const CrsMatrix> A,
+                                               RCP<const CrsMatrix> Qassembled)
+    : Q_(std::move(Q)),
+      Qmatrix_(Qassembled.is_null() ? Teuchos::rcp_dynamic_cast<const CrsMatrix>(Q_) : std::move(Qassembled)),
+      A_(std::move(A)),
+      D_(rcp(new Vector(A_->getRangeMap()))) {
   if (!A_->getDomainMap()->isSameAs(*Q_->getDomainMap()))
     throw Error("BarrierHessianOperator: A's domain map differs from Q's");
 }
@@ -71,8 +75,8 @@ bool BarrierHessianOperator::findPositionsInQPattern(const CrsMatrix& Q) const {
 RCP<CrsMatrix> BarrierHessianOperator::assemble() const { return assemble(*D_); }
 
 RCP<CrsMatrix> BarrierHessianOperator::assemble(const Vector& D) const {
-  auto Q = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Q_);
-  if (Q.is_null()) throw Error("BarrierHessianOperator::assemble needs Q as a CrsMatrix");
+  const RCP<const CrsMatrix>& Q = Qmatrix_;
+  if (Q.is_null()) throw Error("BarrierHessianOperator::assemble needs Q assembled");
   if (inQPattern_ < 0) inQPattern_ = findPositionsInQPattern(*Q) ? 1 : 0;
   if (inQPattern_ == 1) {
     using Values = typename CrsMatrix::local_matrix_device_type::values_type;
@@ -194,8 +198,8 @@ RCP<CrsMatrix> BarrierHessianOperator::assembleByProduct(const CrsMatrix& Q, con
 }
 
 RCP<BarrierHessianOperator> BarrierHessianOperator::onContactColumns() const {
-  auto Q = Teuchos::rcp_dynamic_cast<const CrsMatrix>(Q_);
-  if (Q.is_null()) throw Error("BarrierHessianOperator::onContactColumns needs Q as a CrsMatrix");
+  const RCP<const CrsMatrix>& Q = Qmatrix_;
+  if (Q.is_null()) throw Error("BarrierHessianOperator::onContactColumns needs Q assembled");
   // 1 on the DOFs that appear in A, seen from Q's column map.
   Vector onDomain(A_->getDomainMap());
   {

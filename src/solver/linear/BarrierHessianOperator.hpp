@@ -13,7 +13,9 @@ namespace signorini {
 
 class BarrierHessianOperator : public Operator {
  public:
-  BarrierHessianOperator(RCP<const Operator> Q, RCP<const CrsMatrix> A);
+  // Qassembled: Q as a matrix when Q is an operator of its own (matrix-free), for
+  // assemble() and onContactColumns(); by default Q itself if it is a CrsMatrix.
+  BarrierHessianOperator(RCP<const Operator> Q, RCP<const CrsMatrix> A, RCP<const CrsMatrix> Qassembled = Teuchos::null);
 
   // D, on A's range map (copied); all zeros until set.
   void setWeights(const Vector& D);
@@ -28,7 +30,7 @@ class BarrierHessianOperator : public Operator {
   RCP<const Map> getRangeMap() const override { return Q_->getRangeMap(); }
   bool hasTransposeApply() const override { return true; }
 
-  // Q + A^T D A as an assembled matrix (needs Q to be a CrsMatrix): for preconditioners
+  // Q + A^T D A as an assembled matrix (needs Q assembled): for preconditioners
   // and tests, never for applying H. When every entry of A^T D A falls on an entry of Q's
   // graph in a row this rank owns (nodal constraints couple the DOFs of one node), the
   // result shares Q's graph and costs a copy of Q's values; otherwise (weighted gaps couple
@@ -41,11 +43,12 @@ class BarrierHessianOperator : public Operator {
   // H P P^T, with P the restriction to the contact DOFs (those in A): Q's columns on the
   // contact DOFs plus A^T D A, with a copy of the current D. It applies H to vectors that
   // vanish off the contact DOFs, and its transpose P P^T H gives H's contact rows, for a
-  // fraction of the cost of H (needs Q to be a CrsMatrix).
+  // fraction of the cost of H (needs Q assembled).
   RCP<BarrierHessianOperator> onContactColumns() const;
 
  private:
   RCP<const Operator> Q_;
+  RCP<const CrsMatrix> Qmatrix_;  // Q assembled, or null
   RCP<const CrsMatrix> A_;
   RCP<Vector> D_;
   mutable RCP<MultiVector> AX_;  // scratch, resized to the number of columns of X

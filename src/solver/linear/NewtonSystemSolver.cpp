@@ -127,7 +127,7 @@ Teuchos::ParameterList newtonParameters(const Teuchos::ParameterList& solver) {
 
 NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params)
     : params_(newtonParameters(params)),
-      H_(rcp(new BarrierHessianOperator(qp.Q, qp.A))),
+      H_(rcp(new BarrierHessianOperator(qp.Q, qp.A, qp.Qmatrix()))),
       krylov_(params_.sublist("Krylov")),
       strategy_(choice<PreconditionerType>(params_.sublist("Preconditioner"), "type")),
       maxIterations_(params_.sublist("Krylov").get<int>("maximum iterations")),

@@ -1,0 +1,135 @@
+#include "assembly/MatrixFreeElasticityOperator.hpp"
+
+#include <Tpetra_Import.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include "fe/ElasticityElement.hpp"
+#include "fe/SimplexQuadrature.hpp"
+
+namespace signorini {
+
+MatrixFreeElasticityOperator::MatrixFreeElasticityOperator(const DistributedSpace& ds,
+                                                           const IsotropicMaterial& material,
+                                                           const std::vector<char>& fixedSpaceDofs)
+    : ds_(ds), lambda_(material.effectiveLame1(ds.dim())), mu_(material.lame2()) {
+  const LagrangeSpace& space = ds.space();
+  const LagrangeBasis& basis = space.basis();
+  const int dim = ds.dim(), npc = space.nodesPerCell();
+  // Gradients of P_k are of degree k - 1: a rule of degree 2 (k - 1) integrates their products.
+  const QuadratureRule rule = simplexQuadrature(dim, 2 * (space.degree() - 1));
+  numPoints_ = rule.size();
+  weights_ = rule.weights;
+  gradients_.resize(numPoints_ * npc * dim);
+  for (int q = 0; q < numPoints_; ++q) basis.gradients(&rule.points[q * dim], &gradients_[q * npc * dim]);
+
+  const auto& overlap = ds.overlapSpaceNodes();
+  std::vector<int> overlapIndex(space.numNodes());
+  for (std::size_t i = 0; i < overlap.size(); ++i) overlapIndex[overlap[i]] = static_cast<int>(i);
+  const long long numCells = ds.mesh().numCells();
+  cellNodes_.resize(numCells * npc);
+  cellGeometry_.resize(numCells * (1 + dim * dim));
+  std::vector<double> vertexCoords((dim + 1) * dim);
+  for (long long cell = 0; cell < numCells; ++cell) {
+    for (int a = 0; a < npc; ++a) cellNodes_[cell * npc + a] = overlapIndex[space.cellNodes(cell)[a]];
+    ds.mesh().cellVertexCoordinates(cell, vertexCoords.data());
+    double* geometry = &cellGeometry_[cell * (1 + dim * dim)];
+    geometry[0] = inverseJacobian(dim, vertexCoords.data(), geometry + 1);
+  }
+
+  fixed_.resize(overlap.size() * dim);
+  for (std::size_t i = 0; i < overlap.size(); ++i)
+    for (int c = 0; c < dim; ++c) fixed_[dim * i + c] = fixedSpaceDofs[dim * overlap[i] + c];
+  const std::size_t numOwned = ds.ownedDofMap()->getNodeNumElements();
+  for (std::size_t i = 0; i < numOwned; ++i)
+    if (fixed_[i]) ownedFixed_.push_back(static_cast<LocalOrdinal>(i));
+  toOverlap_ = rcp(new Import(ds.ownedDofMap(), ds.overlapDofMap()));
+}
+
+// y += Q x on the overlap DOFs of the local cells, prescribed DOFs left out.
+template <int D>
+void MatrixFreeElasticityOperator::applyCells(const double* x, double* y) const {
+  const int npc = ds_.space().nodesPerCell();
+  const long long numCells = static_cast<long long>(cellNodes_.size()) / npc;
+  constexpr int kMaxNodes = LagrangeBasis::maxSize;
+  double xe[kMaxNodes][D], ye[kMaxNodes][D], grad[kMaxNodes][D];
+  for (long long cell = 0; cell < numCells; ++cell) {
+    const int* nodes = &cellNodes_[cell * npc];
+    const double* geometry = &cellGeometry_[cell * (1 + D * D)];
+    const double volume = geometry[0];
+    const double* Jinv = geometry + 1;
+    for (int a = 0; a < npc; ++a)
+      for (int c = 0; c < D; ++c) {
+        const int dof = D * nodes[a] + c;
+        xe[a][c] = fixed_[dof] ? 0.0 : x[dof];
+        ye[a][c] = 0.0;
+      }
+    for (int q = 0; q < numPoints_; ++q) {
+      const double* dphi = &gradients_[q * npc * D];
+      double gradU[D][D] = {};  // gradU[c][e] = d u_c / d x_e
+      for (int a = 0; a < npc; ++a)
+        for (int e = 0; e < D; ++e) {
+          double g = 0.0;
+          for (int s = 0; s < D; ++s) g += dphi[a * D + s] * Jinv[s * D + e];
+          grad[a][e] = g;
+          for (int c = 0; c < D; ++c) gradU[c][e] += xe[a][c] * g;
+        }
+      double trace = 0.0;
+      for (int c = 0; c < D; ++c) trace += gradU[c][c];
+      const double w = weights_[q] * volume;
+      double sigma[D][D];
+      for (int c = 0; c < D; ++c)
+        for (int e = 0; e < D; ++e)
+          sigma[c][e] = w * (mu_ * (gradU[c][e] + gradU[e][c]) + (c == e ? lambda_ * trace : 0.0));
+      for (int a = 0; a < npc; ++a)
+        for (int c = 0; c < D; ++c) {
+          double sum = 0.0;
+          for (int e = 0; e < D; ++e) sum += sigma[c][e] * grad[a][e];
+          ye[a][c] += sum;
+        }
+    }
+    for (int a = 0; a < npc; ++a)
+      for (int c = 0; c < D; ++c) {
+        const int dof = D * nodes[a] + c;
+        if (!fixed_[dof]) y[dof] += ye[a][c];
+      }
+  }
+}
+
+void MatrixFreeElasticityOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, Scalar alpha,
+                                         Scalar beta) const {
+  const std::size_t numVectors = X.getNumVectors();
+  if (xOverlap_.is_null() || xOverlap_->getNumVectors() != numVectors) {
+    xOverlap_ = rcp(new MultiVector(ds_.overlapDofMap(), numVectors));
+    yOverlap_ = rcp(new MultiVector(ds_.overlapDofMap(), numVectors));
+    result_ = rcp(new MultiVector(ds_.ownedDofMap(), numVectors));
+  }
+  xOverlap_->doImport(X, *toOverlap_, Tpetra::INSERT);
+  yOverlap_->putScalar(0.0);
+  for (std::size_t j = 0; j < numVectors; ++j) {
+    auto x = xOverlap_->getData(j);
+    auto y = yOverlap_->getDataNonConst(j);
+    if (ds_.dim() == 2)
+      applyCells<2>(x.getRawPtr(), y.getRawPtr());
+    else
+      applyCells<3>(x.getRawPtr(), y.getRawPtr());
+  }
+  result_->putScalar(0.0);
+  result_->doExport(*yOverlap_, *toOverlap_, Tpetra::ADD);
+  for (std::size_t j = 0; j < numVectors; ++j) {  // the identity on prescribed DOFs
+    auto in = X.getData(j);
+    auto out = result_->getDataNonConst(j);
+    for (LocalOrdinal i : ownedFixed_) out[i] = in[i];
+  }
+  Y.update(alpha, *result_, beta);
+}
+
+std::size_t MatrixFreeElasticityOperator::bytes() const {
+  std::size_t work = 0;
+  for (const auto& v : {xOverlap_, yOverlap_, result_})
+    if (!v.is_null()) work += v->getLocalLength() * v->getNumVectors() * sizeof(double);
+  return weights_.capacity() * sizeof(double) + gradients_.capacity() * sizeof(double) +
+         cellNodes_.capacity() * sizeof(int) + cellGeometry_.capacity() * sizeof(double) + fixed_.capacity() +
+         ownedFixed_.capacity() * sizeof(LocalOrdinal) + work;
+}
+
+}  // namespace signorini

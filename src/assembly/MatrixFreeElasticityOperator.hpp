@@ -1,0 +1,55 @@
+#pragma once
+// The stiffness matrix of isotropic linear elasticity on a DistributedSpace, applied cell by
+// cell without storing it. Per cell it keeps only the inverse Jacobian, the volume and the
+// cell's overlap node indices; the P_k gradients at the quadrature points are tabulated once
+// on the reference cell. An application imports x to the overlap nodes, computes on every
+// local cell the stress sigma(u) = lambda tr(grad u) I + mu (grad u + grad u^T) at the
+// quadrature points and integrates sigma : grad phi_a, and exports the sums to the owners.
+// Prescribed DOFs have the rows and columns of the identity, as in the assembled matrix.
+#include <cstddef>
+#include <vector>
+
+#include <Tpetra_Operator.hpp>
+
+#include "assembly/DistributedSpace.hpp"
+#include "signorini/core/TpetraTypes.hpp"
+#include "signorini/fe/IsotropicMaterial.hpp"
+
+namespace signorini {
+
+class MatrixFreeElasticityOperator : public Operator {
+ public:
+  // fixedSpaceDofs: 1 for a prescribed DOF, indexed dim * (node of ds.space()) + component.
+  // Keeps a reference to ds, which must outlive the operator.
+  MatrixFreeElasticityOperator(const DistributedSpace& ds, const IsotropicMaterial& material,
+                               const std::vector<char>& fixedSpaceDofs);
+
+  // Y = beta Y + alpha Q X; Q is symmetric, so every mode applies Q.
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp mode = Teuchos::NO_TRANS,
+             Scalar alpha = Teuchos::ScalarTraits<Scalar>::one(),
+             Scalar beta = Teuchos::ScalarTraits<Scalar>::zero()) const override;
+  RCP<const Map> getDomainMap() const override { return ds_.ownedDofMap(); }
+  RCP<const Map> getRangeMap() const override { return ds_.ownedDofMap(); }
+  bool hasTransposeApply() const override { return true; }
+
+  // Heap bytes of what the operator stores (per-cell data, tables, work vectors).
+  std::size_t bytes() const;
+
+ private:
+  template <int D>
+  void applyCells(const double* x, double* y) const;
+
+  const DistributedSpace& ds_;
+  double lambda_, mu_;
+  int numPoints_ = 0;
+  std::vector<double> weights_;          // reference quadrature weights
+  std::vector<double> gradients_;        // [point][node][reference direction]
+  std::vector<int> cellNodes_;           // overlap node index of each cell node
+  std::vector<double> cellGeometry_;     // per cell: |det J|, then J^-1 row-major
+  std::vector<char> fixed_;              // per overlap DOF
+  std::vector<LocalOrdinal> ownedFixed_;  // owned DOFs that are prescribed
+  RCP<const Import> toOverlap_;
+  mutable RCP<MultiVector> xOverlap_, yOverlap_, result_;
+};
+
+}  // namespace signorini

@@ -1,0 +1,94 @@
+// The matrix-free stiffness applies the assembled Q to round-off: P1-P3, 2D and 3D, with
+// prescribed DOFs, several vectors at once, and the alpha/beta contract; the paper's
+// problems solved with it reach the assembled path's optimal values.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include "assembly/ElasticityAssembler.hpp"
+#include "signorini/problem/ProblemParameters.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "support/TestProblems.hpp"
+
+namespace {
+
+using namespace signorini;
+using namespace signorini::testing;
+
+// A box clamped on one face, with a nonzero displacement prescribed on the opposite one.
+Teuchos::ParameterList clampedBox(int dim, int degree) {
+  Teuchos::ParameterList p = boxProblem(dim, dim == 2 ? 5 : 3, degree);
+  p.set("material: poisson ratio", 0.3);
+  Teuchos::ParameterList& clamped = p.sublist("Dirichlet").sublist("xmin");
+  Teuchos::ParameterList& pulled = p.sublist("Dirichlet").sublist("xmax");
+  for (const char* c : {"x", "y", "z"})
+    if (c[0] != 'z' || dim == 3) clamped.set(std::string("displacement: ") + c, "0");
+  pulled.set("displacement: x", "0.01*y");
+  return p;
+}
+
+struct Case {
+  int dim, degree;
+};
+
+class MatrixFreeElasticityOperatorTest : public ::testing::TestWithParam<Case> {};
+
+TEST_P(MatrixFreeElasticityOperatorTest, AppliesTheAssembledStiffness) {
+  const Case k = GetParam();
+  auto comm = Tpetra::getDefaultComm();
+  AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), comm);
+  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(*problem.space, problem.definition);
+  const CrsMatrix& K = *problem.qp.Qmatrix();
+  ASSERT_TRUE(Q->getDomainMap()->isSameAs(*K.getDomainMap()));
+  ASSERT_TRUE(Q->getRangeMap()->isSameAs(*K.getRangeMap()));
+
+  MultiVector X(K.getDomainMap(), 3), expected(K.getRangeMap(), 3), got(K.getRangeMap(), 3);
+  X.randomize();
+  K.apply(X, expected);
+  Q->apply(X, got);
+  std::vector<double> error(3), scale(3);
+  got.update(-1.0, expected, 1.0);
+  got.normInf(error);
+  expected.normInf(scale);
+  for (int j = 0; j < 3; ++j) EXPECT_LT(error[j], 1e-13 * scale[j]) << "vector " << j;
+
+  // Y = beta Y + alpha Q X, with Y's old values kept.
+  MultiVector Y(K.getRangeMap(), 3), reference(K.getRangeMap(), 3);
+  Y.randomize();
+  reference.assign(Y);
+  K.apply(X, reference, Teuchos::NO_TRANS, -0.5, 2.0);
+  Q->apply(X, Y, Teuchos::NO_TRANS, -0.5, 2.0);
+  Y.update(-1.0, reference, 1.0);
+  Y.normInf(error);
+  reference.normInf(scale);
+  for (int j = 0; j < 3; ++j) EXPECT_LT(error[j], 1e-13 * scale[j]) << "alpha/beta, vector " << j;
+  EXPECT_GT(Q->bytes(), 0u);
+}
+
+INSTANTIATE_TEST_SUITE_P(Degrees, MatrixFreeElasticityOperatorTest,
+                         ::testing::Values(Case{2, 1}, Case{2, 2}, Case{2, 3}, Case{3, 1}, Case{3, 2}, Case{3, 3}),
+                         [](const ::testing::TestParamInfo<Case>& info) {
+                           return std::to_string(info.param.dim) + "D_P" + std::to_string(info.param.degree);
+                         });
+
+TEST(MatrixFreeElasticityOperator, SolvesThePaperProblemsToTheAssembledOptimalValues) {
+  auto comm = Tpetra::getDefaultComm();
+  for (const char* name : {"A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M"}) {
+    Teuchos::ParameterList definition = shippedProblem(std::string("paper/") + name);
+    const AssembledProblem assembled = buildProblem(definition, comm);
+    definition.set("stiffness: operator", "matrix-free");
+    const AssembledProblem matrixFree = buildProblem(definition, comm);
+    ASSERT_TRUE(Teuchos::rcp_dynamic_cast<const MatrixFreeElasticityOperator>(matrixFree.qp.Q) != Teuchos::null);
+    const SolveResult a = InteriorPointSolver(Teuchos::ParameterList()).solve(assembled.qp);
+    const SolveResult f = InteriorPointSolver(Teuchos::ParameterList()).solve(matrixFree.qp);
+    ASSERT_TRUE(a.converged() && f.converged()) << name;
+    EXPECT_NEAR(f.objective, a.objective, 1e-9 * std::fabs(a.objective)) << name;
+    EXPECT_LE(std::abs(f.outerIterations - a.outerIterations), 1) << name;
+  }
+}
+
+}  // namespace
