@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
   const double assembledSeconds = secondsPerApply(K, x, y, repeats, *comm);
   const double freeSeconds = secondsPerApply(*Q, x, y, repeats, *comm);
   std::ostringstream json;
-  json << "{\"dim\": " << dim << ", \"degree\": " << degree << ", \"nx\": " << nx << ", \"n\": " << n
+  json << "{\"dim\": " << dim << ", \"degree\": " << degree << ", \"nx\": " << nx << ", \"n\": " << K.getGlobalNumRows()
        << ", \"ranks\": " << comm->getSize() << ", \"nonzeros\": " << K.getGlobalNumEntries()
        << ", \"assembled_bytes_per_unknown\": " << csrBytes / n << ", \"matrix_free_bytes_per_unknown\": "
        << freeTotal / n << ", \"assembled_seconds_per_apply\": " << assembledSeconds
