@@ -22,8 +22,8 @@ std::vector<Point> latticePoints(const LagrangeSpace& space, const BoxBlock& blo
   const long long count[3] = {block.end[0] - block.begin[0] + 1, block.end[1] - block.begin[1] + 1,
                               block.end[2] - block.begin[2] + 1};
   std::vector<Point> point(space.numNodes(), Point{0, 0, 0});
-  for (long long v = 0, rest = 0; v < mesh.numVertices(); ++v) {
-    rest = v;
+  for (long long v = 0; v < mesh.numVertices(); ++v) {
+    long long rest = v;
     for (int axis = 0; axis < dim; ++axis) {
       point[v][axis] = k * (block.begin[axis] + rest % count[axis]);
       rest /= count[axis];

@@ -156,6 +156,20 @@ INSTANTIATE_TEST_SUITE_P(BoxMeshes, DistributedSpaceTest,
                                   (info.param.blocks ? "_Blocks" : "_Rank0");
                          });
 
+// With more ranks than the boxes can be cut into blocks for, rank 0 makes and partitions
+// the mesh: the same space either way.
+TEST(DistributedSpace, BoxWithTooFewBoxesForTheRanksIsPartitionedByRankZero) {
+  auto comm = Tpetra::getDefaultComm();
+  const BoxGrid box(2, {2, 2, 1}, {1.0, 1.0, 1.0});
+  const DistributedSpace ds(comm, box, 2);
+  const bool blocks = decomposeBox(2, box.cells, comm->getSize()).numBlocks() == comm->getSize();
+  EXPECT_EQ(blocks, comm->getSize() != 3);  // 3 blocks need 3 boxes along an axis
+  EXPECT_EQ(ds.serialPhaseBytes() > 0, !blocks);
+  EXPECT_EQ(ds.numGlobalNodes(), 25);
+  EXPECT_EQ(ds.numGlobalCells(), 8);
+  EXPECT_EQ(static_cast<long long>(ds.ownedNodeMap()->getGlobalNumElements()), 25);
+}
+
 TEST(DistributedSpace, NoMeshOnRankZeroThrowsOnEveryRank) {
   auto comm = Tpetra::getDefaultComm();
   auto mesh = std::make_shared<const SimplexMesh>(makeBoxMesh(2, {2, 2, 1}, {1.0, 1.0, 1.0}));
