@@ -98,7 +98,7 @@ DistributedBoxPart makeBoxMeshPart(const RCP<const Comm>& comm, const BoxGrid& b
         if (point[n][axis] == plane) part.boundaryNodes.push_back(n);
       part.boundaryStart.push_back(static_cast<long long>(part.boundaryNodes.size()));
     }
-  result.numGlobalCells = (dim == 2 ? 2 : 5) * box.cells[0] * box.cells[1] * (dim == 3 ? box.cells[2] : 1);
+  result.numGlobalCells = simplicesPerBox(dim) * box.cells[0] * box.cells[1] * (dim == 3 ? box.cells[2] : 1);
   return result;
 }
 

@@ -63,7 +63,6 @@ SimplexMesh makeBoxMesh(int dim, const std::array<long long, 3>& cellsPerDirecti
   const long long stride[3] = {1, count[0] + 1, (count[0] + 1) * (count[1] + 1)};
   const long long globalStride[3] = {1, n[0] + 1, (n[0] + 1) * (n[1] + 1)};
   const long long numVertices = (count[0] + 1) * (count[1] + 1) * (dim == 3 ? count[2] + 1 : 1);
-  const int simplicesPerBox = dim == 2 ? 2 : 5;
 
   SimplexMesh mesh;
   mesh.dim = dim;
@@ -87,7 +86,7 @@ SimplexMesh makeBoxMesh(int dim, const std::array<long long, 3>& cellsPerDirecti
     cornerId[corner] = cornerOffset(corner, 0) * stride[0] + cornerOffset(corner, 1) * stride[1] +
                        (dim == 3 ? cornerOffset(corner, 2) * stride[2] : 0);
 
-  mesh.cells.resize((dim + 1) * simplicesPerBox * block.numBoxes());
+  mesh.cells.resize((dim + 1) * simplicesPerBox(dim) * block.numBoxes());
   long long* cell = mesh.cells.data();
   for (long long k = begin[2]; k < begin[2] + count[2]; ++k)
     for (long long j = begin[1]; j < begin[1] + count[1]; ++j)
@@ -120,14 +119,14 @@ SimplexMesh makeBoxMesh(int dim, const std::array<long long, 3>& cellsPerDirecti
 
 std::vector<long long> boxBlockCells(int dim, const std::array<long long, 3>& cellsPerDirection,
                                      const BoxBlock& block) {
-  const int simplicesPerBox = dim == 2 ? 2 : 5;
+  const int perBox = simplicesPerBox(dim);
   const long long n0 = cellsPerDirection[0], n1 = cellsPerDirection[1];
   std::vector<long long> cells;
-  cells.reserve(simplicesPerBox * block.numBoxes());
+  cells.reserve(perBox * block.numBoxes());
   for (long long k = block.begin[2]; k < block.end[2]; ++k)
     for (long long j = block.begin[1]; j < block.end[1]; ++j)
       for (long long i = block.begin[0]; i < block.end[0]; ++i)
-        for (int s = 0; s < simplicesPerBox; ++s) cells.push_back((i + n0 * (j + n1 * k)) * simplicesPerBox + s);
+        for (int s = 0; s < perBox; ++s) cells.push_back((i + n0 * (j + n1 * k)) * perBox + s);
   return cells;
 }
 

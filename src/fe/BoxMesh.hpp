@@ -19,6 +19,9 @@ namespace signorini {
 SimplexMesh makeBoxMesh(int dim, const std::array<long long, 3>& cellsPerDirection,
                         const std::array<double, 3>& lengths);
 
+// Simplices per box: 2 triangles in 2D, 5 tetrahedra in 3D.
+inline int simplicesPerBox(int dim) { return dim == 2 ? 2 : 5; }
+
 // The boxes [begin[a], end[a]) along each axis a (entries past dim: 0 and 1).
 struct BoxBlock {
   std::array<long long, 3> begin = {0, 0, 0}, end = {1, 1, 1};
