@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "fe/RectilinearGrid.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
@@ -85,8 +86,13 @@ void BoxGrid::interpolation(const double* x, long long* vertices, double* weight
     box[a] = std::min(static_cast<long long>(std::floor(t)), cells[a] - 1);
     xi[a] = std::clamp(t - double(box[a]), 0.0, 1.0);
   }
+  boxSimplexInterpolation(dim, cells, box, xi, vertices, weights);
+}
+
+void boxSimplexInterpolation(int dim, const std::array<long long, 3>& cells, const long long* box, const double* xi,
+                             long long* vertices, double* weights) {
   // The simplex whose smallest barycentric coordinate is largest holds xi.
-  const auto& simplices = boxSimplexCorners(dim, static_cast<int>((box[0] + box[1] + box[2]) % 2));
+  const auto& simplices = boxSimplexCorners(dim, static_cast<int>((box[0] + box[1] + (dim == 3 ? box[2] : 0)) % 2));
   double best[4] = {}, bestMin = -1e300;
   const std::array<int, 4>* chosen = nullptr;
   for (const auto& s : simplices) {
@@ -112,23 +118,7 @@ void BoxGrid::interpolation(const double* x, long long* vertices, double* weight
   }
 }
 
-bool BoxGrid::halvable() const {
-  for (int a = 0; a < dim; ++a)
-    if (cells[a] % 2 != 0) return false;
-  return true;
-}
-
-BoxGrid BoxGrid::halved() const {
-  if (!halvable()) throw Error("BoxGrid::halved: every cell count must be even");
-  BoxGrid coarse = *this;
-  for (int a = 0; a < dim; ++a) coarse.cells[a] /= 2;
-  return coarse;
-}
-
-std::shared_ptr<const GeometricGrid> BoxGrid::coarser() const {
-  if (!halvable()) return nullptr;
-  return std::make_shared<BoxGrid>(halved());
-}
+std::shared_ptr<const GeometricGrid> BoxGrid::coarser() const { return RectilinearGrid(*this).coarser(); }
 
 std::string BoxGrid::description() const {
   std::string text;

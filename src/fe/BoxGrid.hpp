@@ -2,8 +2,8 @@
 // The box [0,L0]x[0,L1](x[0,L2]) cut into `cells` boxes per direction, each box into
 // simplices as doc/benchmark-family.md says (the subdivision of makeBoxMesh), seen as a P1
 // space: which simplex holds a point, and with which weights the vertex values interpolate
-// there. The geometric multigrid levels of a box mesh are such grids, each with half the
-// cells of the one above.
+// there. It is the finest geometric multigrid grid of a box mesh; the coarser ones are
+// RectilinearGrids.
 #include <array>
 #include <memory>
 #include <string>
@@ -29,16 +29,19 @@ struct BoxGrid : GeometricGrid {
   // The vertex within 1e-8 cell widths of x in every direction, or -1.
   long long vertexAt(const double* x) const override;
   void interpolation(const double* x, long long* vertices, double* weights) const override;
-  // The halved grid, when every count is even.
+  // RectilinearGrid(*this).coarser(): half the boxes per direction (plus one for an odd count).
   std::shared_ptr<const GeometricGrid> coarser() const override;
   std::string description() const override;
-
-  bool halvable() const;
-  BoxGrid halved() const;
 };
 
 // The simplices of box (i,j,k) as box corners: corner bit a (x), 2b (y), 4c (z) is the vertex
 // (i+a, j+b, k+c). `parity` is (i+j+k) % 2; in 2D it does not matter. Entry dim+1.. unused.
 const std::vector<std::array<int, 4>>& boxSimplexCorners(int dim, int parity);
+
+// P1 interpolation at the point xi (box units, in [0,1]^dim) of box `box` of a grid with
+// `cells` boxes per direction: the dim + 1 vertices (makeBoxMesh's numbering) of the simplex
+// that holds xi, and their weights (>= 0, summing to 1).
+void boxSimplexInterpolation(int dim, const std::array<long long, 3>& cells, const long long* box, const double* xi,
+                             long long* vertices, double* weights);
 
 }  // namespace signorini

@@ -7,10 +7,12 @@
 
 #include "fe/BoxGrid.hpp"
 #include "fe/BoxMesh.hpp"
+#include "support/InterpolationCheck.hpp"
 
 namespace {
 
 using namespace signorini;
+using signorini::testing::expectInterpolationReproduces;
 
 BoxGrid grid(int dim, long long n0, long long n1, long long n2) {
   BoxGrid g;
@@ -46,18 +48,7 @@ TEST(BoxGrid, InterpolationReproducesLinearFunctions) {
       for (int a = 0; a < dim; ++a) x[a] = g.lengths[a] * unit(random);
       if (trial < 20)  // points on the vertices, edges and faces of the subdivision
         for (int a = 0; a < dim; ++a) x[a] = g.lengths[a] * std::round(x[a] / g.lengths[a] * 2 * g.cells[a]) / (2.0 * g.cells[a]);
-      long long vertices[4];
-      double weights[4], sum = 0.0, reproduced[3] = {0, 0, 0};
-      g.interpolation(x, vertices, weights);
-      for (int k = 0; k <= dim; ++k) {
-        EXPECT_GE(weights[k], 0.0);
-        sum += weights[k];
-        double y[3];
-        g.vertexCoordinates(vertices[k], y);
-        for (int a = 0; a < dim; ++a) reproduced[a] += weights[k] * y[a];
-      }
-      EXPECT_NEAR(sum, 1.0, 1e-14);
-      for (int a = 0; a < dim; ++a) EXPECT_NEAR(reproduced[a], x[a], 1e-13) << "dim " << dim << " trial " << trial;
+      expectInterpolationReproduces(g, x);
     }
   }
 }
@@ -74,22 +65,6 @@ TEST(BoxGrid, InterpolationUsesTheSimplexOfTheMesh) {
   for (int k = 0; k < 3; ++k)
     if (vertices[k] == 0 || vertices[k] == 4) onDiagonal += weights[k];
   EXPECT_NEAR(onDiagonal, 1.0, 1e-14);
-}
-
-TEST(BoxGrid, HalvesEvenGridsOnly) {
-  const BoxGrid g = grid(3, 4, 2, 6);
-  ASSERT_TRUE(g.halvable());
-  const BoxGrid h = g.halved();
-  EXPECT_EQ(h.cells[0], 2);
-  EXPECT_EQ(h.cells[1], 1);
-  EXPECT_EQ(h.cells[2], 3);
-  EXPECT_FALSE(h.halvable());
-  // Every vertex of the halved grid is a vertex of the grid.
-  for (long long v = 0; v < h.numVertices(); ++v) {
-    double x[3];
-    h.vertexCoordinates(v, x);
-    EXPECT_GE(g.vertexAt(x), 0);
-  }
 }
 
 }  // namespace

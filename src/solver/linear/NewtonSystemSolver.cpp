@@ -85,7 +85,7 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
                                            {"gathered", ContactSubspaceBlocks::Gathered}},
                                           "contact correction: blocks"));
   prec.set("hierarchy", "auto",
-           "Multigrid levels: \"geometric\" (box meshes: P_k to P1, then box grids with half the cells, "
+           "Multigrid levels: \"geometric\" (box meshes: P_k to P1, then grids with half the boxes per direction, "
            "Galerkin coarse matrices, Chebyshev smoothing, a direct solve or MueLu below); "
            "\"algebraic\": MueLu alone; \"auto\": geometric on box meshes",
            choices<Hierarchy>({{"auto", Hierarchy::Auto},
@@ -93,8 +93,8 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
                                {"geometric", Hierarchy::Geometric}},
                               "hierarchy"));
   prec.set("geometric: coarsest size", 200,
-           "Expert: The geometric levels stop before a grid with fewer unknowns than this, or at one that cannot "
-           "be halved",
+           "Expert: The geometric levels stop before a grid with fewer unknowns than this, or after one with a "
+           "single box per direction",
            range(1, std::numeric_limits<int>::max()));
   prec.set("geometric: direct solve size", 5000,
            "Expert: The coarsest geometric grid is solved exactly (gathered to rank 0 and factored by KLU2) when "

@@ -1,6 +1,7 @@
 #pragma once
 // Geometric multigrid: below the fine space lies the sequence of grids a GeometricGrid gives
-// (for a box mesh, box grids with half the cells of the one above; a P_k space, k > 1, first
+// (for a box mesh, grids with every other vertex line of the one above, and its last, so half
+// the boxes per direction, one more for an odd count; a P_k space, k > 1, first
 // goes to P1 on its own mesh's grid), each a P1 space, joined by P1 interpolation P. The
 // coarse matrices are Galerkin products P^T A P, the smoother is Ifpack2's Chebyshev, and
 // once a grid has fewer unknowns than "coarsest size" or has no coarser one, that grid is

@@ -75,8 +75,9 @@ TEST(GeometricMultigrid, LevelsFollowTheGrids) {
   // P2 goes to P1 on its own mesh first.
   EXPECT_EQ(multigrid(box(2, 4, 2).qp, 20).levelSizes(), (std::vector<long long>{162, 50}));
   EXPECT_EQ(multigrid(box(3, 4, 1).qp, 20).levelSizes(), (std::vector<long long>{375, 81, 24}));
-  // An odd count cannot be halved: MueLu alone.
-  EXPECT_EQ(multigrid(box(2, 5, 1).qp, 1).geometricLevels(), 0);
+  // An odd count coarsens too: 5 cells, then 3 (boxes of widths 2/5, 2/5 and 1/5), 2 and 1.
+  EXPECT_EQ(multigrid(box(2, 5, 1).qp, 1).levelSizes(), (std::vector<long long>{72, 32, 18, 8}));
+  EXPECT_EQ(multigrid(box(3, 3, 1).qp, 20).levelSizes(), (std::vector<long long>{192, 81, 24}));
 }
 
 // P u_c = u at every fine DOF for a linear field u that vanishes on the clamped face (and
@@ -87,7 +88,7 @@ TEST(GeometricMultigrid, InterpolationIsExactForLinearFields) {
     bool clamped;
   };
   for (const Case& c : {Case{2, 8, 1, true}, Case{2, 4, 2, true}, Case{2, 4, 3, false}, Case{3, 4, 1, true},
-                        Case{3, 4, 2, false}}) {
+                        Case{3, 4, 2, false}, Case{2, 5, 1, true}, Case{3, 3, 1, false}}) {
     const AssembledProblem problem = box(c.dim, c.cells, c.degree, c.clamped);
     const ContactQP& qp = problem.qp;
     const GeometricMultigridPreconditioner gmg = multigrid(qp, 1);
@@ -178,10 +179,11 @@ TEST(GeometricMultigrid, CycleIsSymmetric) {
 // The coarsest grid is factored when it has at most "direct solve size" unknowns: with no
 // geometric level below the fine one, the cycle is then Q^-1 itself.
 TEST(GeometricMultigrid, SmallCoarsestGridIsSolvedExactly) {
-  const AssembledProblem problem = box(2, 5, 1);  // 5 cells cannot be halved: one level
+  const AssembledProblem problem = box(2, 5, 1);  // the 3-cell grid (32 unknowns) is below 40: one level
   const ContactQP& qp = problem.qp;
-  EXPECT_FALSE(multigrid(qp, 1, 5, 71).directCoarsestSolve());  // 72 unknowns
-  GeometricMultigridPreconditioner gmg = multigrid(qp, 1, 5, 72);
+  EXPECT_FALSE(multigrid(qp, 40, 5, 71).directCoarsestSolve());  // 72 unknowns
+  GeometricMultigridPreconditioner gmg = multigrid(qp, 40, 5, 72);
+  ASSERT_EQ(gmg.geometricLevels(), 0);
   ASSERT_TRUE(gmg.directCoarsestSolve());
   gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
   Vector x(qp.Q->getDomainMap()), Qx(x.getMap()), MQx(x.getMap());
