@@ -118,7 +118,7 @@ def check():
 def predict():
     """3D P1: 128^3 boxes (6.4 M unknowns) over 64-1024 ranks (strong), and blocks of 40^3
     boxes (~200 000 unknowns) per rank (weak). Both hierarchies end in a coarsest geometric
-    grid of at most 5000 unknowns, gathered to rank 0."""
+    grid of at most 2500 unknowns, gathered to rank 0."""
     runs = load("communication.json")["runs"]
     halo, per_node, allreduces = calibration(runs, "3d-p1-nx40")
     reference = next(c for c in load("reference-solve.json")["cases"] if c["problem"] == "family/3d-p1-nx100")

@@ -96,10 +96,10 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            "Expert: The geometric levels stop before a grid with fewer unknowns than this, or after one with a "
            "single box per direction",
            range(1, std::numeric_limits<int>::max()));
-  prec.set("geometric: direct solve size", 5000,
-           "Expert: The coarsest geometric grid is solved exactly (gathered to rank 0 and factored by KLU2) when "
-           "it has at most this many unknowns; MueLu's algebraic multigrid takes over below it otherwise. 0: "
-           "always MueLu",
+  prec.set("geometric: direct solve size", 2500,
+           "Expert: The geometric levels end at the first grid with at most this many unknowns, which is solved "
+           "exactly (gathered to rank 0 and factored by KLU2); MueLu's algebraic multigrid takes over below a "
+           "larger coarsest grid. 0: always MueLu",
            range(0, std::numeric_limits<int>::max()));
   prec.set("geometric: eigenvalue update steps", 5,
            "Expert: Lanczos steps that update a smoother's largest-eigenvalue estimate when only the contact rows "

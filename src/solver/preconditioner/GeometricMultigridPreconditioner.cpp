@@ -315,7 +315,12 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
   const bool isP1 = Q.getGlobalNumRows() == static_cast<Tpetra::global_size_t>(blockSize * grid.numVertices());
   std::shared_ptr<const GeometricGrid> owner;  // keeps `next` alive
   const GeometricGrid* next = isP1 ? (owner = grid.coarser()).get() : &grid;
-  for (; next && blockSize * next->numVertices() >= coarsestSize; owner = next->coarser(), next = owner.get()) {
+  // A grid the direct solver takes is the last: its exact solve is the best coarse correction.
+  auto goesOn = [&] {
+    return next && blockSize * next->numVertices() >= coarsestSize &&
+           static_cast<long long>(levels_.back()->dofMap->getGlobalNumElements()) > directSolveSize;
+  };
+  for (; goesOn(); owner = next->coarser(), next = owner.get()) {
     auto coarse = std::make_shared<Level>();
     const Level& above = *levels_.back();
     levels_.back()->P = interpolation(*next, blockSize, above.dofMap, above.coordinates, above.dirichlet,

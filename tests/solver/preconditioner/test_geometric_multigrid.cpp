@@ -37,9 +37,10 @@ AssembledProblem box(int dim, int cells, int degree, bool clamped = true) {
   return buildProblem(p, Tpetra::getDefaultComm());
 }
 
-// `directSolveSize` 0: MueLu below the coarsest grid.
+// `directSolveSize` 0: MueLu below the coarsest grid; the levels end at the first grid with at
+// most `directSolveSize` unknowns.
 GeometricMultigridPreconditioner multigrid(const ContactQP& qp, long long coarsestSize = 200,
-                                           int eigenvalueUpdateSteps = 5, long long directSolveSize = 5000) {
+                                           int eigenvalueUpdateSteps = 5, long long directSolveSize = 100) {
   return GeometricMultigridPreconditioner(*qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize, coarsestSize,
                                           directSolveSize, Teuchos::ParameterList(), Teuchos::ParameterList(), eigenvalueUpdateSteps);
 }
@@ -71,13 +72,16 @@ struct ContactBox {
 
 TEST(GeometricMultigrid, LevelsFollowTheGrids) {
   // 2D P1, 16 cells: grids of 16, 8, 4 cells; the 2-cell grid (18 unknowns) is below 50.
-  EXPECT_EQ(multigrid(box(2, 16, 1).qp, 50).levelSizes(), (std::vector<long long>{578, 162, 50}));
+  EXPECT_EQ(multigrid(box(2, 16, 1).qp, 50, 5, 0).levelSizes(), (std::vector<long long>{578, 162, 50}));
   // P2 goes to P1 on its own mesh first.
-  EXPECT_EQ(multigrid(box(2, 4, 2).qp, 20).levelSizes(), (std::vector<long long>{162, 50}));
-  EXPECT_EQ(multigrid(box(3, 4, 1).qp, 20).levelSizes(), (std::vector<long long>{375, 81, 24}));
+  EXPECT_EQ(multigrid(box(2, 4, 2).qp, 20, 5, 0).levelSizes(), (std::vector<long long>{162, 50}));
+  EXPECT_EQ(multigrid(box(3, 4, 1).qp, 20, 5, 0).levelSizes(), (std::vector<long long>{375, 81, 24}));
   // An odd count coarsens too: 5 cells, then 3 (boxes of widths 2/5, 2/5 and 1/5), 2 and 1.
-  EXPECT_EQ(multigrid(box(2, 5, 1).qp, 1).levelSizes(), (std::vector<long long>{72, 32, 18, 8}));
-  EXPECT_EQ(multigrid(box(3, 3, 1).qp, 20).levelSizes(), (std::vector<long long>{192, 81, 24}));
+  EXPECT_EQ(multigrid(box(2, 5, 1).qp, 1, 5, 0).levelSizes(), (std::vector<long long>{72, 32, 18, 8}));
+  EXPECT_EQ(multigrid(box(3, 3, 1).qp, 20, 5, 0).levelSizes(), (std::vector<long long>{192, 81, 24}));
+  // The first grid the direct solver takes is the last.
+  EXPECT_EQ(multigrid(box(2, 16, 1).qp, 50, 5, 162).levelSizes(), (std::vector<long long>{578, 162}));
+  EXPECT_EQ(multigrid(box(2, 16, 1).qp, 50, 5, 161).levelSizes(), (std::vector<long long>{578, 162, 50}));
 }
 
 // P u_c = u at every fine DOF for a linear field u that vanishes on the clamped face (and
@@ -88,7 +92,7 @@ TEST(GeometricMultigrid, InterpolationIsExactForLinearFields) {
     bool clamped;
   };
   for (const Case& c : {Case{2, 8, 1, true}, Case{2, 4, 2, true}, Case{2, 4, 3, false}, Case{3, 4, 1, true},
-                        Case{3, 4, 2, false}, Case{2, 5, 1, true}, Case{3, 3, 1, false}}) {
+                        Case{3, 4, 2, false}, Case{2, 7, 1, true}, Case{3, 3, 1, false}}) {
     const AssembledProblem problem = box(c.dim, c.cells, c.degree, c.clamped);
     const ContactQP& qp = problem.qp;
     const GeometricMultigridPreconditioner gmg = multigrid(qp, 1);
@@ -144,9 +148,10 @@ TEST(GeometricMultigrid, CgCountsDoNotGrowWithTheMesh) {
   for (const Case& c : {Case{2, 32, 1, 1, 16}, Case{2, 64, 1, 2, 16}, Case{2, 16, 2, 1, 16}, Case{3, 8, 1, 1, 11},
                         Case{3, 16, 1, 2, 11}}) {
     const AssembledProblem problem = box(c.dim, c.cells, c.degree);
-    GeometricMultigridPreconditioner gmg = multigrid(problem.qp);
+    GeometricMultigridPreconditioner gmg = multigrid(problem.qp, 200, 5, 1000);
     gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
     EXPECT_EQ(gmg.geometricLevels(), c.levels);
+    EXPECT_TRUE(gmg.directCoarsestSolve());
     const KrylovResult r = solve(problem.qp, gmg);
     EXPECT_LE(r.iterations, c.maxIterations) << c.dim << "D P" << c.degree << " nx " << c.cells;
     if (c.dim == 2 && c.cells == 64) {
@@ -161,7 +166,7 @@ TEST(GeometricMultigrid, CgCountsDoNotGrowWithTheMesh) {
 // x^T M y = y^T M x: CG needs a symmetric preconditioner, with either coarsest solve.
 TEST(GeometricMultigrid, CycleIsSymmetric) {
   const AssembledProblem problem = box(3, 8, 1);
-  for (long long directSolveSize : {0, 5000}) {
+  for (long long directSolveSize : {0, 100}) {
     GeometricMultigridPreconditioner gmg = multigrid(problem.qp, 50, 5, directSolveSize);
     gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
     ASSERT_EQ(gmg.geometricLevels(), 2);
