@@ -2,6 +2,7 @@
 
 #include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
 
 #include "fe/ElasticityElement.hpp"
 #include "fe/SimplexQuadrature.hpp"
@@ -93,6 +94,49 @@ void MatrixFreeElasticityOperator::applyCells(const double* x, double* y) const 
         if (!fixed_[dof]) y[dof] += ye[a][c];
       }
   }
+}
+
+// d += the diagonal entries of the local cells' element matrices, prescribed DOFs left out.
+template <int D>
+void MatrixFreeElasticityOperator::diagonalOfCells(double* d) const {
+  const int npc = ds_.space().nodesPerCell();
+  const long long numCells = static_cast<long long>(cellNodes_.size()) / npc;
+  for (long long cell = 0; cell < numCells; ++cell) {
+    const int* nodes = &cellNodes_[cell * npc];
+    const double* geometry = &cellGeometry_[cell * (1 + D * D)];
+    const double* Jinv = geometry + 1;
+    for (int q = 0; q < numPoints_; ++q) {
+      const double* dphi = &gradients_[q * npc * D];
+      const double w = weights_[q] * geometry[0];
+      for (int a = 0; a < npc; ++a) {
+        double g[D], squared = 0.0;
+        for (int e = 0; e < D; ++e) {
+          g[e] = 0.0;
+          for (int s = 0; s < D; ++s) g[e] += dphi[a * D + s] * Jinv[s * D + e];
+          squared += g[e] * g[e];
+        }
+        for (int c = 0; c < D; ++c) {
+          const int dof = D * nodes[a] + c;
+          if (!fixed_[dof]) d[dof] += w * (mu_ * (squared + g[c] * g[c]) + lambda_ * g[c] * g[c]);
+        }
+      }
+    }
+  }
+}
+
+void MatrixFreeElasticityOperator::getLocalDiagCopy(Vector& diagonal) const {
+  Vector overlapDiagonal(ds_.overlapDofMap());
+  {
+    auto d = overlapDiagonal.getDataNonConst();
+    if (ds_.dim() == 2)
+      diagonalOfCells<2>(d.getRawPtr());
+    else
+      diagonalOfCells<3>(d.getRawPtr());
+  }
+  diagonal.putScalar(0.0);
+  diagonal.doExport(overlapDiagonal, *toOverlap_, Tpetra::ADD);
+  auto out = diagonal.getDataNonConst();
+  for (LocalOrdinal i : ownedFixed_) out[i] = 1.0;
 }
 
 void MatrixFreeElasticityOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, Scalar alpha,

@@ -32,12 +32,19 @@ class MatrixFreeElasticityOperator : public Operator {
   RCP<const Map> getRangeMap() const override { return ds_.ownedDofMap(); }
   bool hasTransposeApply() const override { return true; }
 
+  // diagonal = diag(Q) on the owned DOFs, cell by cell: the entry of DOF (node a, component c)
+  // is the integral of mu (|grad phi_a|^2 + (d_c phi_a)^2) + lambda (d_c phi_a)^2; 1 on
+  // prescribed DOFs. What a Jacobi or Chebyshev smoother of Q needs, without Q. Collective.
+  void getLocalDiagCopy(Vector& diagonal) const;
+
   // Heap bytes of what the operator stores (per-cell data, tables, work vectors).
   std::size_t bytes() const;
 
  private:
   template <int D>
   void applyCells(const double* x, double* y) const;
+  template <int D>
+  void diagonalOfCells(double* d) const;
 
   const DistributedSpace& ds_;
   double lambda_, mu_;
