@@ -315,10 +315,11 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
   const bool isP1 = Q.getGlobalNumRows() == static_cast<Tpetra::global_size_t>(blockSize * grid.numVertices());
   std::shared_ptr<const GeometricGrid> owner;  // keeps `next` alive
   const GeometricGrid* next = isP1 ? (owner = grid.coarser()).get() : &grid;
-  // A grid the direct solver takes is the last: its exact solve is the best coarse correction.
+  // A coarse grid the direct solver takes is the last: its exact solve is the best coarse
+  // correction. The fine space always gets its levels: it may be P_k, denser to factor.
   auto goesOn = [&] {
     return next && blockSize * next->numVertices() >= coarsestSize &&
-           static_cast<long long>(levels_.back()->dofMap->getGlobalNumElements()) > directSolveSize;
+           (levels_.size() == 1 || static_cast<long long>(levels_.back()->dofMap->getGlobalNumElements()) > directSolveSize);
   };
   for (; goesOn(); owner = next->coarser(), next = owner.get()) {
     auto coarse = std::make_shared<Level>();

@@ -4,7 +4,7 @@
 // the boxes per direction, one more for an odd count; a P_k space, k > 1, first
 // goes to P1 on its own mesh's grid), each a P1 space, joined by P1 interpolation P. The
 // coarse matrices are Galerkin products P^T A P, the smoother is Ifpack2's Chebyshev. The
-// levels end at the first grid with at most "direct solve size" unknowns, solved exactly
+// levels end at the first coarse grid with at most "direct solve size" unknowns, solved exactly
 // (gathered to rank 0 and factored), or at a grid whose coarser one would have fewer than
 // "coarsest size" unknowns or which has none; MueLu's algebraic multigrid, with the grid's
 // rigid body modes, takes over below a coarsest grid too large to factor.
