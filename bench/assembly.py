@@ -10,11 +10,11 @@ bench/results/assembly.json ({"provenance", "runs"}: one record per case and ran
 import argparse
 import json
 import os
-import subprocess
 
+from bench_binary import run_cases
 from provenance import provenance
 
-from preconditioners import ENV, ROOT
+from preconditioners import ROOT
 
 CASES = [(3, 1, 70), (2, 1, 700), (3, 2, 35)]
 
@@ -25,14 +25,7 @@ def main():
     args = parser.parse_args()
     ranks = [int(r) for r in args.ranks.split(",")]
     made = provenance(max(ranks))  # before the result file is rewritten (git describe --dirty)
-    records = []
-    for dim, degree, nx in CASES:
-        for np in ranks:
-            cmd = ["mpirun", "-np", str(np), os.path.join(ROOT, "build", "bin", "signorini_bench_assembly"),
-                   str(dim), str(degree), str(nx)]
-            out = subprocess.run(cmd, env=ENV, capture_output=True, text=True, check=True).stdout
-            records.append(json.loads(out.strip().splitlines()[-1]))
-            print(json.dumps(records[-1]), flush=True)
+    records = run_cases("signorini_bench_assembly", CASES, ranks)
     with open(os.path.join(ROOT, "bench", "results", "assembly.json"), "w") as f:
         json.dump({"provenance": made, "runs": records}, f, indent=1)
 

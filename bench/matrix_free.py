@@ -11,11 +11,11 @@ bench/results/matrix-free.json ({"provenance", "runs"}) and bench/results/matrix
 import argparse
 import json
 import os
-import subprocess
 
+from bench_binary import run_cases
 from provenance import provenance
 
-from preconditioners import ENV, ROOT
+from preconditioners import ROOT
 
 CASES = [(3, 1, 70), (3, 2, 35), (3, 3, 24)]
 RESULTS = os.path.join(ROOT, "bench", "results")
@@ -39,14 +39,7 @@ def main():
     args = parser.parse_args()
     ranks = [int(r) for r in args.ranks.split(",")]
     made = provenance(max(ranks))  # before the result files are rewritten (git describe --dirty)
-    runs = []
-    for dim, degree, nx in CASES:
-        for np in ranks:
-            cmd = ["mpirun", "-np", str(np), os.path.join(ROOT, "build", "bin", "signorini_bench_operator"),
-                   str(dim), str(degree), str(nx)]
-            out = subprocess.run(cmd, env=ENV, capture_output=True, text=True, check=True).stdout
-            runs.append(json.loads(out.strip().splitlines()[-1]))
-            print(json.dumps(runs[-1]), flush=True)
+    runs = run_cases("signorini_bench_operator", CASES, ranks)
     with open(os.path.join(RESULTS, "matrix-free.json"), "w") as f:
         json.dump({"provenance": made, "runs": runs}, f, indent=1)
     with open(os.path.join(RESULTS, "matrix-free.md"), "w") as f:

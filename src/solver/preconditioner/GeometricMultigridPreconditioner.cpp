@@ -318,8 +318,8 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
   // A coarse grid the direct solver takes is the last: its exact solve is the best coarse
   // correction. The fine space always gets its levels: it may be P_k, denser to factor.
   auto goesOn = [&] {
-    return next && blockSize * next->numVertices() >= coarsestSize &&
-           (levels_.size() == 1 || static_cast<long long>(levels_.back()->dofMap->getGlobalNumElements()) > directSolveSize);
+    const auto aboveSize = static_cast<long long>(levels_.back()->dofMap->getGlobalNumElements());
+    return next && blockSize * next->numVertices() >= coarsestSize && (levels_.size() == 1 || aboveSize > directSolveSize);
   };
   for (; goesOn(); owner = next->coarser(), next = owner.get()) {
     auto coarse = std::make_shared<Level>();
