@@ -4,6 +4,9 @@
 
 #include <cmath>
 
+#include <BelosLinearProblem.hpp>
+#include <BelosPseudoBlockCGSolMgr.hpp>
+#include <BelosTpetraAdapter.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
@@ -90,6 +93,83 @@ TEST(KrylovSolver, AStartWorseThanZeroCountsAsZero) {
   EXPECT_LE(far.r, 0.1 * (1 + 1e-6));
   // Not merely 0.1 ||r0||, which would be above ||b||.
   EXPECT_LT(far.r, 0.1 * far.r0);
+}
+
+// Jacobi with a count of its applications.
+class CountingJacobi : public Operator {
+ public:
+  explicit CountingJacobi(const CrsMatrix& A) : inverseDiagonal_(A.getRowMap()) {
+    A.getLocalDiagCopy(inverseDiagonal_);
+    inverseDiagonal_.reciprocal(inverseDiagonal_);
+  }
+  void apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, Scalar alpha, Scalar beta) const override {
+    ++applications;
+    Y.elementWiseMultiply(alpha, inverseDiagonal_, X, beta);
+  }
+  RCP<const Map> getDomainMap() const override { return inverseDiagonal_.getMap(); }
+  RCP<const Map> getRangeMap() const override { return inverseDiagonal_.getMap(); }
+  mutable int applications = 0;
+
+ private:
+  Vector inverseDiagonal_;
+};
+
+// S L S with L the 1D Laplacian and S a varying diagonal: Jacobi is not a multiple of the identity.
+RCP<CrsMatrix> scaledLaplacian(long long n) {
+  auto map = rcp(new Map(n, 0, Tpetra::getDefaultComm()));
+  auto A = rcp(new CrsMatrix(map, 3));
+  auto s = [](GlobalOrdinal g) { return 1.0 + 0.5 * std::sin(0.1 * static_cast<double>(g)); };
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(i);
+    for (GlobalOrdinal j : {g - 1, g, g + 1})
+      if (j >= 0 && j < n)
+        A->insertGlobalValues(g, Teuchos::tuple(j), Teuchos::tuple(s(g) * s(j) * (j == g ? 2.0 : -1.0)));
+  }
+  A->fillComplete();
+  return A;
+}
+
+TEST(KrylovSolver, CgSkipsThePreconditionerOnAConvergedResidual) {
+  const auto A = scaledLaplacian(300);
+  auto b = rcp(new MultiVector(A->getRangeMap(), 1));
+  b->randomize();
+  const double tol = 1e-8;
+
+  auto M = rcp(new CountingJacobi(*A));
+  auto x = rcp(new MultiVector(A->getDomainMap(), 1));
+  const KrylovResult result = KrylovSolver().solve(A, M, b, x, tol, 1000);
+  ASSERT_TRUE(result.converged);
+  ASSERT_GT(result.iterations, 10);
+  // Belos applies M once to r0 and once per iteration, the last time to a residual that
+  // already passed: that one is left out.
+  EXPECT_EQ(M->applications, result.iterations);
+  EXPECT_LE(residualNorm(*A, *b, *x), tol * b->getVector(0)->norm2());
+
+  // The iterates are Belos' own: its CG, run directly with the same M, ends on the same x
+  // after the same iterations.
+  auto direct = rcp(new CountingJacobi(*A));
+  auto y = rcp(new MultiVector(A->getDomainMap(), 1));
+  auto problem = rcp(new Belos::LinearProblem<Scalar, MultiVector, Operator>(A, y, b));
+  problem->setRightPrec(direct);
+  problem->setProblem();
+  auto params = rcp(new Teuchos::ParameterList);
+  params->set("Convergence Tolerance", tol);
+  params->set("Maximum Iterations", 1000);
+  params->set("Implicit Residual Scaling", "Norm of RHS");
+  params->set("Assert Positive Definiteness", false);
+  Belos::PseudoBlockCGSolMgr<Scalar, MultiVector, Operator> cg(problem, params);
+  ASSERT_EQ(cg.solve(), Belos::Converged);
+  EXPECT_EQ(cg.getNumIters(), result.iterations);
+  EXPECT_EQ(direct->applications, result.iterations + 1);
+  y->update(-1.0, *x, 1.0);
+  EXPECT_EQ(y->getVector(0)->normInf(), 0.0);
+
+  // A start that already meets the target: no iteration, no application.
+  auto again = rcp(new CountingJacobi(*A));
+  const KrylovResult none = KrylovSolver().solve(A, again, b, x, tol, 1000);
+  EXPECT_TRUE(none.converged);
+  EXPECT_EQ(none.iterations, 0);
+  EXPECT_EQ(again->applications, 0);
 }
 
 }  // namespace
