@@ -5,7 +5,6 @@
 #include <vector>
 
 #include <Ifpack2_Chebyshev.hpp>
-#include <Teuchos_LAPACK.hpp>
 #include <Teuchos_TimeMonitor.hpp>
 #include <TpetraExt_TripleMatrixMultiply.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -18,6 +17,7 @@
 #include "signorini/core/Error.hpp"
 #include "signorini/solver/GeometricGrid.hpp"
 #include "solver/preconditioner/GatheredDirectSolver.hpp"
+#include "solver/preconditioner/JacobiEigenvalueEstimate.hpp"
 #include "solver/preconditioner/MueLuPreconditioner.hpp"
 #include "solver/preconditioner/RigidBodyModes.hpp"
 
@@ -32,7 +32,7 @@ struct GeometricMultigridPreconditioner::Level {
   std::vector<char> dirichlet;      // per owned DOF
   RCP<CrsMatrix> A;
   RCP<Chebyshev> smoother;
-  RCP<Vector> ritzVector;  // of the smoother's last eigenvalue estimate
+  JacobiEigenvalueEstimate eigenvalue;  // of the smoother, kept across builds
   RCP<CrsMatrix> P, R;  // from the next coarser level to this one, and its transpose
 };
 
@@ -128,82 +128,6 @@ RCP<CrsMatrix> interpolation(const GeometricGrid& coarse, int blockSize, const R
 }  // namespace
 
 namespace {
-
-// A start vector that depends on the global DOF ids only: Ifpack2's own estimates start from a
-// random vector seeded from std::rand's state, so the smoothers, and the truncated Newton
-// steps with them, changed from run to run and with the rank count.
-void deterministicStart(Vector& x) {
-  auto xd = x.getDataNonConst();
-  for (long i = 0; i < xd.size(); ++i) {
-    const double t = std::sin(12.9898 * static_cast<double>(x.getMap()->getGlobalElement(i)) + 0.5) * 43758.5453;
-    xd[i] = t - std::floor(t) - 0.5;
-  }
-}
-
-// The largest eigenvalue of D^-1 A (D = diag A) by Lanczos in the D inner product, where
-// D^-1 A is self-adjoint: the largest Ritz value after k steps is far closer to it than the
-// power method's Rayleigh quotient after k steps (the power method needed 30 steps in 3D),
-// and each step costs the same one product with A. `vector` holds the start and receives the
-// Ritz vector of the value returned, both scaled by D^1/2 (an eigenvector of D^-1/2 A D^-1/2):
-// so scaled, a Ritz vector still starts the next estimate well after D changed by orders of
-// magnitude on the contact DOFs, where unscaled it would be all contact DOFs in the D-norm.
-double largestEigenvalueEstimate(const CrsMatrix& A, int steps, Vector& vector) {
-  const auto map = A.getRowMap();
-  Vector diagonal(map), inverseDiagonal(map), root(map), inverseRoot(map), w(map), Dw(map);
-  MultiVector basis(map, steps);
-  A.getLocalDiagCopy(diagonal);
-  inverseDiagonal.reciprocal(diagonal);
-  {
-    auto d = diagonal.getData();
-    auto r = root.getDataNonConst(), ir = inverseRoot.getDataNonConst();
-    for (long i = 0; i < r.size(); ++i) {
-      r[i] = std::sqrt(d[i]);
-      ir[i] = 1.0 / r[i];
-    }
-  }
-  w.elementWiseMultiply(1.0, inverseRoot, vector, 0.0);
-  basis.getVectorNonConst(0)->update(1.0 / vector.norm2(), w, 0.0);
-  std::vector<double> alpha, beta;
-  for (int k = 0; k < steps; ++k) {
-    const auto q = basis.getVector(k);
-    A.apply(*q, Dw);                     // A q
-    alpha.push_back(q->dot(Dw));         // <D^-1 A q, q>_D
-    w.elementWiseMultiply(1.0, inverseDiagonal, Dw, 0.0);
-    w.update(-alpha.back(), *q, 1.0);
-    if (k > 0) w.update(-beta.back(), *basis.getVector(k - 1), 1.0);
-    Dw.elementWiseMultiply(1.0, diagonal, w, 0.0);
-    const double b = std::sqrt(std::max(w.dot(Dw), 0.0));
-    if (k + 1 == steps || b <= 1e-12 * std::abs(alpha.back())) break;  // the Krylov space is invariant
-    beta.push_back(b);
-    basis.getVectorNonConst(k + 1)->update(1.0 / b, w, 0.0);
-  }
-  // Eigenpairs of the Lanczos tridiagonal matrix, ascending.
-  const int n = static_cast<int>(alpha.size());
-  beta.resize(std::max(n - 1, 1));
-  std::vector<double> work(std::max(1, 2 * n - 2)), eigenvectors(n * n);
-  int info = 0;
-  Teuchos::LAPACK<int, double>().STEQR('I', n, alpha.data(), beta.data(), eigenvectors.data(), n, work.data(), &info);
-  if (info != 0) throw Error("GeometricMultigridPreconditioner: the Lanczos eigenvalue estimate failed");
-  w.putScalar(0.0);
-  for (int k = 0; k < n; ++k) w.update(eigenvectors[(n - 1) * n + k], *basis.getVector(k), 1.0);
-  vector.elementWiseMultiply(1.0, root, w, 0.0);
-  return alpha.back();
-}
-
-// The start of a new estimate after A changed in `change`'s rows: the previous (scaled) Ritz
-// vector, plus as much again on those rows (a new largest eigenvalue there would have its
-// eigenvector there, where the previous vector need not reach).
-void updatedStart(const CrsMatrix& change, Vector& vector) {
-  Vector local(vector.getMap());
-  deterministicStart(local);
-  {
-    auto data = local.getDataNonConst();
-    for (std::size_t row = 0; row < change.getNodeNumRows(); ++row)
-      if (change.getNumEntriesInLocalRow(static_cast<LocalOrdinal>(row)) == 0) data[row] = 0.0;
-  }
-  const double size = local.norm2();
-  if (size > 0.0) vector.update(vector.norm2() / size, local, 1.0);
-}
 
 // The entries of `next` that differ from `previous`, as a matrix holding only them, when the
 // two share one graph (BarrierHessianOperator assembles every H on Q's): between Newton
@@ -466,23 +390,25 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: smoothers"));
     level.smoother = rcp(new Chebyshev(level.A));
     Teuchos::ParameterList smoother = smoother_;
+    level.eigenvalue.setMatrix(*level.A);
     if (!smoother.isParameter("chebyshev: max eigenvalue")) {
       int steps = smoother.get<int>("chebyshev: eigenvalue max iterations");
-      if (!levelChange.is_null() && !level.ritzVector.is_null() && eigenvalueUpdateSteps_ > 0) {
-        updatedStart(*levelChange, *level.ritzVector);
+      if (!levelChange.is_null() && level.eigenvalue.hasRitzVector() && eigenvalueUpdateSteps_ > 0) {
+        level.eigenvalue.startFromLast(*levelChange);
         steps = eigenvalueUpdateSteps_;
       } else {
-        level.ritzVector = rcp(new Vector(level.A->getRowMap()));
-        deterministicStart(*level.ritzVector);
+        level.eigenvalue.startFresh();
       }
       smoother.set("chebyshev: max eigenvalue", smoother.get<double>("chebyshev: boost factor") *
-                                                    largestEigenvalueEstimate(*level.A, steps, *level.ritzVector));
+                                                    level.eigenvalue.estimate(*level.A, steps));
     }
     // Each build makes a new smoother, whose matrix never changes. Told so, Ifpack2 13.2 skips
     // its own power method, which it otherwise runs in every compute() even when given the
-    // max eigenvalue, and then ignores: a third of the setup time at 2D nx = 800.
+    // max eigenvalue, and then ignores: a third of the setup time at 2D nx = 800. Given the
+    // inverse diagonal, it does not extract the diagonal a second time.
     if (!smoother.isParameter("chebyshev: assume matrix does not change"))
       smoother.set("chebyshev: assume matrix does not change", true);
+    smoother.set("chebyshev: operator inv diagonal", level.eigenvalue.inverseDiagonal());
     level.smoother->setParameters(smoother);
     level.smoother->initialize();
     level.smoother->compute();
