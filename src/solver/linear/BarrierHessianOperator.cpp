@@ -41,9 +41,7 @@ void BarrierHessianOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos
 }
 
 bool BarrierHessianOperator::findPositionsInQPattern(const CrsMatrix& Q) const {
-  position_.clear();
-  constraint_.clear();
-  coefficient_.clear();
+  contributions_.clear();
   bool found = A_->getRowMap()->isSameAs(*A_->getRangeMap()) && Q.isFillComplete();
   if (found) {
     const auto q = Q.getLocalMatrixHost();
@@ -62,35 +60,85 @@ bool BarrierHessianOperator::findPositionsInQPattern(const CrsMatrix& Q) const {
           auto e = begin;
           while (e < end && q.graph.entries(e) != col) ++e;  // rows are short: a scan will do
           if (col == invalid || e == end) { found = false; break; }
-          position_.push_back(e);
-          constraint_.push_back(r);
-          coefficient_.push_back(a.values(i) * a.values(k));
+          contributions_.push_back({static_cast<std::size_t>(e), row, r, a.values(i) * a.values(k)});
         }
       }
     }
   }
+  std::stable_sort(contributions_.begin(), contributions_.end(),
+                   [](const Contribution& a, const Contribution& b) { return a.position < b.position; });
   return onEveryRank(*Q.getComm(), found);
 }
 
 RCP<CrsMatrix> BarrierHessianOperator::assemble() const { return assemble(*D_); }
 
+bool BarrierHessianOperator::assemblesOnQGraph() const {
+  if (Qmatrix_.is_null()) throw Error("BarrierHessianOperator::assemble needs Q assembled");
+  if (inQPattern_ < 0) inQPattern_ = findPositionsInQPattern(*Qmatrix_) ? 1 : 0;
+  return inQPattern_ == 1;
+}
+
 RCP<CrsMatrix> BarrierHessianOperator::assemble(const Vector& D) const {
   const RCP<const CrsMatrix>& Q = Qmatrix_;
-  if (Q.is_null()) throw Error("BarrierHessianOperator::assemble needs Q assembled");
-  if (inQPattern_ < 0) inQPattern_ = findPositionsInQPattern(*Q) ? 1 : 0;
-  if (inQPattern_ == 1) {
+  if (assemblesOnQGraph()) {
     using Values = typename CrsMatrix::local_matrix_device_type::values_type;
     const auto qValues = Q->getLocalMatrixHost().values;
     Values values(Kokkos::view_alloc(Kokkos::WithoutInitializing, "H values"), qValues.extent(0));
     Kokkos::deep_copy(values, qValues);
     const auto d = D.getData(0);
-    for (std::size_t e = 0; e < position_.size(); ++e)
-      values(position_[e]) += d[constraint_[e]] * coefficient_[e];
+    for (const Contribution& c : contributions_) values(c.position) += d[c.constraint] * c.coefficient;
     auto H = rcp(new CrsMatrix(Q->getCrsGraph(), values));
     H->fillComplete(Q->getDomainMap(), Q->getRangeMap());
     return H;
   }
   return assembleByProduct(*Q, D);
+}
+
+RCP<CrsMatrix> BarrierHessianOperator::updateAssembled(CrsMatrix& H, const Vector& D) const {
+  if (!assemblesOnQGraph() || H.getCrsGraph() != Qmatrix_->getCrsGraph())
+    throw Error("BarrierHessianOperator::updateAssembled needs H assembled on Q's graph");
+  // Each position recomputed as assemble(D) computes it, in the same order: the same values.
+  const auto q = Qmatrix_->getLocalMatrixHost().values;
+  const auto values = H.getLocalMatrixHost().values;
+  const auto d = D.getData(0);
+  struct Changed {
+    LocalOrdinal row;
+    std::size_t position;
+    double by;
+  };
+  std::vector<Changed> changed;
+  for (std::size_t e = 0; e < contributions_.size();) {
+    const std::size_t position = contributions_[e].position;
+    double value = q(position);
+    for (; e < contributions_.size() && contributions_[e].position == position; ++e)
+      value += d[contributions_[e].constraint] * contributions_[e].coefficient;
+    if (value != values(position)) {
+      changed.push_back({contributions_[e - 1].row, position, value - values(position)});
+      values(position) = value;
+    }
+  }
+  // The changes as a matrix: positions ascend, and with them the rows.
+  Teuchos::Array<std::size_t> counts(H.getNodeNumRows(), 0);
+  for (const Changed& c : changed) ++counts[c.row];
+  auto change = rcp(new CrsMatrix(H.getRowMap(), counts()));
+  const auto columns = H.getLocalMatrixHost().graph.entries;
+  const Map& rowMap = *H.getRowMap();
+  const Map& colMap = *H.getColMap();
+  std::vector<GlobalOrdinal> cols;
+  std::vector<double> vals;
+  for (std::size_t k = 0; k < changed.size();) {
+    const LocalOrdinal row = changed[k].row;
+    cols.clear();
+    vals.clear();
+    for (; k < changed.size() && changed[k].row == row; ++k) {
+      cols.push_back(colMap.getGlobalElement(columns(changed[k].position)));
+      vals.push_back(changed[k].by);
+    }
+    change->insertGlobalValues(rowMap.getGlobalElement(row), Teuchos::ArrayView<const GlobalOrdinal>(cols),
+                               Teuchos::ArrayView<const double>(vals));
+  }
+  change->fillComplete(H.getDomainMap(), H.getRangeMap());
+  return change;
 }
 
 struct BarrierHessianOperator::ProductPattern {

@@ -40,6 +40,13 @@ class BarrierHessianOperator : public Operator {
   // Q + A^T D A with other weights D than the operator's (on A's range map).
   RCP<CrsMatrix> assemble(const Vector& D) const;
 
+  // Whether assemble() gives matrices on Q's graph, as above. Collective at its first call.
+  bool assemblesOnQGraph() const;
+  // H, assembled by assemble() on Q's graph, becomes Q + A^T D A in place: the values of
+  // assemble(D), for the cost of the entries A^T D A touches. Returns the entries that
+  // changed, by how much, as a matrix on H's row map. Needs assemblesOnQGraph(). Collective.
+  RCP<CrsMatrix> updateAssembled(CrsMatrix& H, const Vector& D) const;
+
   // H P P^T, with P the restriction to the contact DOFs (those in A): Q's columns on the
   // contact DOFs plus A^T D A, with a copy of the current D. It applies H to vectors that
   // vanish off the contact DOFs, and its transpose P P^T H gives H's contact rows, for a
@@ -53,13 +60,17 @@ class BarrierHessianOperator : public Operator {
   RCP<Vector> D_;
   mutable RCP<MultiVector> AX_;  // scratch, resized to the number of columns of X
 
-  // Where A^T D A adds into Q's local values array: entry e adds D[constraint[e]] *
-  // coefficient[e] at position[e]. Found on the first assemble(); `inQPattern_` is -1 until
-  // then, and 0 if some entry is missing from Q's graph on some rank.
+  // Where A^T D A adds into Q's local values array: D[constraint] * coefficient at
+  // `position`, in local row `row`; sorted by position. Found on the first assemble();
+  // `inQPattern_` is -1 until then, and 0 if some entry is missing from Q's graph on some rank.
+  struct Contribution {
+    std::size_t position;
+    LocalOrdinal row;
+    int constraint;
+    double coefficient;
+  };
   mutable int inQPattern_ = -1;
-  mutable std::vector<std::size_t> position_;
-  mutable std::vector<int> constraint_;
-  mutable std::vector<double> coefficient_;
+  mutable std::vector<Contribution> contributions_;
   bool findPositionsInQPattern(const CrsMatrix& Q) const;
 
   struct ProductPattern;

@@ -206,13 +206,21 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
     }
     builtWeights_ = weights;
     ++amgBuilds_;
-    RCP<CrsMatrix> H;
+    // On Q's graph, H is updated in place and the hierarchy with what changed (A^T D A on the
+    // contact DOFs); a copy of Q's values and a search for the changes were most of the cost.
+    RCP<CrsMatrix> change;
     {
       Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: assemble H"));
-      H = H_->assemble(filtered);
+      if (amgReady_ && !assembledH_.is_null() && H_->assemblesOnQGraph())
+        change = H_->updateAssembled(*assembledH_, filtered);
+      else
+        assembledH_ = H_->assemble(filtered);
     }
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup"));
-    amg_->compute(H, reuseHierarchy_ && amgReady_);
+    if (change.is_null())
+      amg_->compute(assembledH_, reuseHierarchy_ && amgReady_);
+    else
+      amg_->update(assembledH_, *change, reuseHierarchy_);
     amgReady_ = true;
   }
 }

@@ -80,6 +80,7 @@ class NewtonSystemSolver {
   double rebuildTolerance_ = 0.0;
   double weightCap_ = 0.0;  // "amg of H: weight cap" with a contact correction, else 0 (none)
   RCP<Vector> constraintStiffness_, builtWeights_;  // q_i, and w_i of the last AMG build
+  RCP<CrsMatrix> assembledH_;                       // the matrix of the last AMG build
   int amgBuilds_ = 0;
   bool amgReady_ = false;
 };

@@ -366,6 +366,15 @@ void GeometricMultigridPreconditioner::compute(const RCP<CrsMatrix>& A, bool reu
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: Galerkin products"));
     change = changedEntries(*levels_[0]->A, *A);
   }
+  build(A, change, reuse);
+}
+
+void GeometricMultigridPreconditioner::update(const RCP<CrsMatrix>& A, const CrsMatrix& change, bool reuse) {
+  if (levels_[0]->A.is_null()) throw Error("GeometricMultigridPreconditioner::update called before compute()");
+  build(A, Teuchos::rcpFromRef(change), reuse);
+}
+
+void GeometricMultigridPreconditioner::build(const RCP<CrsMatrix>& A, RCP<const CrsMatrix> change, bool reuse) {
   levels_[0]->A = A;
   std::vector<RCP<CrsMatrix>> matrices{A}, prolongators, restrictions;
   std::vector<RCP<Chebyshev>> smoothers;

@@ -50,6 +50,8 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   ~GeometricMultigridPreconditioner() override;
 
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
+  // The coarse matrices are updated with the Galerkin products of `change` alone.
+  void update(const RCP<CrsMatrix>& A, const CrsMatrix& change, bool reuse = false) override;
   RCP<Operator> getOperator() const override;
 
   // Grids below the fine level (0: MueLu alone), and their global unknowns, finest first.
@@ -73,6 +75,10 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   bool directCoarsest_ = false;
   std::unique_ptr<MultilevelPreconditioner> coarse_;
   RCP<Operator> cycle_;
+  // Builds the levels for A; with `change`, A's entries that changed since the last build,
+  // by updating the coarse matrices with its Galerkin products. `reuse` goes to the coarsest
+  // level's compute().
+  void build(const RCP<CrsMatrix>& A, RCP<const CrsMatrix> change, bool reuse);
 };
 
 }  // namespace signorini

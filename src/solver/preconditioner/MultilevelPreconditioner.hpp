@@ -11,6 +11,13 @@ class MultilevelPreconditioner {
   // Builds the hierarchy for A. With `reuse`, a hierarchy built before for a matrix of the
   // same pattern may be refreshed instead of rebuilt.
   virtual void compute(const RCP<CrsMatrix>& A, bool reuse = false) = 0;
+  // A, the matrix of the last build, had `change` (the entries that changed, by how much, on
+  // A's row map) added to its values in place: the hierarchy is updated for it. By default
+  // this is compute(A, reuse).
+  virtual void update(const RCP<CrsMatrix>& A, const CrsMatrix& change, bool reuse = false) {
+    (void)change;
+    compute(A, reuse);
+  }
   // One cycle, an approximate inverse of the last A computed.
   virtual RCP<Operator> getOperator() const = 0;
 };

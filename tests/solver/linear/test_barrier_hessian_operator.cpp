@@ -4,8 +4,10 @@
 
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <TpetraExt_MatrixMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "signorini/core/Error.hpp"
 #include "solver/linear/BarrierHessianOperator.hpp"
 #include "support/TestProblems.hpp"
 
@@ -71,6 +73,47 @@ TEST(BarrierHessianOperator, AssemblySharesQsGraphAndFollowsNewWeights) {
               Teuchos::rcp_dynamic_cast<const CrsMatrix>(p.qp.Q, true)->getCrsGraph().get());
     EXPECT_LT(relativeMismatch(H, *assembled), 1e-13) << "round " << round;
   }
+}
+
+// Between Newton steps the preconditioner's H is updated in place: the same values as a
+// fresh assembly, and the change it reports is the difference, on the contact rows alone.
+TEST(BarrierHessianOperator, UpdateInPlaceEqualsAFreshAssembly) {
+  AssembledProblem p = buildProblem(shippedProblem("paper/H"), Tpetra::getDefaultComm());
+  BarrierHessianOperator H(p.qp.Q, p.qp.A);
+  ASSERT_TRUE(H.assemblesOnQGraph());
+  Vector D0(p.qp.A->getRangeMap()), D1(p.qp.A->getRangeMap());
+  D0.randomize(1.0, 1e6);
+  D1.randomize(1.0, 1e6);
+  {  // one constraint keeps its weight
+    auto d0 = D0.getDataNonConst();
+    auto d1 = D1.getDataNonConst();
+    if (d0.size() > 0) d1[0] = d0[0];
+  }
+  const RCP<CrsMatrix> updated = H.assemble(D0);
+  const RCP<CrsMatrix> before = H.assemble(D0);
+  const RCP<CrsMatrix> change = H.updateAssembled(*updated, D1);
+  const RCP<CrsMatrix> fresh = H.assemble(D1);
+
+  const auto u = updated->getLocalMatrixHost().values, f = fresh->getLocalMatrixHost().values;
+  ASSERT_EQ(u.extent(0), f.extent(0));
+  std::size_t differing = 0;
+  for (std::size_t e = 0; e < u.extent(0); ++e) differing += u(e) != f(e);
+  EXPECT_EQ(differing, 0u);
+
+  // before + change acts as the updated matrix.
+  MultiVector x(updated->getDomainMap(), 1), y(updated->getRangeMap(), 1), z(updated->getRangeMap(), 1);
+  x.randomize();
+  before->apply(x, y);
+  change->apply(x, y, Teuchos::NO_TRANS, 1.0, 1.0);
+  updated->apply(x, z);
+  z.update(-1.0, y, 1.0);
+  EXPECT_LT(z.getVector(0)->normInf(), 1e-12 * y.getVector(0)->normInf());
+  // Only the contact DOFs' entries: at most the 3 x 3 block of each constraint's node.
+  EXPECT_GT(change->getGlobalNumEntries(), 0u);
+  EXPECT_LE(change->getGlobalNumEntries(), 9 * p.qp.A->getGlobalNumRows());
+
+  // A matrix on another graph than Q's cannot be updated.
+  EXPECT_THROW(H.updateAssembled(*Tpetra::MatrixMatrix::add(1.0, false, *before, 0.0, false, *before), D1), Error);
 }
 
 // A constraint that couples DOFs far apart (as a mortar or multi-point constraint would)

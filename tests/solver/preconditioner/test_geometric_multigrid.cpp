@@ -54,6 +54,10 @@ struct ContactBox {
   // Step k: weights 10^(2k - 6 + (g % 5) / 2) times Q's largest diagonal entry on the
   // constraints g (their ids) with g % 3 != 0, and on all from step 6 on; 10^-2k before that.
   RCP<CrsMatrix> hessian(int step) {
+    H.setWeights(weights(step));
+    return H.assemble();
+  }
+  Vector weights(int step) {
     Vector diagonal(problem.qp.Q->getRangeMap()), D(problem.qp.A->getRangeMap());
     problem.qp.Qmatrix()->getLocalDiagCopy(diagonal);
     const double scale = diagonal.normInf();
@@ -63,8 +67,7 @@ struct ContactBox {
       const bool active = g % 3 != 0 || step >= 6;
       d[i] = scale * std::pow(10.0, active ? 2.0 * step - 6 + 0.5 * static_cast<double>(g % 5) : -2.0 * step);
     }
-    H.setWeights(D);
-    return H.assemble();
+    return D;
   }
   AssembledProblem problem;
   BarrierHessianOperator H;
@@ -199,6 +202,30 @@ TEST(GeometricMultigrid, SmallCoarsestGridIsSolvedExactly) {
   EXPECT_LT(MQx.norm2(), 1e-10 * x.norm2());
 }
 
+// The level matrices of `a` and `b` act alike, and so do their cycles.
+void expectTheSameLevels(const GeometricMultigridPreconditioner& a, const GeometricMultigridPreconditioner& b,
+                         const std::string& label) {
+  ASSERT_EQ(a.geometricLevels(), b.geometricLevels()) << label;
+  for (int l = 1; l <= a.geometricLevels(); ++l) {
+    const CrsMatrix &A = *a.levelMatrix(l), &B = *b.levelMatrix(l);
+    ASSERT_EQ(A.getGlobalNumEntries(), B.getGlobalNumEntries()) << label << " level " << l;
+    Vector x(A.getDomainMap()), ax(A.getRangeMap()), bx(A.getRangeMap());
+    x.randomize();
+    A.apply(x, ax);
+    B.apply(x, bx);
+    ax.update(-1.0, bx, 1.0);
+    EXPECT_LT(ax.norm2(), 1e-12 * bx.norm2()) << label << " level " << l;
+    EXPECT_GT(bx.norm2(), 0.0);
+  }
+  // The same smoothers and coarse solve.
+  Vector x(a.levelMatrix(0)->getDomainMap()), Ax(x.getMap()), Bx(x.getMap());
+  x.randomize();
+  a.getOperator()->apply(x, Ax);
+  b.getOperator()->apply(x, Bx);
+  Ax.update(-1.0, Bx, 1.0);
+  EXPECT_LT(Ax.norm2(), 1e-9 * Bx.norm2()) << label;
+}
+
 // Between Newton steps only A^T D A changes; the coarse matrices are then updated in place
 // with the Galerkin products of the change, and must equal the products of the new matrix.
 TEST(GeometricMultigrid, UpdatedCoarseMatricesEqualFreshProducts) {
@@ -215,24 +242,19 @@ TEST(GeometricMultigrid, UpdatedCoarseMatricesEqualFreshProducts) {
     EXPECT_EQ(updated.levelMatrix(1).get(), firstCoarse.get()) << dim << "D: not updated in place";
     GeometricMultigridPreconditioner fresh = multigrid(qp, 50);
     fresh.compute(H2);
-    for (int l = 1; l <= updated.geometricLevels(); ++l) {
-      const CrsMatrix &a = *updated.levelMatrix(l), &b = *fresh.levelMatrix(l);
-      ASSERT_EQ(a.getGlobalNumEntries(), b.getGlobalNumEntries()) << dim << "D level " << l;
-      Vector x(a.getDomainMap()), ax(a.getRangeMap()), bx(a.getRangeMap());
-      x.randomize();
-      a.apply(x, ax);
-      b.apply(x, bx);
-      ax.update(-1.0, bx, 1.0);
-      EXPECT_LT(ax.norm2(), 1e-12 * bx.norm2()) << dim << "D level " << l;
-      EXPECT_GT(bx.norm2(), 0.0);
-    }
-    // And the cycles agree: same smoothers, same coarse solve.
-    Vector x(qp.Q->getDomainMap()), Mx(x.getMap()), Fx(x.getMap());
-    x.randomize();
-    updated.getOperator()->apply(x, Mx);
-    fresh.getOperator()->apply(x, Fx);
-    Mx.update(-1.0, Fx, 1.0);
-    EXPECT_LT(Mx.norm2(), 1e-9 * Fx.norm2()) << dim << "D";
+    expectTheSameLevels(updated, fresh, std::to_string(dim) + "D");
+
+    // The same through update(): H changed in place, with the change that
+    // BarrierHessianOperator reports, instead of a new matrix compared with the last one.
+    GeometricMultigridPreconditioner inPlace = multigrid(qp, 50, 0);
+    const RCP<CrsMatrix> H = box.hessian(0);
+    inPlace.compute(H);
+    const RCP<const CrsMatrix> inPlaceCoarse = inPlace.levelMatrix(1);
+    const RCP<CrsMatrix> change = box.H.updateAssembled(*H, box.weights(2));
+    inPlace.update(H, *change);
+    EXPECT_EQ(inPlace.levelMatrix(0).get(), H.get());
+    EXPECT_EQ(inPlace.levelMatrix(1).get(), inPlaceCoarse.get()) << dim << "D: not updated in place";
+    expectTheSameLevels(inPlace, fresh, std::to_string(dim) + "D, update()");
 
     // A fine matrix on another graph is not an update: the levels are computed afresh.
     updated.compute(Tpetra::MatrixMatrix::add(1.0, false, *H2, 0.0, false, *qp.Qmatrix()));
