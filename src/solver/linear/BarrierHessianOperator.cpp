@@ -40,6 +40,18 @@ void BarrierHessianOperator::apply(const MultiVector& X, MultiVector& Y, Teuchos
   A_->apply(*AX_, Y, Teuchos::TRANS, alpha, 1.0);
 }
 
+void BarrierHessianOperator::applyQ(const MultiVector& X, MultiVector& Y) const { Q_->apply(X, Y); }
+
+void BarrierHessianOperator::applyGivenQX(const MultiVector& X, const MultiVector& QX, MultiVector& Y) const {
+  const std::size_t numVectors = X.getNumVectors();
+  if (AX_.is_null() || AX_->getNumVectors() != numVectors)
+    AX_ = rcp(new MultiVector(A_->getRangeMap(), numVectors));
+  A_->apply(X, *AX_);
+  AX_->elementWiseMultiply(1.0, *D_, *AX_, 0.0);
+  Y.assign(QX);
+  A_->apply(*AX_, Y, Teuchos::TRANS, 1.0, 1.0);
+}
+
 bool BarrierHessianOperator::findPositionsInQPattern(const CrsMatrix& Q) const {
   contributions_.clear();
   bool found = A_->getRowMap()->isSameAs(*A_->getRangeMap()) && Q.isFillComplete();

@@ -30,6 +30,11 @@ class BarrierHessianOperator : public Operator {
   RCP<const Map> getRangeMap() const override { return Q_->getRangeMap(); }
   bool hasTransposeApply() const override { return true; }
 
+  // Y = Q X: what stays valid of H X when D changes.
+  void applyQ(const MultiVector& X, MultiVector& Y) const;
+  // Y = H X given QX = Q X, for the price of A^T D A X; the same values as apply(X, Y).
+  void applyGivenQX(const MultiVector& X, const MultiVector& QX, MultiVector& Y) const;
+
   // Q + A^T D A as an assembled matrix (needs Q assembled): for preconditioners
   // and tests, never for applying H. When every entry of A^T D A falls on an entry of Q's
   // graph in a row this rank owns (nodal constraints couple the DOFs of one node), the

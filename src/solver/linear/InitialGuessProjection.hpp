@@ -9,11 +9,15 @@
 // In the interior point methods the Newton systems' right-hand sides keep a large part
 // (A^T y of the contact forces) while the solutions shrink with the step; starting CG from
 // zero then costs iterations just to rebuild that part, which consecutive solutions share.
+// With H = Q + A^T D A, each kept solution u carries Q u, so that H u costs A^T D A u alone
+// when D has changed.
 #include <vector>
 
 #include "signorini/core/TpetraTypes.hpp"
 
 namespace signorini {
+
+class BarrierHessianOperator;
 
 class InitialGuessProjection {
  public:
@@ -22,17 +26,22 @@ class InitialGuessProjection {
 
   // x = the H-orthogonal projection of H^-1 r on span{kept solutions, x if `withX`}; basis
   // vectors that are (numerically) in the span of the ones before them are skipped, the
-  // most recent first. Returns how many basis vectors were used.
-  int project(const Operator& H, const Vector& r, Vector& x, bool withX) const;
+  // most recent first. Hx, if given, receives H x, a combination of the products the
+  // projection computes anyway. Returns how many basis vectors were used. Collective.
+  int project(const BarrierHessianOperator& H, const Vector& r, Vector& x, bool withX, Vector* Hx = nullptr) const;
 
-  // Keeps a copy of x as the most recent solution, dropping the oldest beyond the capacity.
-  void remember(const Vector& x);
+  // Keeps a copy of x and Q x (one application of Q) as the most recent solution, dropping
+  // the oldest beyond the capacity.
+  void remember(const BarrierHessianOperator& H, const Vector& x);
 
   int capacity() const { return capacity_; }
 
  private:
+  struct Kept {
+    RCP<const Vector> u, Qu;
+  };
   int capacity_;
-  std::vector<RCP<Vector>> solutions_;  // oldest first
+  std::vector<Kept> kept_;  // oldest first
 };
 
 }  // namespace signorini

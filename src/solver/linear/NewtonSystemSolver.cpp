@@ -43,13 +43,13 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
              range(1, 1000000));
   krylov.set("initial guess: previous solutions", 2,
              "Expert: Start each Newton system from the H-orthogonal projection of its solution on this many earlier "
-             "solutions (and the predictor's step, for the corrector), one application of H per vector; 0: "
-             "start from zero",
+             "solutions (and the predictor's step, for the corrector); a kept solution carries its product with "
+             "Q, so the projection costs one application of Q per system; 0: start from zero",
              range(0, 20));
   krylov.set("initial guess: contact correction", true,
              "Expert: Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x): one "
-             "application of H and one subspace solve per Newton system; needs Preconditioner/contact "
-             "correction");
+             "subspace solve per Newton system (and one application of H without the projection); needs "
+             "Preconditioner/contact correction");
   Teuchos::ParameterList& prec = p.sublist("Preconditioner", false, "Preconditioner of H");
   prec.set("type", "amg of H",
            "\"none\", \"amg of Q\" (MueLu on Q, built once) or \"amg of H\" (MueLu on the "
@@ -230,15 +230,19 @@ KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absolu
   const double rnorm = r.norm2();
   if (!fromGuess || rnorm == 0.0) x.putScalar(0.0);
   if (rnorm == 0.0) return KrylovResult{0, true, 0.0};
-  if (initialGuess_.capacity() > 0) {
+  {
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: initial guesses"));
-    initialGuess_.project(*H_, r, x, fromGuess);
-  }
-  if (contactCorrectedStart_ && !subspace_.is_null()) {
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: initial guesses"));
-    Vector residual(r, Teuchos::Copy);
-    H_->apply(x, residual, Teuchos::NO_TRANS, -1.0, 1.0);
-    subspace_->apply(residual, x, Teuchos::NO_TRANS, 1.0, 1.0);
+    // The contact correction needs H x, which the projection gives as a by-product.
+    const bool correct = contactCorrectedStart_ && !subspace_.is_null();
+    const RCP<Vector> Hx = correct ? rcp(new Vector(r.getMap(), false)) : Teuchos::null;
+    if (initialGuess_.capacity() > 0)
+      initialGuess_.project(*H_, r, x, fromGuess, Hx.get());
+    else if (correct)
+      H_->apply(x, *Hx);
+    if (correct) {
+      Hx->update(1.0, r, -1.0);  // the residual r - H x
+      subspace_->apply(*Hx, x, Teuchos::NO_TRANS, 1.0, 1.0);
+    }
   }
   RCP<const Operator> M = amg_ ? amg_->getOperator() : Teuchos::null;
   if (!subspace_.is_null()) M = rcp(new SubspaceCorrectedPreconditioner(H_, M, subspace_, correction_, contactColumns_));
@@ -251,7 +255,10 @@ KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absolu
     result = krylov_.solve(H_, M, rhs, sol, std::min(0.5, absoluteTolerance / rnorm), maxIterations_, startReduction,
                            absoluteFloor / rnorm);
   }
-  initialGuess_.remember(x);
+  {
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: initial guesses"));
+    initialGuess_.remember(*H_, x);
+  }
   return result;
 }
 

@@ -23,7 +23,7 @@ using namespace signorini::testing;
 
 struct Fixture {
   ContactQP qp = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp;
-  const Operator& H = *qp.Q;  // symmetric positive definite: the projection's H
+  BarrierHessianOperator H{qp.Q, qp.A};  // Q until weights are set: symmetric positive definite
   RCP<Vector> random() const {
     auto v = rcp(new Vector(qp.Q->getDomainMap()));
     v->randomize();
@@ -44,9 +44,9 @@ TEST(InitialGuessProjection, ExactWhenTheSolutionIsInTheSpanOfTheKeptSolutions) 
   shifted.update(1.0, *a, 1.0);  // solution + a: with a, it spans the solution
 
   InitialGuessProjection projection(2);
-  projection.remember(*b);  // dropped: the capacity is 2
-  projection.remember(*a);
-  projection.remember(shifted);
+  projection.remember(f.H, *b);  // dropped: the capacity is 2
+  projection.remember(f.H, *a);
+  projection.remember(f.H, shifted);
   EXPECT_EQ(projection.project(f.H, r, x, false), 2);
   x.update(-1.0, *solution, 1.0);
   EXPECT_LT(f.energyNorm(x), 1e-10 * f.energyNorm(*solution));
@@ -61,7 +61,7 @@ TEST(InitialGuessProjection, GivesTheGalerkinSolutionOnTheSpan) {
   std::vector<RCP<Vector>> kept;
   for (int i = 0; i < 3; ++i) {
     kept.push_back(f.random());
-    projection.remember(*kept.back());
+    projection.remember(f.H, *kept.back());
   }
   ASSERT_EQ(projection.project(f.H, r, x, false), 3);
   // Galerkin: the residual is orthogonal to every kept solution (the error H-orthogonal).
@@ -95,10 +95,48 @@ TEST(InitialGuessProjection, SkipsDependentVectorsAndUsesTheGivenStart) {
   EXPECT_EQ(projection.project(f.H, r, x, true), 1);  // the given start alone: scaled to a
   x.update(-1.0, *a, 1.0);
   EXPECT_LT(x.norm2(), 1e-12 * a->norm2());
-  projection.remember(*a);
-  projection.remember(twice);
+  projection.remember(f.H, *a);
+  projection.remember(f.H, twice);
   EXPECT_EQ(projection.project(f.H, r, x, false), 1);
   EXPECT_THROW(InitialGuessProjection(-1), InputError);
+}
+
+// H changes between the systems (D): the kept Q u give the same projection as H applied
+// anew, x = U (U^T H U)^-1 U^T r, and H x with it; a start equal to the last kept solution
+// adds nothing.
+TEST(InitialGuessProjection, KeptProductsFollowNewWeights) {
+  Fixture f;
+  Vector D(f.qp.A->getRangeMap()), r(f.H.getRangeMap()), x(f.H.getDomainMap()), Hx(f.H.getRangeMap());
+  D.randomize(1.0, 1e6);
+  f.H.setWeights(D);
+  auto u = f.random(), v = f.random();
+  r.randomize();
+  InitialGuessProjection projection(2);
+  projection.remember(f.H, *u);
+  projection.remember(f.H, *v);
+  D.randomize(1.0, 1e8);
+  f.H.setWeights(D);
+  ASSERT_EQ(projection.project(f.H, r, x, false, &Hx), 2);
+
+  // The 2 x 2 Galerkin system with H applied now.
+  Vector Hu(f.H.getRangeMap()), Hv(f.H.getRangeMap());
+  f.H.apply(*u, Hu);
+  f.H.apply(*v, Hv);
+  const double a = u->dot(Hu), b = u->dot(Hv), c = v->dot(Hv), ru = u->dot(r), rv = v->dot(r);
+  const double det = a * c - b * b;
+  Vector expected(*u, Teuchos::Copy);
+  expected.update((a * rv - b * ru) / det, *v, (c * ru - b * rv) / det);
+  expected.update(-1.0, x, 1.0);
+  EXPECT_LT(expected.norm2(), 1e-8 * x.norm2());
+  Vector applied(f.H.getRangeMap());
+  f.H.apply(x, applied);
+  applied.update(-1.0, Hx, 1.0);
+  EXPECT_LT(applied.norm2(), 1e-10 * Hx.norm2());
+
+  Vector start(*v, Teuchos::Copy);
+  EXPECT_EQ(projection.project(f.H, r, start, true), 2);
+  start.update(-1.0, x, 1.0);
+  EXPECT_LT(start.norm2(), 1e-12 * x.norm2());
 }
 
 // A Newton system solved again needs no Krylov iteration with the projection, and some
