@@ -144,6 +144,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   if (qp.Qmatrix().is_null())
     throw InputError("Preconditioner/type \"" + prec.get<std::string>("type") + "\" needs Q as an assembled CrsMatrix; "
                      "use \"none\" for a matrix-free Q");
+  Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: preconditioner construction"));
   const Teuchos::ParameterList& muelu = prec.sublist("MueLu");
   const Hierarchy hierarchy = choice<Hierarchy>(prec, "hierarchy");
   const bool haveGrid = qp.grid && !qp.coordinates.is_null();
