@@ -27,13 +27,13 @@ using Dense = std::vector<double>;
 Dense innerProducts(const MultiVector& U, const MultiVector& V) {
   const int k = static_cast<int>(U.getNumVectors()), l = static_cast<int>(V.getNumVectors());
   Dense local(k * l, 0.0), global(k * l, 0.0);
-  for (int a = 0; a < k; ++a) {
-    auto u = U.getData(a);
-    for (int b = 0; b < l; ++b) {
-      auto v = V.getData(b);
-      for (std::size_t i = 0; i < U.getLocalLength(); ++i) local[a + k * b] += u[i] * v[i];
-    }
-  }
+  // One pass over the rows for all k l products: the columns are long, k and l at most 6.
+  std::vector<Teuchos::ArrayRCP<const double>> u(k), v(l);
+  for (int a = 0; a < k; ++a) u[a] = U.getData(a);
+  for (int b = 0; b < l; ++b) v[b] = V.getData(b);
+  for (std::size_t i = 0; i < U.getLocalLength(); ++i)
+    for (int b = 0; b < l; ++b)
+      for (int a = 0; a < k; ++a) local[a + k * b] += u[a][i] * v[b][i];
   Teuchos::reduceAll(*U.getMap()->getComm(), Teuchos::REDUCE_SUM, k * l, local.data(), global.data());
   return global;
 }
