@@ -4,7 +4,7 @@
 // successive right-hand sides", 1998): x0 is the H-orthogonal projection of H^-1 r on the
 // span of the last few solutions, the best guess in H's energy norm from that span. H may
 // change between systems, as the interior point methods' H = Q + A^T D A does with D: the
-// basis is H-orthonormalised anew for every system, at one application of H per vector.
+// basis is H-orthonormalised anew for every system.
 //
 // In the interior point methods the Newton systems' right-hand sides keep a large part
 // (A^T y of the contact forces) while the solutions shrink with the step; starting CG from

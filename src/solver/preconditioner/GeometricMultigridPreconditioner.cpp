@@ -414,7 +414,9 @@ void GeometricMultigridPreconditioner::build(const RCP<CrsMatrix>& A, RCP<const 
     // Each build makes a new smoother, whose matrix never changes. Told so, Ifpack2 13.2 skips
     // its own power method, which it otherwise runs in every compute() even when given the
     // max eigenvalue, and then ignores: a third of the setup time at 2D nx = 800. Given the
-    // inverse diagonal, it does not extract the diagonal a second time.
+    // inverse diagonal, it does not extract the diagonal a second time; it reads that vector
+    // by reference, which the level's next setMatrix() overwrites, so this smoother is valid
+    // until the next build (as the cycle holding it is).
     if (!smoother.isParameter("chebyshev: assume matrix does not change"))
       smoother.set("chebyshev: assume matrix does not change", true);
     smoother.set("chebyshev: operator inv diagonal", level.eigenvalue.inverseDiagonal());

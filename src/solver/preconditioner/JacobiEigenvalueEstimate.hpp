@@ -36,7 +36,7 @@ class JacobiEigenvalueEstimate {
   void startFromLast(const CrsMatrix& change);
 
   // D^-1 of the matrix last set, on its row map (what Ifpack2's Chebyshev takes as
-  // "chebyshev: operator inv diagonal").
+  // "chebyshev: operator inv diagonal"); the next setMatrix() overwrites it in place.
   RCP<const Vector> inverseDiagonal() const { return inverseDiagonal_; }
 
  private:
