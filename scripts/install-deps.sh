@@ -9,6 +9,8 @@ packages=(
   libptscotch-dev libscotch-dev  # named by Debian's Trilinos CMake config
   libopenmpi-dev openmpi-bin
   libmetis-dev
+  libsuitesparse-dev          # CHOLMOD: the coarsest multigrid level's Cholesky factorization
+  libopenblas0-serial         # optimised BLAS for CHOLMOD (serial: MPI runs one rank per core)
   libgmsh-dev gmsh            # Gmsh SDK (mesh reading) and CLI (test meshes)
   libmuparser-dev             # user expressions for loads, gaps, displacements
   libgtest-dev                # unit tests

@@ -9,6 +9,7 @@
 
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/LocalBlock.hpp"
+#include "solver/preconditioner/SparseCholesky.hpp"
 
 namespace signorini {
 
@@ -20,7 +21,25 @@ struct GatheredDirectSolver::Factorization {
   RCP<const Import> toRoot;
   RCP<const Map> localRows;  // rank 0 only: the same rows on the one-rank communicator
   RCP<CrsMatrix> rootA;
-  RCP<DirectSolver> solver;
+  // Rank 0 only: the Cholesky factor, or KLU2's LU where A is not positive definite.
+  std::shared_ptr<SparseCholesky> cholesky;
+  RCP<DirectSolver> lu;
+
+  void factor() {
+    lu = Teuchos::null;
+    // A new factor, so that operators handed out for the last matrix stay valid.
+    cholesky = cholesky ? std::make_shared<SparseCholesky>(*cholesky) : std::make_shared<SparseCholesky>();
+    if (cholesky->factor(*rootA)) return;
+    cholesky.reset();
+    lu = Amesos2::create<CrsMatrix, MultiVector>("KLU2", rootA);
+    lu->symbolicFactorization().numericFactorization();
+  }
+  void solve(const MultiVector& B, MultiVector& X) const {
+    if (cholesky)
+      cholesky->solve(B, X);
+    else
+      lu->solve(Teuchos::ptrFromRef(X), Teuchos::ptrFromRef(B));
+  }
 };
 
 class GatheredDirectSolver::RootSolve : public Operator {
@@ -39,9 +58,9 @@ class GatheredDirectSolver::RootSolve : public Operator {
       }
     }
     rootB_->doImport(X, *f_->toRoot, Tpetra::INSERT);
-    if (!f_->solver.is_null()) {
+    if (!f_->rootA.is_null() && f_->localRows->getNodeNumElements() > 0) {
       copyLocalRows(*rootB_, *localB_);
-      f_->solver->solve(localX_.ptr(), localB_.ptr());
+      f_->solve(*localB_, *localX_);
       copyLocalRows(*localX_, *rootX_);
     }
     solution_->doExport(*rootX_, *f_->toRoot, Tpetra::INSERT);
@@ -74,11 +93,7 @@ void GatheredDirectSolver::compute(const RCP<CrsMatrix>& A, bool) {
   const RCP<const Map> rootRows = f->rootRows;
   const auto rowIndex = [&rootRows](GlobalOrdinal gid) { return rootRows->getLocalElement(gid); };
   f->rootA = importedBlock(*A, f->rootRows, *f->toRoot, rowIndex, f->localRows, f->localRows);
-  f->solver = Teuchos::null;
-  if (!f->localRows.is_null() && f->localRows->getNodeNumElements() > 0) {
-    f->solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", f->rootA);
-    f->solver->symbolicFactorization().numericFactorization();
-  }
+  if (!f->localRows.is_null() && f->localRows->getNodeNumElements() > 0) f->factor();
   factorization_ = f;
   op_ = rcp(new RootSolve(f));
 }

@@ -1,5 +1,5 @@
 // The exact solve of a small distributed matrix on rank 0: A^-1 on every rank count, the
-// alpha/beta contract, and a second matrix on the same maps.
+// alpha/beta contract, a second matrix on the same maps, and LU for an indefinite matrix.
 #include <gtest/gtest.h>
 
 #include <Tpetra_Core.hpp>
@@ -46,6 +46,18 @@ TEST(GatheredDirectSolver, AppliesTheInverseOnEveryRankCount) {
     expectInverse(*doubled, *solver.getOperator(), 1e-10);
     expectInverse(*Q, *first, 1e-10);
   }
+}
+
+// A matrix that is not positive definite is factored by LU instead of Cholesky.
+TEST(GatheredDirectSolver, FactorsAnIndefiniteMatrixByLU) {
+  const AssembledProblem problem = buildProblem(contactBoxProblem(2, 8), Tpetra::getDefaultComm());
+  const auto Q = Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix());
+  const RCP<CrsMatrix> negated = Tpetra::MatrixMatrix::add(-1.0, false, *Q, 0.0, false, *Q);
+  GatheredDirectSolver solver;
+  solver.compute(negated);
+  expectInverse(*negated, *solver.getOperator(), 1e-10);
+  solver.compute(Q);  // and back to Cholesky
+  expectInverse(*Q, *solver.getOperator(), 1e-10);
 }
 
 TEST(GatheredDirectSolver, NeedsAComputedMatrix) { EXPECT_THROW(GatheredDirectSolver().getOperator(), Error); }
