@@ -98,7 +98,7 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            range(1, std::numeric_limits<int>::max()));
   prec.set("geometric: direct solve size", 2500,
            "Expert: The geometric levels end at the first coarse grid with at most this many unknowns, which is solved "
-           "exactly (gathered to rank 0 and factored by KLU2); MueLu's algebraic multigrid takes over below a "
+           "exactly (gathered to rank 0 and factored by CHOLMOD's Cholesky); MueLu's algebraic multigrid takes over below a "
            "larger coarsest grid. 0: always MueLu",
            range(0, std::numeric_limits<int>::max()));
   prec.set("geometric: eigenvalue update steps", 5,

@@ -1,8 +1,9 @@
 #pragma once
 // An exact solve with a small distributed matrix, for the coarsest level of a multigrid
-// hierarchy: the matrix is gathered to rank 0 and factored there by Amesos2's KLU2 on a
-// one-rank communicator (Debian's Amesos2 solvers are wrong on more than one rank); each
-// application gathers the right-hand side to rank 0 and scatters the solution back.
+// hierarchy: the matrix is gathered to rank 0 and factored there, by CHOLMOD's Cholesky
+// (SparseCholesky) or, if it is not positive definite, by Amesos2's KLU2 on a one-rank
+// communicator (Debian's Amesos2 solvers are wrong on more than one rank); each application
+// gathers the right-hand side to rank 0 and scatters the solution back.
 // Why: an algebraic hierarchy rebuilt at every Newton step for a matrix of a few hundred
 // unknowns costs more than the factorization, and solves only approximately.
 #include <memory>
@@ -18,8 +19,8 @@ class GatheredDirectSolver : public MultilevelPreconditioner {
   ~GatheredDirectSolver() override;
 
   // Gathers and factors A (nonsingular; its row, range and domain maps the same set of rows).
-  // `reuse` is ignored: a factorization of a few thousand unknowns is cheaper than MueLu's
-  // reuse machinery. Collective.
+  // `reuse` is ignored: the Cholesky factorization keeps its ordering and analysis while the
+  // pattern stays. Operators handed out before stay valid. Collective.
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
   // Y = alpha A^-1 X + beta Y for the last A computed.
   RCP<Operator> getOperator() const override;
