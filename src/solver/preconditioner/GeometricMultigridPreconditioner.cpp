@@ -160,6 +160,32 @@ RCP<CrsMatrix> changedEntries(const CrsMatrix& previous, const CrsMatrix& next) 
   return change;
 }
 
+// P^T C P for a change C with few nonzero rows, from the rows of P that C touches: Tpetra's
+// triple product transposes and traverses the whole of P, which made the Galerkin update of
+// a few contact rows cost nearly as much as a full product. Collective.
+RCP<CrsMatrix> galerkinProductOfChange(const RCP<const CrsMatrix>& P, const RCP<const CrsMatrix>& change) {
+  // The DOFs the change touches (its nonzero rows and their columns), each given one owner.
+  std::vector<GlobalOrdinal> touched;
+  const auto local = change->getLocalMatrixHost();
+  for (LocalOrdinal row = 0; row < static_cast<LocalOrdinal>(local.numRows()); ++row) {
+    const auto begin = local.graph.row_map(row), end = local.graph.row_map(row + 1);
+    if (begin == end) continue;
+    touched.push_back(change->getRowMap()->getGlobalElement(row));
+    for (auto e = begin; e < end; ++e) touched.push_back(change->getColMap()->getGlobalElement(local.graph.entries(e)));
+  }
+  std::sort(touched.begin(), touched.end());
+  touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+  const RCP<const Map> overlapping = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                                                 Teuchos::ArrayView<const GlobalOrdinal>(touched), 0, change->getComm()));
+  const RCP<const Map> D = Tpetra::createOneToOne(overlapping);
+  const Import toD(P->getRowMap(), D);
+  const auto Pd = Tpetra::importAndFillCompleteCrsMatrix<CrsMatrix>(P, toD, P->getDomainMap(), D);
+  const auto Cd = Tpetra::importAndFillCompleteCrsMatrix<CrsMatrix>(change, toD, D, D);
+  auto coarse = rcp(new CrsMatrix(P->getDomainMap(), 0));
+  Tpetra::TripleMatrixMultiply::MultiplyRAP(*Pd, true, *Cd, false, *Pd, false, *coarse);
+  return coarse;
+}
+
 // A += change, where change's entries lie in A's pattern; false, on every rank, when some do
 // not (A is then partly updated: the caller rebuilds it). Collective.
 bool addInPattern(CrsMatrix& A, const CrsMatrix& change) {
@@ -384,9 +410,9 @@ void GeometricMultigridPreconditioner::build(const RCP<CrsMatrix>& A, RCP<const 
     const RCP<const CrsMatrix> levelChange = change;
     {
       Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: Galerkin products"));
+      if (!change.is_null() && !change->getRowMap()->isSameAs(*level.P->getRowMap())) change = Teuchos::null;
       if (!change.is_null()) {
-        auto coarseChange = rcp(new CrsMatrix(level.P->getDomainMap(), 0));
-        Tpetra::TripleMatrixMultiply::MultiplyRAP(*level.P, true, *change, false, *level.P, false, *coarseChange);
+        const RCP<CrsMatrix> coarseChange = galerkinProductOfChange(level.P, change);
         change = addInPattern(*levels_[l + 1]->A, *coarseChange) ? coarseChange : Teuchos::null;
         if (!change.is_null()) coarseA = levels_[l + 1]->A;
       }
