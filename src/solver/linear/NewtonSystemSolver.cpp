@@ -101,7 +101,7 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            "exactly (gathered to rank 0 and factored by CHOLMOD's Cholesky); MueLu's algebraic multigrid takes over below a "
            "larger coarsest grid. 0: always MueLu",
            range(0, std::numeric_limits<int>::max()));
-  prec.set("geometric: eigenvalue update steps", 5,
+  prec.set("geometric: eigenvalue update steps", 3,
            "Expert: Lanczos steps that update a smoother's largest-eigenvalue estimate when only the contact rows "
            "changed, from the previous Ritz vector; 0: a fresh estimate at every rebuild (1 and 2 steps are too "
            "inaccurate)",

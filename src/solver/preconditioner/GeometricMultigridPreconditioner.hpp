@@ -41,7 +41,7 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // `eigenvalueUpdateSteps`: Lanczos steps of the smoothers' eigenvalue estimates after a
   // Galerkin update, started from the previous estimate's Ritz vector and the changed rows
   // (0: a fresh estimate of "chebyshev: eigenvalue max iterations" steps at every build; the
-  // default, 5, is Preconditioner/geometric: eigenvalue update steps in NewtonSystemSolver).
+  // default, 3, is Preconditioner/geometric: eigenvalue update steps in NewtonSystemSolver).
   // Throws InputError when the nodes do not contain the coarse grid's vertices.
   GeometricMultigridPreconditioner(const GeometricGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates,
                                    int blockSize, long long coarsestSize, long long directSolveSize,

@@ -40,7 +40,7 @@ AssembledProblem box(int dim, int cells, int degree, bool clamped = true) {
 // `directSolveSize` 0: MueLu below the coarsest grid; the levels end at the first grid with at
 // most `directSolveSize` unknowns.
 GeometricMultigridPreconditioner multigrid(const ContactQP& qp, long long coarsestSize = 200,
-                                           int eigenvalueUpdateSteps = 5, long long directSolveSize = 100) {
+                                           int eigenvalueUpdateSteps = 3, long long directSolveSize = 100) {
   return GeometricMultigridPreconditioner(*qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize, coarsestSize,
                                           directSolveSize, Teuchos::ParameterList(), Teuchos::ParameterList(), eigenvalueUpdateSteps);
 }
@@ -262,7 +262,7 @@ TEST(GeometricMultigrid, UpdatedCoarseMatricesEqualFreshProducts) {
   }
 }
 
-// After a Galerkin update the smoothers' eigenvalue estimates take 5 Lanczos steps from the
+// After a Galerkin update the smoothers' eigenvalue estimates take 3 Lanczos steps from the
 // previous Ritz vectors instead of 15 from scratch, and must be as good: CG needs no more
 // iterations than with a fresh build, at every step of a sequence whose weights grow by two
 // orders of magnitude a step, where a third of the constraints jump from 1e-10 to 1e6 times
