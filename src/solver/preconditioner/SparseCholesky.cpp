@@ -1,6 +1,7 @@
 #include "solver/preconditioner/SparseCholesky.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -77,6 +78,8 @@ bool SparseCholesky::factor(const CrsMatrix& A) {
   const auto local = A.getLocalMatrixHost();
   const std::size_t n = local.numRows();
   if (local.numCols() != static_cast<LocalOrdinal>(n)) throw Error("SparseCholesky: the matrix is not square");
+  if (local.nnz() > std::numeric_limits<int>::max())
+    throw Error("SparseCholesky: more nonzeros than CHOLMOD's int indices hold");
   Cholmod& c = *cholmod_;
   const auto& rowMap = local.graph.row_map;
   const auto& entries = local.graph.entries;
