@@ -15,6 +15,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "BenchmarkSupport.hpp"
 #include "assembly/DistributedSpace.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 
@@ -26,17 +27,11 @@ int main(int argc, char** argv) {
     return 2;
   }
   const int dim = std::atoi(argv[1]), degree = std::atoi(argv[2]), nx = std::atoi(argv[3]);
-  Teuchos::ParameterList problem("Problem");
+  Teuchos::ParameterList problem = signorini::bench::clampedBox(dim, degree, nx);
   problem.set("name", "assembly benchmark");
-  problem.set("mesh: dimension", dim);
-  problem.set("mesh: cells", Teuchos::Array<int>(1, nx));
-  problem.set("element: degree", degree);
-  // The family's load and boundary conditions (doc/benchmark-family.md).
-  const char* axes[] = {"x", "y", "z"};
+  // The family's load and contact boundary (doc/benchmark-family.md).
   const std::string t4x = "(8*(2*x-1)^4 - 8*(2*x-1)^2 + 1)", t4y = "(8*(2*y-1)^4 - 8*(2*y-1)^2 + 1)";
-  problem.set(std::string("body force: ") + axes[dim - 1], dim == 2 ? "-" + t4x : "-(" + t4x + " + " + t4y + ")/2");
-  auto& clamp = problem.sublist("Dirichlet").sublist(dim == 2 ? "ymax" : "zmax");
-  for (int c = 0; c < dim; ++c) clamp.set(std::string("displacement: ") + axes[c], "0");
+  problem.set(std::string("body force: ") + (dim == 2 ? "y" : "z"), dim == 2 ? "-" + t4x : "-(" + t4x + " + " + t4y + ")/2");
   problem.sublist("Contact").set("boundary", dim == 2 ? "ymin" : "zmin");
 
   signorini::AssembledProblem p = signorini::buildProblem(problem, comm);

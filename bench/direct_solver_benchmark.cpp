@@ -4,38 +4,19 @@
 // The matrix is the stiffness Q of a P1 box of the family (clamped top face).
 // Usage: build/bin/signorini_bench_direct_solver DIM NX [REPEATS]  (one rank)
 // Writes one JSON object on standard output.
-#include <algorithm>
 #include <cstdlib>
-#include <functional>
 #include <iostream>
-#include <vector>
 
 #include <Amesos2.hpp>
-#include <Teuchos_Time.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
+#include "BenchmarkSupport.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "solver/preconditioner/SparseCholesky.hpp"
 
-namespace {
-
 using namespace signorini;
-
-double medianSeconds(int repeats, const std::function<void()>& work) {
-  std::vector<double> times;
-  for (int r = 0; r < repeats; ++r) {
-    Teuchos::Time timer("work");
-    timer.start(true);
-    work();
-    times.push_back(timer.stop());
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   Tpetra::ScopeGuard tpetra(&argc, &argv);
@@ -46,33 +27,27 @@ int main(int argc, char** argv) {
   }
   const int dim = std::atoi(argv[1]), nx = std::atoi(argv[2]);
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 5;
-  Teuchos::ParameterList problem("Problem");
-  problem.set("mesh: dimension", dim);
-  problem.set("mesh: cells", Teuchos::Array<int>(1, nx));
-  const char* axes[] = {"x", "y", "z"};
-  auto& clamp = problem.sublist("Dirichlet").sublist(dim == 2 ? "ymax" : "zmax");
-  for (int c = 0; c < dim; ++c) clamp.set(std::string("displacement: ") + axes[c], "0");
-  const AssembledProblem p = buildProblem(problem, comm);
+  const AssembledProblem p = buildProblem(bench::clampedBox(dim, 1, nx), comm);
   const auto Q = Teuchos::rcp_const_cast<CrsMatrix>(p.qp.Qmatrix());
 
   MultiVector b(Q->getRangeMap(), 1), x(Q->getDomainMap(), 1);
   b.randomize();
   auto lu = Amesos2::create<CrsMatrix, MultiVector>("KLU2", Q);
-  const double luFirst = medianSeconds(repeats, [&] {
+  const double luFirst = bench::medianSeconds(*comm, repeats, [&] {
     lu = Amesos2::create<CrsMatrix, MultiVector>("KLU2", Q);
     lu->symbolicFactorization().numericFactorization();
   });
-  const double luRefactor = medianSeconds(repeats, [&] { lu->numericFactorization(); });
-  const double luSolve = medianSeconds(repeats, [&] { lu->solve(Teuchos::ptrFromRef(x), Teuchos::ptrFromRef(b)); });
+  const double luRefactor = bench::medianSeconds(*comm, repeats, [&] { lu->numericFactorization(); });
+  const double luSolve = bench::medianSeconds(*comm, repeats, [&] { lu->solve(Teuchos::ptrFromRef(x), Teuchos::ptrFromRef(b)); });
 
   SparseCholesky cholesky;
-  const double cholFirst = medianSeconds(repeats, [&] {
+  const double cholFirst = bench::medianSeconds(*comm, repeats, [&] {
     SparseCholesky fresh;
     fresh.factor(*Q);
   });
   cholesky.factor(*Q);
-  const double cholRefactor = medianSeconds(repeats, [&] { SparseCholesky(cholesky).factor(*Q); });
-  const double cholSolve = medianSeconds(repeats, [&] { cholesky.solve(b, x); });
+  const double cholRefactor = bench::medianSeconds(*comm, repeats, [&] { SparseCholesky(cholesky).factor(*Q); });
+  const double cholSolve = bench::medianSeconds(*comm, repeats, [&] { cholesky.solve(b, x); });
 
   std::cout << "{\"dim\": " << dim << ", \"nx\": " << nx << ", \"n\": " << Q->getGlobalNumRows()
             << ", \"nonzeros\": " << Q->getGlobalNumEntries() << ", \"klu2_first_seconds\": " << luFirst

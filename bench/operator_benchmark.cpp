@@ -3,41 +3,18 @@
 // seconds per application (median of REPEATS, max over ranks).
 // Usage: mpirun -np N build/bin/signorini_bench_operator DIM DEGREE NX [REPEATS]
 // Writes one JSON object on rank 0's standard output.
-#include <algorithm>
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
-#include <vector>
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Teuchos_Time.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "BenchmarkSupport.hpp"
 #include "assembly/ElasticityAssembler.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
-
-namespace {
-
-// Median over repeats of the slowest rank's time of one application.
-double secondsPerApply(const signorini::Operator& op, const signorini::Vector& x, signorini::Vector& y, int repeats,
-                       const signorini::Comm& comm) {
-  std::vector<double> times;
-  for (int r = 0; r < repeats; ++r) {
-    comm.barrier();
-    Teuchos::Time timer("apply");
-    timer.start(true);
-    op.apply(x, y);
-    double local = timer.stop(), slowest = 0;
-    Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &local, &slowest);
-    times.push_back(slowest);
-  }
-  std::sort(times.begin(), times.end());
-  return times[times.size() / 2];
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   Tpetra::ScopeGuard tpetra(&argc, &argv);
@@ -48,15 +25,7 @@ int main(int argc, char** argv) {
   }
   const int dim = std::atoi(argv[1]), degree = std::atoi(argv[2]), nx = std::atoi(argv[3]);
   const int repeats = argc > 4 ? std::atoi(argv[4]) : 11;
-  Teuchos::ParameterList problem("Problem");
-  problem.set("mesh: dimension", dim);
-  problem.set("mesh: cells", Teuchos::Array<int>(1, nx));
-  problem.set("element: degree", degree);
-  const char* axes[] = {"x", "y", "z"};
-  auto& clamp = problem.sublist("Dirichlet").sublist(dim == 2 ? "ymax" : "zmax");
-  for (int c = 0; c < dim; ++c) clamp.set(std::string("displacement: ") + axes[c], "0");
-
-  signorini::AssembledProblem p = signorini::buildProblem(problem, comm);
+  signorini::AssembledProblem p = signorini::buildProblem(signorini::bench::clampedBox(dim, degree, nx), comm);
   const auto& K = *p.qp.Qmatrix();
   const auto Q = signorini::matrixFreeStiffness(*p.space, p.definition);
   signorini::Vector x(K.getDomainMap()), y(K.getRangeMap());
@@ -69,8 +38,8 @@ int main(int argc, char** argv) {
                           n * sizeof(std::size_t);
   double freeBytes = static_cast<double>(Q->bytes()), freeTotal = 0;
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &freeBytes, &freeTotal);
-  const double assembledSeconds = secondsPerApply(K, x, y, repeats, *comm);
-  const double freeSeconds = secondsPerApply(*Q, x, y, repeats, *comm);
+  const double assembledSeconds = signorini::bench::medianSeconds(*comm, repeats, [&] { K.apply(x, y); });
+  const double freeSeconds = signorini::bench::medianSeconds(*comm, repeats, [&] { Q->apply(x, y); });
   std::ostringstream json;
   json << "{\"dim\": " << dim << ", \"degree\": " << degree << ", \"nx\": " << nx << ", \"n\": " << K.getGlobalNumRows()
        << ", \"ranks\": " << comm->getSize() << ", \"nonzeros\": " << K.getGlobalNumEntries()
