@@ -4,16 +4,14 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/core/Error.hpp"
-#include "solver/linear/KrylovSolver.hpp"
-#include "solver/preconditioner/MueLuPreconditioner.hpp"
+#include "solver/preconditioner/LocalDirectSolver.hpp"
 
 namespace signorini::testing {
 
 // Each constraint must act on one unknown (a row of A with one entry), as contact
 // constraints with an axis-aligned obstacle direction do: then an active constraint fixes
 // its unknown, and the system of an active set is Q with those unknowns eliminated
-// symmetrically, which is SPD. It is solved to a relative residual of 1e-14 by CG with
-// MueLu: Debian's KLU2 takes a minute on the 3D members of the family and its Tacho crashes.
+// symmetrically, which is SPD. It is solved by a sparse Cholesky factorization (CHOLMOD).
 ReferenceSolution activeSetSolve(const ContactQP& qp, int maxIterations) {
   const auto Q = qp.Qmatrix();
   if (Q.is_null()) throw Error("activeSetSolve needs Q as a CrsMatrix");
@@ -39,6 +37,7 @@ ReferenceSolution activeSetSolve(const ContactQP& qp, int maxIterations) {
   ReferenceSolution result;
   result.v = rcp(new Vector(Q->getDomainMap()));
 
+  LocalDirectSolver solver;  // every active set's matrix has Q's pattern: one analysis
   for (int it = 1; it <= maxIterations; ++it) {
     std::vector<char> fixed(n, 0);
     std::vector<double> value(n, 0.0);
@@ -68,10 +67,9 @@ ReferenceSolution activeSetSolve(const ContactQP& qp, int maxIterations) {
       K->insertGlobalValues(row, count, vals.data(), cols.data());
     }
     K->fillComplete();
-    MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nullspace, qp.coordinates);
-    amg.compute(K);
-    const KrylovResult solve = KrylovSolver().solve(K, amg.getOperator(), rhs, x, 1e-14, 5000);
-    if (!solve.converged) throw Error("activeSetSolve: CG did not reach 1e-14");
+    solver.factor(K);
+    if (!solver.cholesky()) throw Error("activeSetSolve: the system of an active set is not positive definite");
+    solver.solve(*rhs, *x);
     {
       auto v = result.v->getDataNonConst();
       auto xd = x->getData(0);

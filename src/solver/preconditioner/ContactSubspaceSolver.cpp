@@ -4,7 +4,6 @@
 #include <unordered_map>
 #include <vector>
 
-#include <Amesos2.hpp>
 #include <Tpetra_ComputeGatherMap.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
@@ -18,10 +17,9 @@
 #include "signorini/core/Error.hpp"
 #include "solver/linear/BarrierHessianOperator.hpp"
 #include "solver/preconditioner/LocalBlock.hpp"
+#include "solver/preconditioner/LocalDirectSolver.hpp"
 
 namespace signorini {
-
-using DirectSolver = Amesos2::Solver<CrsMatrix, MultiVector>;
 
 struct ContactSubspaceSolver::Impl {
   RCP<const Map> dofMap;
@@ -34,7 +32,8 @@ struct ContactSubspaceSolver::Impl {
   // block-local column indices, and H_c = P^T Q P + (A P)^T D (A P) with its factorization.
   RCP<const Map> localDofs, localConstraints;
   RCP<BarrierHessianOperator> hessian;
-  RCP<DirectSolver> solver;
+  LocalDirectSolver solver;
+  bool factored = false;
   // Scratch of apply(), which runs in every Krylov iteration; sized for `numVectors` columns.
   std::size_t numVectors = 0;
   RCP<MultiVector> blockX, blockY, localB, localX, correction;
@@ -159,9 +158,8 @@ void ContactSubspaceSolver::setWeights(const Vector& D) {
   Vector localD(s.localConstraints);
   copyLocalRows(blockD, localD);
   s.hessian->setWeights(localD);
-  RCP<CrsMatrix> Hc = s.hessian->assemble();
-  s.solver = Amesos2::create<CrsMatrix, MultiVector>("KLU2", Hc);
-  s.solver->symbolicFactorization().numericFactorization();
+  s.solver.factor(s.hessian->assemble());
+  s.factored = true;
 }
 
 void ContactSubspaceSolver::apply(const MultiVector& X, MultiVector& Y, Teuchos::ETransp, Scalar alpha,
@@ -180,9 +178,9 @@ void ContactSubspaceSolver::apply(const MultiVector& X, MultiVector& Y, Teuchos:
   }
   s.blockX->doImport(X, *s.toBlockDofs, Tpetra::INSERT);
   if (!s.localDofs.is_null()) {
-    if (s.solver.is_null()) throw Error("ContactSubspaceSolver::apply called before setWeights()");
+    if (!s.factored) throw Error("ContactSubspaceSolver::apply called before setWeights()");
     copyLocalRows(*s.blockX, *s.localB);
-    s.solver->solve(s.localX.ptr(), s.localB.ptr());
+    s.solver.solve(*s.localB, *s.localX);
     copyLocalRows(*s.localX, *s.blockY);
   }
   s.correction->putScalar(0.0);  // the export writes the contact DOFs only, each from one block

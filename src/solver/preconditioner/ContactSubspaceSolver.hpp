@@ -1,8 +1,8 @@
 #pragma once
 // The solve on the contact subspace: with P the injection of the degrees of freedom that
 // appear in A (the contact DOFs), applies P (P^T H P)^-1 P^T for H = Q + A^T D A, exactly or
-// block by block. P^T H P has one row per contact DOF and is factored by Amesos2's KLU2 on
-// one-rank communicators (Debian's Amesos2 solvers are wrong on more than one rank):
+// block by block. P^T H P has one row per contact DOF; it is factored on one-rank
+// communicators (LocalDirectSolver: a Cholesky factorization, as it is positive definite):
 //   Gathered: the whole of it on rank 0; every application gathers the subspace residual
 //             to rank 0 and scatters the correction back. Exact on any rank count.
 //   PerRank:  each rank factors the block of the contact DOFs it owns (P_r^T H P_r, with

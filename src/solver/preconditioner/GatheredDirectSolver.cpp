@@ -1,6 +1,5 @@
 #include "solver/preconditioner/GatheredDirectSolver.hpp"
 
-#include <Amesos2.hpp>
 #include <Tpetra_ComputeGatherMap.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
@@ -9,11 +8,9 @@
 
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/LocalBlock.hpp"
-#include "solver/preconditioner/SparseCholesky.hpp"
+#include "solver/preconditioner/LocalDirectSolver.hpp"
 
 namespace signorini {
-
-using DirectSolver = Amesos2::Solver<CrsMatrix, MultiVector>;
 
 struct GatheredDirectSolver::Factorization {
   RCP<const Map> rowMap;    // A's (distributed)
@@ -21,24 +18,12 @@ struct GatheredDirectSolver::Factorization {
   RCP<const Import> toRoot;
   RCP<const Map> localRows;  // rank 0 only: the same rows on the one-rank communicator
   RCP<CrsMatrix> rootA;
-  // Rank 0 only: the Cholesky factor, or KLU2's LU where A is not positive definite.
-  std::shared_ptr<SparseCholesky> cholesky;
-  RCP<DirectSolver> lu;
+  std::shared_ptr<LocalDirectSolver> solver;  // rank 0 only
 
   void factor() {
-    lu = Teuchos::null;
-    // A new factor, so that operators handed out for the last matrix stay valid.
-    cholesky = cholesky ? std::make_shared<SparseCholesky>(*cholesky) : std::make_shared<SparseCholesky>();
-    if (cholesky->factor(*rootA)) return;
-    cholesky.reset();
-    lu = Amesos2::create<CrsMatrix, MultiVector>("KLU2", rootA);
-    lu->symbolicFactorization().numericFactorization();
-  }
-  void solve(const MultiVector& B, MultiVector& X) const {
-    if (cholesky)
-      cholesky->solve(B, X);
-    else
-      lu->solve(Teuchos::ptrFromRef(X), Teuchos::ptrFromRef(B));
+    // A new solver, so that operators handed out for the last matrix stay valid.
+    solver = solver ? std::make_shared<LocalDirectSolver>(*solver) : std::make_shared<LocalDirectSolver>();
+    solver->factor(rootA);
   }
 };
 
@@ -60,7 +45,7 @@ class GatheredDirectSolver::RootSolve : public Operator {
     rootB_->doImport(X, *f_->toRoot, Tpetra::INSERT);
     if (!f_->rootA.is_null() && f_->localRows->getNodeNumElements() > 0) {
       copyLocalRows(*rootB_, *localB_);
-      f_->solve(*localB_, *localX_);
+      f_->solver->solve(*localB_, *localX_);
       copyLocalRows(*localX_, *rootX_);
     }
     solution_->doExport(*rootX_, *f_->toRoot, Tpetra::INSERT);

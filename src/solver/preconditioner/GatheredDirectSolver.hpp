@@ -1,8 +1,7 @@
 #pragma once
 // An exact solve with a small distributed matrix, for the coarsest level of a multigrid
-// hierarchy: the matrix is gathered to rank 0 and factored there, by CHOLMOD's Cholesky
-// (SparseCholesky) or, if it is not positive definite, by Amesos2's KLU2 on a one-rank
-// communicator (Debian's Amesos2 solvers are wrong on more than one rank); each application
+// hierarchy: the matrix is gathered to rank 0 and factored there on a one-rank communicator
+// (LocalDirectSolver: CHOLMOD's Cholesky, or KLU2's LU if it is not positive definite); each application
 // gathers the right-hand side to rank 0 and scatters the solution back.
 // Why: an algebraic hierarchy rebuilt at every Newton step for a matrix of a few hundred
 // unknowns costs more than the factorization, and solves only approximately.

@@ -9,10 +9,12 @@
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/LocalBlock.hpp"
 #include "solver/preconditioner/SparseCholesky.hpp"
+#include "support/DirectSolveResidual.hpp"
 
 namespace {
 
 using namespace signorini;
+using signorini::testing::relativeResidual;
 
 // The n x n matrix tridiag(-1, diagonal, -1) (plus a coupling of the ends if `ring`) on MPI_COMM_SELF.
 RCP<CrsMatrix> tridiagonal(int n, double diagonal, bool ring = false) {
@@ -27,19 +29,6 @@ RCP<CrsMatrix> tridiagonal(int n, double diagonal, bool ring = false) {
   }
   A->fillComplete();
   return A;
-}
-
-// max |A x - b| / max |b| with x = A^-1 b from `cholesky`, for two random right-hand sides.
-double relativeResidual(const CrsMatrix& A, const SparseCholesky& cholesky) {
-  MultiVector b(A.getRangeMap(), 2), x(A.getDomainMap(), 2), r(A.getRangeMap(), 2);
-  b.randomize();
-  cholesky.solve(b, x);
-  A.apply(x, r);
-  r.update(-1.0, b, 1.0);
-  Teuchos::Array<double> error(2), size(2);
-  r.normInf(error());
-  b.normInf(size());
-  return std::max(error[0] / size[0], error[1] / size[1]);
 }
 
 TEST(SparseCholesky, SolvesRefactorsAndCopies) {
