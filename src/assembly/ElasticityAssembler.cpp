@@ -55,48 +55,70 @@ DirichletData dirichletData(const DistributedSpace& ds, const ProblemDefinition&
 }
 
 // The FE graph of the local cells: for each overlap node, its neighbours through the local
-// cells, sorted; every component row of the node gets all components of the neighbours.
+// cells; every component row of the node gets all components of the neighbours. The lists
+// are built in CSR form (a count pass and a fill pass, with a marker per node): a vector per
+// node would leave the heap fragmented for the rest of the run.
 RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
   const LagrangeSpace& space = ds.space();
   const int dim = ds.dim(), npc = space.nodesPerCell();
   const auto& overlap = ds.overlapSpaceNodes();
+  const std::size_t numOverlap = overlap.size();
   std::vector<int> localIndex(space.numNodes(), -1);
-  for (std::size_t i = 0; i < overlap.size(); ++i) localIndex[overlap[i]] = static_cast<int>(i);
+  for (std::size_t i = 0; i < numOverlap; ++i) localIndex[overlap[i]] = static_cast<int>(i);
 
-  // node -> local cells, in CSR form
+  // node -> local cells
   const long long numCells = ds.mesh().numCells();
-  std::vector<std::size_t> start(overlap.size() + 1, 0);
+  std::vector<std::size_t> cellStart(numOverlap + 1, 0);
   for (long long c = 0; c < numCells; ++c)
-    for (int i = 0; i < npc; ++i) ++start[localIndex[space.cellNodes(c)[i]] + 1];
-  for (std::size_t i = 0; i < overlap.size(); ++i) start[i + 1] += start[i];
-  std::vector<long long> cellsOfNode(start.back());
-  std::vector<std::size_t> fill(start.begin(), start.end() - 1);
-  for (long long c = 0; c < numCells; ++c)
-    for (int i = 0; i < npc; ++i) cellsOfNode[fill[localIndex[space.cellNodes(c)[i]]]++] = c;
-
-  std::vector<std::vector<GlobalOrdinal>> neighbours(overlap.size());
-  Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("entries per row", dim * overlap.size());
-  auto hostCounts = counts.view_host();
-  for (std::size_t i = 0; i < overlap.size(); ++i) {
-    auto& nb = neighbours[i];
-    for (std::size_t k = start[i]; k < start[i + 1]; ++k) {
-      const long long* nodes = space.cellNodes(cellsOfNode[k]);
-      for (int j = 0; j < npc; ++j) nb.push_back(ds.globalNode(nodes[j]));
-    }
-    std::sort(nb.begin(), nb.end());
-    nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
-    for (int c = 0; c < dim; ++c) hostCounts(dim * i + c) = dim * nb.size();
+    for (int i = 0; i < npc; ++i) ++cellStart[localIndex[space.cellNodes(c)[i]] + 1];
+  for (std::size_t i = 0; i < numOverlap; ++i) cellStart[i + 1] += cellStart[i];
+  std::vector<long long> cellsOfNode(cellStart.back());
+  {
+    std::vector<std::size_t> next(cellStart.begin(), cellStart.end() - 1);
+    for (long long c = 0; c < numCells; ++c)
+      for (int i = 0; i < npc; ++i) cellsOfNode[next[localIndex[space.cellNodes(c)[i]]]++] = c;
   }
+
+  // node -> neighbour nodes (overlap indices); `visit` calls f once per neighbour of node i.
+  std::vector<std::size_t> lastSeenBy(numOverlap, numOverlap);
+  const auto visit = [&](std::size_t i, auto&& f) {
+    for (std::size_t k = cellStart[i]; k < cellStart[i + 1]; ++k) {
+      const long long* nodes = space.cellNodes(cellsOfNode[k]);
+      for (int j = 0; j < npc; ++j) {
+        const int n = localIndex[nodes[j]];
+        if (lastSeenBy[n] != i) {
+          lastSeenBy[n] = i;
+          f(n);
+        }
+      }
+    }
+  };
+  std::vector<std::size_t> neighbourStart(numOverlap + 1, 0);
+  for (std::size_t i = 0; i < numOverlap; ++i) visit(i, [&](int) { ++neighbourStart[i + 1]; });
+  for (std::size_t i = 0; i < numOverlap; ++i) neighbourStart[i + 1] += neighbourStart[i];
+  std::vector<int> neighbours(neighbourStart.back());
+  std::fill(lastSeenBy.begin(), lastSeenBy.end(), numOverlap);
+  for (std::size_t i = 0; i < numOverlap; ++i) {
+    std::size_t next = neighbourStart[i];
+    visit(i, [&](int n) { neighbours[next++] = n; });
+  }
+
+  Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("entries per row", dim * numOverlap);
+  auto hostCounts = counts.view_host();
+  for (std::size_t i = 0; i < numOverlap; ++i)
+    for (int c = 0; c < dim; ++c) hostCounts(dim * i + c) = dim * (neighbourStart[i + 1] - neighbourStart[i]);
   counts.modify_host();
   counts.sync_device();
 
   auto graph = rcp(new FEGraph(ds.ownedDofMap(), ds.overlapDofMap(), counts));
   graph->beginAssembly();
   std::vector<GlobalOrdinal> cols;
-  for (std::size_t i = 0; i < overlap.size(); ++i) {
+  for (std::size_t i = 0; i < numOverlap; ++i) {
     cols.clear();
-    for (GlobalOrdinal n : neighbours[i])
+    for (std::size_t k = neighbourStart[i]; k < neighbourStart[i + 1]; ++k) {
+      const GlobalOrdinal n = ds.globalNode(overlap[neighbours[k]]);
       for (int c = 0; c < dim; ++c) cols.push_back(dim * n + c);
+    }
     const GlobalOrdinal node = ds.globalNode(overlap[i]);
     for (int c = 0; c < dim; ++c) graph->insertGlobalIndices(dim * node + c, cols.size(), cols.data());
   }
