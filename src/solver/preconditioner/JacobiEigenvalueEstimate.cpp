@@ -31,7 +31,6 @@ void JacobiEigenvalueEstimate::setMatrix(const CrsMatrix& A) {
     diagonal_ = rcp(new Vector(map, false));
     inverseDiagonal_ = rcp(new Vector(map, false));
     product_ = rcp(new Vector(map, false));
-    basis_ = Teuchos::null;
     ritz_ = Teuchos::null;
     graph_ = Teuchos::null;
   }
@@ -71,32 +70,33 @@ double JacobiEigenvalueEstimate::estimate(const CrsMatrix& A, int steps) {
     auto r = ritz_->getDataNonConst();
     for (std::size_t i = 0; i < n; ++i) r[i] = startValue(map->getGlobalElement(static_cast<LocalOrdinal>(i)));
   }
-  if (basis_.is_null() || basis_->getNumVectors() < static_cast<std::size_t>(steps))
-    basis_ = rcp(new MultiVector(map, steps, false));
+  // The Lanczos vectors live for this call only: kept, they were the largest part of the
+  // hierarchy's memory beside the matrices (15 vectors on the fine level for the first estimate).
+  MultiVector basis(map, steps, false);
   const auto d = diagonal_->getData(), dInverse = inverseDiagonal_->getData();
   {  // q_0 = D^-1/2 ritz / ||ritz||: unit length in the D norm
     const double scale = 1.0 / ritz_->norm2();
     const auto r = ritz_->getData();
-    auto q = basis_->getDataNonConst(0);
+    auto q = basis.getDataNonConst(0);
     for (std::size_t i = 0; i < n; ++i) q[i] = scale * r[i] / std::sqrt(d[i]);
   }
   std::vector<double> alpha, beta;
   for (int k = 0; k < steps; ++k) {
-    const auto q = basis_->getVector(k);
+    const auto q = basis.getVector(k);
     A.apply(*q, *product_);
     alpha.push_back(q->dot(*product_));  // <D^-1 A q, q>_D
     // w = D^-1 A q - alpha q_k - beta q_k-1, written over A q, with its D norm.
     const auto qk = q->getData();
     auto w = product_->getDataNonConst();
     const double a = alpha.back(), b = k > 0 ? beta.back() : 0.0;
-    const Teuchos::ArrayRCP<const double> previous = k > 0 ? basis_->getData(k - 1) : qk;
+    const Teuchos::ArrayRCP<const double> previous = k > 0 ? basis.getData(k - 1) : qk;
     const double wNorm = std::sqrt(std::max(sumOverEntries(comm, n, [&](std::size_t i) {
       w[i] = dInverse[i] * w[i] - a * qk[i] - b * previous[i];
       return d[i] * w[i] * w[i];
     }), 0.0));
     if (k + 1 == steps || wNorm <= 1e-12 * std::abs(a)) break;  // the Krylov space is invariant
     beta.push_back(wNorm);
-    auto next = basis_->getDataNonConst(k + 1);
+    auto next = basis.getDataNonConst(k + 1);
     for (std::size_t i = 0; i < n; ++i) next[i] = w[i] / wNorm;
   }
   // Eigenpairs of the Lanczos tridiagonal matrix, ascending.
@@ -111,7 +111,7 @@ double JacobiEigenvalueEstimate::estimate(const CrsMatrix& A, int steps) {
   std::fill(r.begin(), r.end(), 0.0);
   for (int k = 0; k < m; ++k) {
     const double s = eigenvectors[(m - 1) * m + k];
-    const auto q = basis_->getData(k);
+    const auto q = basis.getData(k);
     for (std::size_t i = 0; i < n; ++i) r[i] += s * q[i];
   }
   for (std::size_t i = 0; i < n; ++i) r[i] *= std::sqrt(d[i]);

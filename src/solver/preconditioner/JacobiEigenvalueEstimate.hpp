@@ -5,9 +5,10 @@
 // needed 30 steps in 3D), at the same one product with A a step.
 //
 // It is kept with a level of a multigrid hierarchy whose matrix changes values but not its
-// graph from one build to the next: the diagonal's positions in the graph, the work vectors
-// and the last Ritz vector stay, so a rebuild costs the few steps that update the estimate
-// and a handful of passes over the vectors. The Ritz vector is kept scaled by D^1/2 (an
+// graph from one build to the next: the diagonal's positions in the graph, the diagonal, a
+// work vector and the last Ritz vector stay, so a rebuild costs the few steps that update
+// the estimate and a handful of passes over the vectors. The Lanczos basis is allocated
+// for each estimate and freed after it. The Ritz vector is kept scaled by D^1/2 (an
 // eigenvector of D^-1/2 A D^-1/2): so scaled, it still starts the next estimate well after D
 // changed by orders of magnitude on some rows, where unscaled it would be those rows alone.
 #include <Kokkos_View.hpp>
@@ -43,9 +44,7 @@ class JacobiEigenvalueEstimate {
   using Offsets = Kokkos::View<std::size_t*, CrsMatrix::device_type>;
   RCP<const CrsMatrix::crs_graph_type> graph_;  // the graph offsets_ index
   Offsets offsets_;                             // of the diagonal entries in graph_'s rows
-  RCP<Vector> diagonal_, inverseDiagonal_, ritz_;
-  RCP<MultiVector> basis_;
-  RCP<Vector> product_;
+  RCP<Vector> diagonal_, inverseDiagonal_, ritz_, product_;
 };
 
 }  // namespace signorini
