@@ -219,14 +219,15 @@ std::vector<std::size_t> positionsIn(const Graph& pattern, const CrsMatrix& M) {
 
 }  // namespace
 
-RCP<CrsMatrix> BarrierHessianOperator::assembleByProduct(const CrsMatrix& Q, const Vector& D) const {
+RCP<const CrsMatrix> BarrierHessianOperator::contactTerm(const Vector& D) const {
   using Values = typename CrsMatrix::local_matrix_device_type::values_type;
-  const bool first = !product_;
-  if (first) {
+  if (!product_) {
     product_ = std::make_shared<ProductPattern>();
     product_->At = Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node>(A_).createTranspose();
     product_->toAtColumns = rcp(new Import(A_->getRangeMap(), product_->At->getColMap()));
     product_->AtDA = rcp(new CrsMatrix(product_->At->getRowMap(), 0));
+    // The pattern of A^T A (the product skips zero weights: none here).
+    Tpetra::MatrixMatrix::Multiply(*product_->At, false, *A_, false, *product_->AtDA);
   }
   ProductPattern& pp = *product_;
   // A^T D: A^T's values scaled by the weight of their column.
@@ -238,18 +239,23 @@ RCP<CrsMatrix> BarrierHessianOperator::assembleByProduct(const CrsMatrix& Q, con
   for (std::size_t e = 0; e < scaled.extent(0); ++e) scaled(e) = at.values(e) * w[at.graph.entries(e)];
   CrsMatrix AtD(pp.At->getCrsGraph(), scaled);
   AtD.fillComplete(pp.At->getDomainMap(), pp.At->getRangeMap());
-  if (first) {
-    // The pattern of A^T A (the product skips zero weights: none here), then of Q + A^T A.
-    Tpetra::MatrixMatrix::Multiply(*pp.At, false, *A_, false, *pp.AtDA);
-    pp.graph = unionPattern(Q, *pp.AtDA);
-    pp.qPosition = positionsIn(*pp.graph, Q);
-    pp.productPosition = positionsIn(*pp.graph, *pp.AtDA);
-  }
   pp.AtDA->resumeFill();  // a filled result: the product reuses its pattern
   Tpetra::MatrixMatrix::Multiply(AtD, false, *A_, false, *pp.AtDA);
+  return pp.AtDA;
+}
+
+RCP<CrsMatrix> BarrierHessianOperator::assembleByProduct(const CrsMatrix& Q, const Vector& D) const {
+  using Values = typename CrsMatrix::local_matrix_device_type::values_type;
+  const RCP<const CrsMatrix> AtDA = contactTerm(D);
+  ProductPattern& pp = *product_;
+  if (pp.graph.is_null()) {  // the pattern of Q + A^T A
+    pp.graph = unionPattern(Q, *AtDA);
+    pp.qPosition = positionsIn(*pp.graph, Q);
+    pp.productPosition = positionsIn(*pp.graph, *AtDA);
+  }
   Values values("H values", pp.graph->getNodeNumEntries());
   const auto q = Q.getLocalMatrixHost().values;
-  const auto product = pp.AtDA->getLocalMatrixHost().values;
+  const auto product = AtDA->getLocalMatrixHost().values;
   for (std::size_t e = 0; e < pp.qPosition.size(); ++e) values(pp.qPosition[e]) += q(e);
   for (std::size_t e = 0; e < pp.productPosition.size(); ++e) values(pp.productPosition[e]) += product(e);
   auto H = rcp(new CrsMatrix(pp.graph, values));

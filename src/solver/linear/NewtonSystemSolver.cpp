@@ -52,8 +52,8 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
              "Preconditioner/contact correction");
   Teuchos::ParameterList& prec = p.sublist("Preconditioner", false, "Preconditioner of H");
   prec.set("type", "amg of H",
-           "\"none\", \"amg of Q\" (MueLu on Q, built once) or \"amg of H\" (MueLu on the "
-           "assembled Q + A^T D A, rebuilt as \"amg of H: rebuild tolerance\" says)",
+           "\"none\", \"amg of Q\" (MueLu on Q, built once) or \"amg of H\" (a multigrid of "
+           "Q + A^T D A, rebuilt as \"amg of H: rebuild tolerance\" says)",
            choices<PreconditionerType>({{"none", PreconditionerType::None},
                                         {"amg of Q", PreconditionerType::AmgOfQ},
                                         {"amg of H", PreconditionerType::AmgOfH}},
@@ -107,8 +107,10 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            "inaccurate)",
            zeroOrRange(3, 1000));
   prec.sublist("Ifpack2", false,
-               "Passed unchanged to Ifpack2's Chebyshev smoother of the geometric levels, over Signorini's "
-               "defaults (chebyshev: degree 2, chebyshev: ratio eigenvalue 7)");
+               "Passed unchanged to Ifpack2's Chebyshev smoother of the coarse geometric levels, over "
+               "Signorini's defaults (chebyshev: degree 2, chebyshev: ratio eigenvalue 7); the fine level's "
+               "smoother, the same polynomial of H as an operator, reads its degree, ratio eigenvalue, boost "
+               "factor and max eigenvalue");
   prec.sublist("MueLu", false, "Passed to MueLu unchanged, over Signorini's defaults");
   return p;
 }
@@ -151,11 +153,17 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   if (hierarchy == Hierarchy::Geometric || (hierarchy == Hierarchy::Auto && haveGrid)) {
     if (!haveGrid)
       throw InputError("Preconditioner/hierarchy \"geometric\" needs a box mesh (Problem/mesh: type \"box\")");
-    amg_ = std::make_unique<GeometricMultigridPreconditioner>(*qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize,
-                                                              prec.get<int>("geometric: coarsest size"),
-                                                              prec.get<int>("geometric: direct solve size"),
-                                                              prec.sublist("Ifpack2"), muelu,
-                                                              prec.get<int>("geometric: eigenvalue update steps"));
+    auto geometric = std::make_unique<GeometricMultigridPreconditioner>(
+        *qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize, prec.get<int>("geometric: coarsest size"),
+        prec.get<int>("geometric: direct solve size"), prec.sublist("Ifpack2"), muelu,
+        prec.get<int>("geometric: eigenvalue update steps"));
+    if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() > 0) {
+      geometric_ = geometric.get();
+      filteredH_ = rcp(new BarrierHessianOperator(qp.Q, qp.A, qp.Qmatrix()));
+      diagonalOfQ_ = rcp(new Vector(qp.Qmatrix()->getRowMap()));
+      qp.Qmatrix()->getLocalDiagCopy(*diagonalOfQ_);
+    }
+    amg_ = std::move(geometric);
     // A rebuild on the geometric levels updates the Galerkin products of the changed rows.
     rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.0);
   } else {
@@ -207,6 +215,11 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
     }
     builtWeights_ = weights;
     ++amgBuilds_;
+    if (geometric_) {
+      buildGeometricForSum(filtered);
+      amgReady_ = true;
+      return;
+    }
     // On Q's graph, H is updated in place and the hierarchy with what changed (A^T D A on the
     // contact DOFs); a copy of Q's values and a search for the changes were most of the cost.
     RCP<CrsMatrix> change;
@@ -224,6 +237,20 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
       amg_->update(assembledH_, *change, reuseHierarchy_);
     amgReady_ = true;
   }
+}
+
+void NewtonSystemSolver::buildGeometricForSum(const Vector& filtered) {
+  RCP<const CrsMatrix> C;
+  Vector diagonal(diagonalOfQ_->getMap(), false);
+  {
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: assemble H"));
+    filteredH_->setWeights(filtered);
+    C = filteredH_->contactTerm(filtered);
+    C->getLocalDiagCopy(diagonal);
+    diagonal.update(1.0, *diagonalOfQ_, 1.0);
+  }
+  Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup"));
+  geometric_->computeForSum(filteredH_, diagonal, *filteredH_->assembledQ(), C, reuseHierarchy_ && amgReady_);
 }
 
 KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess,

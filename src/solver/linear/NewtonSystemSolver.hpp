@@ -4,7 +4,8 @@
 // (the truncated Newton step). The preconditioner is chosen by the "Preconditioner" list:
 //   "none";
 //   "amg of Q":  MueLu on Q, set up once and reused for every step;
-//   "amg of H":  MueLu on the assembled Q + A^T D A (assembled for the preconditioner only),
+//   "amg of H":  a multigrid of Q + A^T D A (assembled for MueLu's hierarchy, left an
+//                operator on the fine level of the geometric one),
 //                rebuilt when some constraint's relative weight D_i / (D_i + q_i) moved by
 //                more than "amg of H: rebuild tolerance" since the last build (0: every
 //                step, 1: never after the first; by default 0 with the geometric levels,
@@ -25,6 +26,7 @@
 #include "solver/linear/InitialGuessProjection.hpp"
 #include "solver/linear/KrylovSolver.hpp"
 #include "solver/preconditioner/ContactSubspaceSolver.hpp"
+#include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
 #include "solver/preconditioner/MultilevelPreconditioner.hpp"
 #include "solver/preconditioner/SubspaceCorrectedPreconditioner.hpp"
 
@@ -81,8 +83,16 @@ class NewtonSystemSolver {
   double weightCap_ = 0.0;  // "amg of H: weight cap" with a contact correction, else 0 (none)
   RCP<Vector> constraintStiffness_, builtWeights_;  // q_i, and w_i of the last AMG build
   RCP<CrsMatrix> assembledH_;                       // the matrix of the last AMG build
+  // On the geometric levels H is not assembled: the hierarchy gets Q + A^T D' A as an
+  // operator, its diagonal and A^T D' A (GeometricMultigridPreconditioner::computeForSum).
+  GeometricMultigridPreconditioner* geometric_ = nullptr;  // amg_, when it takes that path
+  RCP<BarrierHessianOperator> filteredH_;                  // Q + A^T D' A
+  RCP<Vector> diagonalOfQ_;
   int amgBuilds_ = 0;
   bool amgReady_ = false;
+
+  // The geometric hierarchy for Q + A^T D' A, D' = `filtered`, without assembling it.
+  void buildGeometricForSum(const Vector& filtered);
 };
 
 // q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i, on A's row map.

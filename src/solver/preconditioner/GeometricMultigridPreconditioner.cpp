@@ -6,6 +6,7 @@
 
 #include <Ifpack2_Chebyshev.hpp>
 #include <Teuchos_TimeMonitor.hpp>
+#include <TpetraExt_MatrixMatrix.hpp>
 #include <TpetraExt_TripleMatrixMultiply.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
@@ -16,6 +17,7 @@
 #include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/solver/GeometricGrid.hpp"
+#include "solver/preconditioner/ChebyshevSmoother.hpp"
 #include "solver/preconditioner/GatheredDirectSolver.hpp"
 #include "solver/preconditioner/JacobiEigenvalueEstimate.hpp"
 #include "solver/preconditioner/MueLuPreconditioner.hpp"
@@ -30,8 +32,9 @@ struct GeometricMultigridPreconditioner::Level {
   RCP<const Map> dofMap;
   std::vector<double> coordinates;  // dim per owned node, in DOF map order
   std::vector<char> dirichlet;      // per owned DOF
-  RCP<CrsMatrix> A;
-  RCP<Chebyshev> smoother;
+  RCP<CrsMatrix> A;                 // null on a fine level given as an operator
+  RCP<const Operator> op;           // A, or the fine operator
+  RCP<Operator> smoother;           // Ifpack2's Chebyshev of A, or a ChebyshevSmoother of op
   JacobiEigenvalueEstimate eigenvalue;  // of the smoother, kept across builds
   RCP<CrsMatrix> P, R;  // from the next coarser level to this one, and its transpose
 };
@@ -328,7 +331,7 @@ namespace {
 // coarse operator (a direct solve or MueLu) at the bottom.
 class VCycle : public Operator {
  public:
-  VCycle(std::vector<RCP<CrsMatrix>> A, std::vector<RCP<Chebyshev>> S, std::vector<RCP<CrsMatrix>> P,
+  VCycle(std::vector<RCP<const Operator>> A, std::vector<RCP<const Operator>> S, std::vector<RCP<CrsMatrix>> P,
          std::vector<RCP<CrsMatrix>> R, RCP<const Operator> coarse)
       : A_(std::move(A)), S_(std::move(S)), P_(std::move(P)), R_(std::move(R)), coarse_(std::move(coarse)) {}
 
@@ -337,9 +340,9 @@ class VCycle : public Operator {
     if (work_.empty() || work_[0].x->getNumVectors() != numVectors) {
       work_.clear();
       for (std::size_t l = 0; l < A_.size(); ++l)
-        work_.push_back({rcp(new MultiVector(A_[l]->getRowMap(), numVectors)),
-                         rcp(new MultiVector(A_[l]->getRowMap(), numVectors)),
-                         rcp(new MultiVector(A_[l]->getRowMap(), numVectors))});
+        work_.push_back({rcp(new MultiVector(A_[l]->getRangeMap(), numVectors)),
+                         rcp(new MultiVector(A_[l]->getRangeMap(), numVectors)),
+                         rcp(new MultiVector(A_[l]->getRangeMap(), numVectors))});
     }
     work_[0].b->assign(X);
     cycle(0);
@@ -374,8 +377,7 @@ class VCycle : public Operator {
     w.r->update(1.0, *w.b, -1.0);
   }
 
-  std::vector<RCP<CrsMatrix>> A_;
-  std::vector<RCP<Chebyshev>> S_;
+  std::vector<RCP<const Operator>> A_, S_;
   std::vector<RCP<CrsMatrix>> P_, R_;
   RCP<const Operator> coarse_;
   mutable std::vector<Work> work_;
@@ -402,9 +404,90 @@ void GeometricMultigridPreconditioner::update(const RCP<CrsMatrix>& A, const Crs
 
 void GeometricMultigridPreconditioner::build(const RCP<CrsMatrix>& A, RCP<const CrsMatrix> change, bool reuse) {
   levels_[0]->A = A;
-  std::vector<RCP<CrsMatrix>> matrices{A}, prolongators, restrictions;
-  std::vector<RCP<Chebyshev>> smoothers;
-  for (std::size_t l = 0; l + 1 < levels_.size(); ++l) {
+  levels_[0]->op = A;
+  lastTerm_ = Teuchos::null;  // the first coarse matrix is no longer of the form P^T (Q + C) P
+  buildFrom(0, change, reuse);
+}
+
+void GeometricMultigridPreconditioner::computeForSum(const RCP<const Operator>& H, const Vector& diagonal,
+                                                     const CrsMatrix& Q, const RCP<const CrsMatrix>& C, bool reuse) {
+  if (levels_.size() < 2)
+    throw Error("GeometricMultigridPreconditioner::computeForSum needs a geometric level below the fine one");
+  Level& fine = *levels_[0];
+  Level& first = *levels_[1];
+  RCP<const CrsMatrix> change, coarseChange;  // what changed in C since the last call, and its product
+  {
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: Galerkin products"));
+    change = changeOfTerm(*C);
+    if (!change.is_null() && !first.A.is_null()) {
+      const RCP<CrsMatrix> product = galerkinProductOfChange(fine.P, change);
+      if (addInPattern(*first.A, *product)) coarseChange = product;
+    }
+    if (coarseChange.is_null()) {  // P^T Q P + P^T C P afresh
+      CrsMatrix PtQP(fine.P->getDomainMap(), 0);
+      Tpetra::TripleMatrixMultiply::MultiplyRAP(*fine.P, true, Q, false, *fine.P, false, PtQP);
+      first.A = Tpetra::MatrixMatrix::add(1.0, false, PtQP, 1.0, false, *galerkinProductOfChange(fine.P, C));
+      change = Teuchos::null;
+    }
+    rememberTerm(C);
+  }
+  fine.A = Teuchos::null;
+  fine.op = H;
+  {
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: smoothers"));
+    fine.eigenvalue.setDiagonal(diagonal);
+    ChebyshevSmoother::Parameters p;
+    p.degree = smoother_.get<int>("chebyshev: degree");
+    p.eigenvalueRatio = smoother_.get<double>("chebyshev: ratio eigenvalue");
+    p.boostFactor = smoother_.get<double>("chebyshev: boost factor");
+    p.maxEigenvalue = maxEigenvalue(fine, change);
+    fine.smoother = rcp(new ChebyshevSmoother(H, fine.eigenvalue.inverseDiagonal(), p));
+  }
+  buildFrom(1, coarseChange, reuse);
+}
+
+// C - (the last C) on C's graph, as a matrix; null when there is no last C on that graph.
+RCP<const CrsMatrix> GeometricMultigridPreconditioner::changeOfTerm(const CrsMatrix& C) const {
+  const auto local = C.getLocalMatrixHost();
+  const bool comparable = !lastTerm_.is_null() && lastTerm_ == C.getCrsGraph() &&
+                          lastTermValues_.size() == local.values.extent(0);
+  if (!onEveryRank(*C.getComm(), comparable)) return Teuchos::null;
+  typename CrsMatrix::local_matrix_device_type::values_type values("change of C", local.values.extent(0));
+  for (std::size_t e = 0; e < lastTermValues_.size(); ++e) values(e) = local.values(e) - lastTermValues_[e];
+  auto change = rcp(new CrsMatrix(C.getCrsGraph(), values));
+  change->fillComplete(C.getDomainMap(), C.getRangeMap());
+  return change;
+}
+
+void GeometricMultigridPreconditioner::rememberTerm(const RCP<const CrsMatrix>& C) {
+  const auto values = C->getLocalMatrixHost().values;
+  lastTerm_ = C->getCrsGraph();
+  lastTermValues_.assign(values.data(), values.data() + values.extent(0));
+}
+
+double GeometricMultigridPreconditioner::maxEigenvalue(Level& level, const RCP<const CrsMatrix>& change) {
+  if (smoother_.isParameter("chebyshev: max eigenvalue")) return smoother_.get<double>("chebyshev: max eigenvalue");
+  int steps = smoother_.get<int>("chebyshev: eigenvalue max iterations");
+  if (!change.is_null() && level.eigenvalue.hasRitzVector() && eigenvalueUpdateSteps_ > 0) {
+    level.eigenvalue.startFromLast(*change);
+    steps = eigenvalueUpdateSteps_;
+  } else {
+    level.eigenvalue.startFresh();
+  }
+  return smoother_.get<double>("chebyshev: boost factor") * level.eigenvalue.estimate(*level.op, steps);
+}
+
+void GeometricMultigridPreconditioner::buildFrom(std::size_t top, RCP<const CrsMatrix> change, bool reuse) {
+  std::vector<RCP<const Operator>> operators, smoothers;
+  std::vector<RCP<CrsMatrix>> prolongators, restrictions;
+  for (std::size_t l = 0; l < top; ++l) {
+    operators.push_back(levels_[l]->op);
+    smoothers.push_back(levels_[l]->smoother);
+    prolongators.push_back(levels_[l]->P);
+    restrictions.push_back(levels_[l]->R);
+  }
+  operators.push_back(levels_[top]->op = levels_[top]->A);
+  for (std::size_t l = top; l + 1 < levels_.size(); ++l) {
     Level& level = *levels_[l];
     RCP<CrsMatrix> coarseA;
     const RCP<const CrsMatrix> levelChange = change;
@@ -422,21 +505,12 @@ void GeometricMultigridPreconditioner::build(const RCP<CrsMatrix>& A, RCP<const 
       }
     }
     levels_[l + 1]->A = coarseA;
+    levels_[l + 1]->op = coarseA;
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: smoothers"));
-    level.smoother = rcp(new Chebyshev(level.A));
+    const auto chebyshev = rcp(new Chebyshev(level.A));
     Teuchos::ParameterList smoother = smoother_;
     level.eigenvalue.setMatrix(*level.A);
-    if (!smoother.isParameter("chebyshev: max eigenvalue")) {
-      int steps = smoother.get<int>("chebyshev: eigenvalue max iterations");
-      if (!levelChange.is_null() && level.eigenvalue.hasRitzVector() && eigenvalueUpdateSteps_ > 0) {
-        level.eigenvalue.startFromLast(*levelChange);
-        steps = eigenvalueUpdateSteps_;
-      } else {
-        level.eigenvalue.startFresh();
-      }
-      smoother.set("chebyshev: max eigenvalue", smoother.get<double>("chebyshev: boost factor") *
-                                                    level.eigenvalue.estimate(*level.A, steps));
-    }
+    smoother.set("chebyshev: max eigenvalue", maxEigenvalue(level, levelChange));
     // Each build makes a new smoother, whose matrix never changes. Told so, Ifpack2 13.2 skips
     // its own power method, which it otherwise runs in every compute() even when given the
     // max eigenvalue, and then ignores: a third of the setup time at 2D nx = 800. Given the
@@ -446,10 +520,11 @@ void GeometricMultigridPreconditioner::build(const RCP<CrsMatrix>& A, RCP<const 
     if (!smoother.isParameter("chebyshev: assume matrix does not change"))
       smoother.set("chebyshev: assume matrix does not change", true);
     smoother.set("chebyshev: operator inv diagonal", level.eigenvalue.inverseDiagonal());
-    level.smoother->setParameters(smoother);
-    level.smoother->initialize();
-    level.smoother->compute();
-    matrices.push_back(coarseA);
+    chebyshev->setParameters(smoother);
+    chebyshev->initialize();
+    chebyshev->compute();
+    level.smoother = chebyshev;
+    operators.push_back(coarseA);
     prolongators.push_back(level.P);
     restrictions.push_back(level.R);
     smoothers.push_back(level.smoother);
@@ -458,12 +533,13 @@ void GeometricMultigridPreconditioner::build(const RCP<CrsMatrix>& A, RCP<const 
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: coarsest level"));
     coarse_->compute(levels_.back()->A, reuse && !cycle_.is_null());
   }
-  cycle_ = rcp(new VCycle(matrices, smoothers, prolongators, restrictions, coarse_->getOperator()));
+  cycle_ = rcp(new VCycle(operators, smoothers, prolongators, restrictions, coarse_->getOperator()));
 }
 
 RCP<const CrsMatrix> GeometricMultigridPreconditioner::levelMatrix(int level) const {
   if (level < 0 || level >= static_cast<int>(levels_.size()) || levels_[level]->A.is_null())
-    throw Error("GeometricMultigridPreconditioner::levelMatrix: no such level, or compute() not called");
+    throw Error("GeometricMultigridPreconditioner::levelMatrix: no such level, or it is not assembled (no build "
+                "yet, or a fine level given as an operator)");
   return levels_[level]->A;
 }
 

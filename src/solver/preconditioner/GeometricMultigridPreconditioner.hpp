@@ -3,7 +3,8 @@
 // (for a box mesh, grids with every other vertex line of the one above, and its last, so half
 // the boxes per direction, one more for an odd count; a P_k space, k > 1, first
 // goes to P1 on its own mesh's grid), each a P1 space, joined by P1 interpolation P. The
-// coarse matrices are Galerkin products P^T A P, the smoother is Ifpack2's Chebyshev. The
+// coarse matrices are Galerkin products P^T A P, the smoother is Ifpack2's Chebyshev (on a
+// fine level given as an operator, computeForSum(), a ChebyshevSmoother of it). The
 // levels end at the first coarse grid with at most "direct solve size" unknowns, solved exactly
 // (gathered to rank 0 and factored), or at a grid whose coarser one would have fewer than
 // "coarsest size" unknowns or which has none; MueLu's algebraic multigrid, with the grid's
@@ -23,6 +24,7 @@
 #include <vector>
 
 #include <Teuchos_ParameterList.hpp>
+#include <Tpetra_CrsMatrix_decl.hpp>
 
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/solver/GeometricGrid.hpp"
@@ -52,6 +54,17 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
   // The coarse matrices are updated with the Galerkin products of `change` alone.
   void update(const RCP<CrsMatrix>& A, const CrsMatrix& change, bool reuse = false) override;
+
+  // The hierarchy for H = Q + C with the fine level left an operator: `H` applies it and
+  // `diagonal` is its diagonal; Q is the fine matrix (the constructor's pattern) and C, on Q's
+  // row map, is nonzero on few rows (A^T D A on the contact DOFs). No fine matrix is
+  // assembled: the fine smoother is a ChebyshevSmoother of H (reading the smoother list's
+  // degree, ratio, boost factor and max eigenvalue), and the first coarse matrix is
+  // P^T Q P + P^T C P, which later calls with C on the same graph update with the product of
+  // what changed in C. C is copied; H must stay valid while the cycle is used. Needs a
+  // geometric level. Collective.
+  void computeForSum(const RCP<const Operator>& H, const Vector& diagonal, const CrsMatrix& Q,
+                     const RCP<const CrsMatrix>& C, bool reuse = false);
   RCP<Operator> getOperator() const override;
 
   // Grids below the fine level (0: MueLu alone), and their global unknowns, finest first.
@@ -62,7 +75,8 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // The interpolation from level l + 1 to level l (l = 0: to the fine space). Coarse DOF
   // blockSize * v + c is component c at vertex v of that level's grid (GeometricGrid numbering).
   RCP<const CrsMatrix> prolongator(int level) const;
-  // The matrix of level l (0: the fine one given to compute(), then the Galerkin products).
+  // The matrix of level l (0: the fine one given to compute(), none after computeForSum();
+  // then the Galerkin products).
   // After the first compute(), a fine matrix on the previous one's graph updates them in
   // place with the products of the entries that changed.
   RCP<const CrsMatrix> levelMatrix(int level) const;
@@ -75,10 +89,22 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   bool directCoarsest_ = false;
   std::unique_ptr<MultilevelPreconditioner> coarse_;
   RCP<Operator> cycle_;
+  // The C of the last computeForSum(): its graph and values (null after a compute()).
+  RCP<const CrsMatrix::crs_graph_type> lastTerm_;
+  std::vector<double> lastTermValues_;
+
   // Builds the levels for A; with `change`, A's entries that changed since the last build,
   // by updating the coarse matrices with its Galerkin products. `reuse` goes to the coarsest
   // level's compute().
   void build(const RCP<CrsMatrix>& A, RCP<const CrsMatrix> change, bool reuse);
+  // The same below level `top`, whose matrix is set (`change`: what changed in it), keeping
+  // the smoothers and operators above it.
+  void buildFrom(std::size_t top, RCP<const CrsMatrix> change, bool reuse);
+  // The smoother's max eigenvalue for the level's operator: the smoother list's, or the
+  // boosted Lanczos estimate, updated from the last Ritz vector after a `change`.
+  double maxEigenvalue(Level& level, const RCP<const CrsMatrix>& change);
+  RCP<const CrsMatrix> changeOfTerm(const CrsMatrix& C) const;
+  void rememberTerm(const RCP<const CrsMatrix>& C);
 };
 
 }  // namespace signorini

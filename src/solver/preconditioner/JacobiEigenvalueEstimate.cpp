@@ -25,15 +25,24 @@ double startValue(GlobalOrdinal id) {
 
 }  // namespace
 
+void JacobiEigenvalueEstimate::allocate(const RCP<const Map>& map) {
+  if (!diagonal_.is_null() && diagonal_->getMap()->isSameAs(*map)) return;
+  diagonal_ = rcp(new Vector(map, false));
+  inverseDiagonal_ = rcp(new Vector(map, false));
+  product_ = rcp(new Vector(map, false));
+  ritz_ = Teuchos::null;
+  graph_ = Teuchos::null;
+}
+
+void JacobiEigenvalueEstimate::setDiagonal(const Vector& diagonal) {
+  allocate(diagonal.getMap());
+  graph_ = Teuchos::null;
+  diagonal_->assign(diagonal);
+  inverseDiagonal_->reciprocal(*diagonal_);
+}
+
 void JacobiEigenvalueEstimate::setMatrix(const CrsMatrix& A) {
-  const auto map = A.getRowMap();
-  if (diagonal_.is_null() || !diagonal_->getMap()->isSameAs(*map)) {
-    diagonal_ = rcp(new Vector(map, false));
-    inverseDiagonal_ = rcp(new Vector(map, false));
-    product_ = rcp(new Vector(map, false));
-    ritz_ = Teuchos::null;
-    graph_ = Teuchos::null;
-  }
+  allocate(A.getRowMap());
   if (graph_ != A.getCrsGraph()) {
     graph_ = A.getCrsGraph();
     offsets_ = Offsets(Kokkos::view_alloc(Kokkos::WithoutInitializing, "diagonal offsets"), A.getNodeNumRows());
@@ -60,8 +69,8 @@ void JacobiEigenvalueEstimate::startFromLast(const CrsMatrix& change) {
   for (const auto& [row, value] : added) r[row] += scale * value;
 }
 
-double JacobiEigenvalueEstimate::estimate(const CrsMatrix& A, int steps) {
-  if (diagonal_.is_null()) throw Error("JacobiEigenvalueEstimate::estimate called before setMatrix()");
+double JacobiEigenvalueEstimate::estimate(const Operator& A, int steps) {
+  if (diagonal_.is_null()) throw Error("JacobiEigenvalueEstimate::estimate called before setMatrix() or setDiagonal()");
   const auto map = diagonal_->getMap();
   const std::size_t n = map->getNodeNumElements();
   const Comm& comm = *map->getComm();

@@ -22,10 +22,12 @@ class JacobiEigenvalueEstimate {
  public:
   // Reads A's diagonal (positive on every row); the matrix of every later call has A's row map.
   void setMatrix(const CrsMatrix& A);
+  // The same for an operator known by its diagonal (positive on every row).
+  void setDiagonal(const Vector& diagonal);
 
-  // The largest Ritz value after `steps` Lanczos steps, for the matrix last set, from the
-  // start chosen below (by default a fresh one). Collective.
-  double estimate(const CrsMatrix& A, int steps);
+  // The largest Ritz value after `steps` Lanczos steps, for the matrix or operator whose
+  // diagonal was last set, from the start chosen below (by default a fresh one). Collective.
+  double estimate(const Operator& A, int steps);
 
   // The next start is a vector that depends on the global row ids alone, so that the
   // estimate is the same on any number of ranks.
@@ -41,6 +43,7 @@ class JacobiEigenvalueEstimate {
   RCP<const Vector> inverseDiagonal() const { return inverseDiagonal_; }
 
  private:
+  void allocate(const RCP<const Map>& map);  // the vectors, for rows on `map`
   using Offsets = Kokkos::View<std::size_t*, CrsMatrix::device_type>;
   RCP<const CrsMatrix::crs_graph_type> graph_;  // the graph offsets_ index
   Offsets offsets_;                             // of the diagonal entries in graph_'s rows

@@ -262,6 +262,51 @@ TEST(GeometricMultigrid, UpdatedCoarseMatricesEqualFreshProducts) {
   }
 }
 
+// The fine level left the operator Q + C (computeForSum, C = A^T D A) gives the hierarchy
+// of the assembled Q + C: the same coarse matrices and the same cycle (its fine smoother is
+// the same polynomial, applied through the operator), also after C changes, when the first
+// coarse matrix is updated in place with the product of the change.
+TEST(GeometricMultigrid, FineOperatorGivesTheHierarchyOfTheAssembledSum) {
+  for (int dim : {2, 3}) {
+    ContactBox box(dim, dim == 2 ? 16 : 8);
+    const ContactQP& qp = box.problem.qp;
+    Vector diagonalOfQ(qp.Q->getRangeMap());
+    qp.Qmatrix()->getLocalDiagCopy(diagonalOfQ);
+    // Fresh eigenvalue estimates at every build, so that the cycles can be compared.
+    GeometricMultigridPreconditioner sum = multigrid(qp, 50, 0);
+    ASSERT_GE(sum.geometricLevels(), 2);
+    RCP<const CrsMatrix> firstCoarse;
+    for (int step : {0, 2, 7}) {
+      const std::string label = std::to_string(dim) + "D step " + std::to_string(step);
+      const Vector D = box.weights(step);
+      box.H.setWeights(D);
+      const RCP<const CrsMatrix> C = box.H.contactTerm(D);
+      Vector diagonal(diagonalOfQ.getMap());
+      C->getLocalDiagCopy(diagonal);
+      diagonal.update(1.0, diagonalOfQ, 1.0);
+      sum.computeForSum(Teuchos::rcpFromRef(box.H), diagonal, *qp.Qmatrix(), C);
+      if (firstCoarse.is_null()) firstCoarse = sum.levelMatrix(1);
+      EXPECT_EQ(sum.levelMatrix(1).get(), firstCoarse.get()) << label << ": not updated in place";
+      GeometricMultigridPreconditioner assembled = multigrid(qp, 50, 0);
+      assembled.compute(box.H.assemble());
+      for (int l = 1; l <= sum.geometricLevels(); ++l) {
+        Vector x(assembled.levelMatrix(l)->getDomainMap()), a(x.getMap()), b(x.getMap());
+        x.randomize();
+        sum.levelMatrix(l)->apply(x, a);
+        assembled.levelMatrix(l)->apply(x, b);
+        a.update(-1.0, b, 1.0);
+        EXPECT_LT(a.norm2(), 1e-12 * b.norm2()) << label << ", level " << l;
+      }
+      Vector x(qp.Q->getDomainMap()), a(x.getMap()), b(x.getMap());
+      x.randomize();
+      sum.getOperator()->apply(x, a);
+      assembled.getOperator()->apply(x, b);
+      a.update(-1.0, b, 1.0);
+      EXPECT_LT(a.norm2(), 1e-9 * b.norm2()) << label;
+    }
+  }
+}
+
 // After a Galerkin update the smoothers' eigenvalue estimates take 3 Lanczos steps from the
 // previous Ritz vectors instead of 15 from scratch, and must be as good: CG needs no more
 // iterations than with a fresh build, at every step of a sequence whose weights grow by two
