@@ -25,3 +25,4 @@
 #include "signorini/solver/IterationObserver.hpp"
 #include "signorini/solver/KKTMeasures.hpp"
 #include "signorini/solver/SolveResult.hpp"
+#include "signorini/solver/StiffnessOperator.hpp"

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <optional>
 #include <sstream>
 
 #include <Kokkos_DualView.hpp>
@@ -15,6 +16,7 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "assembly/SummedRows.hpp"
 #include "core/Collectives.hpp"
 #include "fe/ElasticityElement.hpp"
 #include "signorini/core/Error.hpp"
@@ -131,19 +133,20 @@ RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
 struct LocalIndices {
   std::vector<LocalOrdinal> row, column, entry;
 };
-LocalIndices localIndices(const DistributedSpace& ds, const FEMatrix& K, const Vector& overlapVector) {
+// Without a matrix (K null), the vector's alone.
+LocalIndices localIndices(const DistributedSpace& ds, const FEMatrix* K, const Vector& overlapVector) {
   const int dim = ds.dim();
-  const long long numNodes = ds.space().numNodes();
-  LocalIndices local{std::vector<LocalOrdinal>(dim * numNodes), std::vector<LocalOrdinal>(dim * numNodes),
-                     std::vector<LocalOrdinal>(dim * numNodes)};
-  const Map &rows = *K.getRowMap(), &columns = *K.getColMap(), &entries = *overlapVector.getMap();
-  for (long long node = 0; node < numNodes; ++node)
-    for (int c = 0; c < dim; ++c) {
-      const GlobalOrdinal dof = dim * ds.globalNode(node) + c;
-      local.row[dim * node + c] = rows.getLocalElement(dof);
-      local.column[dim * node + c] = columns.getLocalElement(dof);
-      local.entry[dim * node + c] = entries.getLocalElement(dof);
-    }
+  const std::size_t numDofs = dim * ds.space().numNodes();
+  LocalIndices local{std::vector<LocalOrdinal>(K ? numDofs : 0), std::vector<LocalOrdinal>(K ? numDofs : 0),
+                     std::vector<LocalOrdinal>(numDofs)};
+  const Map& entries = *overlapVector.getMap();
+  for (std::size_t i = 0; i < numDofs; ++i) {
+    const GlobalOrdinal dof = dim * ds.globalNode(i / dim) + i % dim;
+    local.entry[i] = entries.getLocalElement(dof);
+    if (!K) continue;
+    local.row[i] = K->getRowMap()->getLocalElement(dof);
+    local.column[i] = K->getColMap()->getLocalElement(dof);
+  }
   return local;
 }
 
@@ -466,7 +469,40 @@ RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const DistributedSpace& ds
   return rcp(new MatrixFreeElasticityOperator(ds, problem.material, dirichletData(ds, problem).fixed));
 }
 
-ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition& problem) {
+RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDefinition& problem,
+                                     const GeometricGrid& grid) {
+  const SimplexMesh& mesh = ds.mesh();
+  const int dim = ds.dim(), n = dim * (dim + 1);
+  const std::vector<char> fixed = dirichletData(ds, problem).fixed;
+  // Space nodes below numVertices() are the mesh's vertices, in the same order.
+  std::vector<long long> gridVertex(mesh.numVertices());
+  for (long long v = 0; v < mesh.numVertices(); ++v) {
+    gridVertex[v] = grid.vertexAt(&ds.space().nodeCoordinates()[dim * v]);
+    if (gridVertex[v] < 0) throw Error("assembleGridStiffness: a mesh vertex is not a vertex of " + grid.description());
+  }
+  std::vector<GlobalOrdinal> rowIds(dim * mesh.numVertices());
+  for (std::size_t i = 0; i < rowIds.size(); ++i) rowIds[i] = dim * gridVertex[i / dim] + i % dim;
+  SummedRows rows(std::move(rowIds));
+  const LagrangeBasis linear(dim, 1);
+  std::vector<double> vertexCoords((dim + 1) * dim), Ke;
+  for (long long cell = 0; cell < mesh.numCells(); ++cell) {
+    mesh.cellVertexCoordinates(cell, vertexCoords.data());
+    elasticityStiffness(linear, vertexCoords.data(), problem.material, Ke);
+    const long long* vertices = ds.space().cellNodes(cell);
+    const auto dof = [&](int a) { return dim * vertices[a / dim] + a % dim; };
+    for (int a = 0; a < n; ++a) {
+      if (fixed[dof(a)]) continue;
+      for (int b = 0; b < n; ++b)
+        if (!fixed[dof(b)]) rows.add(dof(a), dim * gridVertex[vertices[b / dim]] + b % dim, Ke[a * n + b]);
+    }
+  }
+  for (long long v = 0; v < mesh.numVertices(); ++v)
+    for (int c = 0; c < dim; ++c)
+      if (ds.ownsNode(v) && fixed[dim * v + c]) rows.add(dim * v + c, dim * gridVertex[v] + c, 1.0);
+  return rows.onOwners(ds.comm());
+}
+
+ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition& problem, bool assembleStiffness) {
   const LagrangeSpace& space = ds.space();
   const SimplexMesh& mesh = ds.mesh();
   const int dim = ds.dim(), npc = space.nodesPerCell(), n = dim * npc;
@@ -474,13 +510,13 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   if (problem.bodyForce.size() != static_cast<std::size_t>(dim))
     throw InputError("Problem: the body force needs " + std::to_string(dim) + " components");
 
-  auto K = rcp(new FEMatrix(elasticityGraph(ds)));
+  const RCP<FEMatrix> K = assembleStiffness ? rcp(new FEMatrix(elasticityGraph(ds))) : Teuchos::null;
   Vector bOverlap(ds.overlapDofMap());
 
-  K->beginAssembly();
+  if (K) K->beginAssembly();
   // Local rows and columns of the overlap matrix, and local entries of bOverlap, per space
   // DOF: looked up once here, not for each of the (dim * npc)^2 entries of every cell.
-  const LocalIndices local = localIndices(ds, *K, bOverlap);
+  const LocalIndices local = localIndices(ds, K.get(), bOverlap);
   std::vector<double> vertexCoords((dim + 1) * dim), Ke, Fe, value(n);
   std::vector<char> fixed(n);
   std::vector<LocalOrdinal> rows(n), cols(n), entries(n);
@@ -496,8 +532,10 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
     for (int i = 0; i < npc; ++i)
       for (int c = 0; c < dim; ++c) {
         const long long spaceDof = dim * nodes[i] + c;
-        rows[dim * i + c] = local.row[spaceDof];
-        cols[dim * i + c] = local.column[spaceDof];
+        if (K) {
+          rows[dim * i + c] = local.row[spaceDof];
+          cols[dim * i + c] = local.column[spaceDof];
+        }
         entries[dim * i + c] = local.entry[spaceDof];
         fixed[dim * i + c] = dirichlet.fixed[spaceDof];
         value[dim * i + c] = dirichlet.value[spaceDof];
@@ -506,13 +544,14 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
 
   auto bData = bOverlap.getDataNonConst();
   {
-    const ElementMatrixFill fill(*K);
+    std::optional<ElementMatrixFill> fill;
+    if (K) fill.emplace(*K);
     for (long long cell = 0; cell < mesh.numCells(); ++cell) {
       gatherCell(cell);
       elasticityStiffness(space.basis(), vertexCoords.data(), problem.material, Ke);
       bodyForceLoad(space.basis(), vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
       eliminatePrescribed(fixed, value, n, Ke, Fe);
-      fill.add(dim, npc, rows.data(), cols.data(), Ke.data());
+      if (fill) fill->add(dim, npc, rows.data(), cols.data(), Ke.data());
       for (int i = 0; i < n; ++i) bData[entries[i]] += Fe[i];
     }
   }
@@ -533,13 +572,15 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   const auto& overlap = ds.overlapSpaceNodes();
   const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
   const double one = 1.0;
-  for (std::size_t i = 0; i < numOwned; ++i)
-    for (int c = 0; c < dim; ++c)
-      if (dirichlet.fixed[dim * overlap[i] + c]) {
-        const GlobalOrdinal dof = dim * ds.globalNode(overlap[i]) + c;
-        K->sumIntoGlobalValues(dof, 1, &one, &dof);
-      }
-  K->endAssembly();
+  if (K) {
+    for (std::size_t i = 0; i < numOwned; ++i)
+      for (int c = 0; c < dim; ++c)
+        if (dirichlet.fixed[dim * overlap[i] + c]) {
+          const GlobalOrdinal dof = dim * ds.globalNode(overlap[i]) + c;
+          K->sumIntoGlobalValues(dof, 1, &one, &dof);
+        }
+    K->endAssembly();
+  }
 
   auto b = rcp(new Vector(ds.ownedDofMap()));
   b->doExport(bOverlap, Export(ds.overlapDofMap(), ds.ownedDofMap()), Tpetra::ADD);
@@ -567,7 +608,7 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   }
 
   ContactQP qp;
-  qp.Q = K;
+  if (K) qp.Q = K;
   qp.b = b;
   qp.A = constraints.A;
   qp.d = constraints.d;

@@ -10,10 +10,22 @@
 #include "assembly/MatrixFreeElasticityOperator.hpp"
 #include "signorini/assembly/ProblemDefinition.hpp"
 #include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/GeometricGrid.hpp"
 
 namespace signorini {
 
-ContactQP assembleContactQP(const DistributedSpace& space, const ProblemDefinition& problem);
+// With `assembleStiffness` false, Q is left null (for a matrix-free Q) and only the rest is
+// assembled.
+ContactQP assembleContactQP(const DistributedSpace& space, const ProblemDefinition& problem,
+                            bool assembleStiffness = true);
+
+// The P1 stiffness of the space's mesh on the vertices of `grid`, the mesh's own P1 grid: DOF
+// dim * (grid vertex) + component, prescribed DOFs (those of the P_k space at the vertices)
+// eliminated to unit rows. It is P^T Q P for Q of assembleContactQP and P the P1
+// interpolation from the grid that the geometric multigrid uses (ContactQP::gridStiffness).
+// Rows on a one-to-one map of the vertices of each rank's cells. Collective.
+RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& space, const ProblemDefinition& problem,
+                                     const GeometricGrid& grid);
 
 // Q of assembleContactQP applied cell by cell, with the same Dirichlet elimination. Keeps a
 // reference to space, which must outlive it.

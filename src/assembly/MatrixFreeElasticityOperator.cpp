@@ -1,9 +1,13 @@
 #include "assembly/MatrixFreeElasticityOperator.hpp"
 
+#include <utility>
+
+#include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "assembly/SummedRows.hpp"
 #include "fe/ElasticityElement.hpp"
 #include "fe/SimplexQuadrature.hpp"
 
@@ -12,7 +16,7 @@ namespace signorini {
 MatrixFreeElasticityOperator::MatrixFreeElasticityOperator(const DistributedSpace& ds,
                                                            const IsotropicMaterial& material,
                                                            const std::vector<char>& fixedSpaceDofs)
-    : ds_(ds), lambda_(material.effectiveLame1(ds.dim())), mu_(material.lame2()) {
+    : ds_(ds), material_(material), lambda_(material.effectiveLame1(ds.dim())), mu_(material.lame2()) {
   const LagrangeSpace& space = ds.space();
   const LagrangeBasis& basis = space.basis();
   const int dim = ds.dim(), npc = space.nodesPerCell();
@@ -165,6 +169,44 @@ void MatrixFreeElasticityOperator::apply(const MultiVector& X, MultiVector& Y, T
     for (LocalOrdinal i : ownedFixed_) out[i] = in[i];
   }
   Y.update(alpha, *result_, beta);
+}
+
+std::vector<char> MatrixFreeElasticityOperator::prescribedDofs() const {
+  std::vector<char> prescribed(ds_.ownedDofMap()->getNodeNumElements(), 0);
+  for (LocalOrdinal i : ownedFixed_) prescribed[i] = 1;
+  return prescribed;
+}
+
+RCP<CrsMatrix> MatrixFreeElasticityOperator::selectedRows(const Vector& selected) const {
+  const int dim = ds_.dim(), npc = ds_.space().nodesPerCell(), n = dim * npc;
+  const Map& overlapDofs = *ds_.overlapDofMap();
+  Vector overlapSelected(ds_.overlapDofMap());
+  overlapSelected.doImport(selected, *toOverlap_, Tpetra::INSERT);
+  const auto chosen = overlapSelected.getData();
+  std::vector<GlobalOrdinal> ids(overlapDofs.getNodeNumElements());
+  for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = overlapDofs.getGlobalElement(i);
+  SummedRows rows(std::move(ids));
+  // The element matrices of the cells that hold a selected DOF, prescribed rows and columns
+  // left out as in the symmetric elimination.
+  std::vector<double> vertexCoords((dim + 1) * dim), Ke;
+  const auto dofOf = [&](const int* nodes, int a) { return dim * nodes[a / dim] + a % dim; };
+  for (long long cell = 0; cell < ds_.mesh().numCells(); ++cell) {
+    const int* nodes = &cellNodes_[cell * npc];
+    bool touched = false;
+    for (int a = 0; a < n && !touched; ++a) touched = chosen[dofOf(nodes, a)] != 0.0;
+    if (!touched) continue;
+    ds_.mesh().cellVertexCoordinates(cell, vertexCoords.data());
+    elasticityStiffness(ds_.space().basis(), vertexCoords.data(), material_, Ke);
+    for (int a = 0; a < n; ++a) {
+      const int row = dofOf(nodes, a);
+      if (chosen[row] == 0.0 || fixed_[row]) continue;
+      for (int b = 0; b < n; ++b)
+        if (!fixed_[dofOf(nodes, b)]) rows.add(row, overlapDofs.getGlobalElement(dofOf(nodes, b)), Ke[a * n + b]);
+    }
+  }
+  for (LocalOrdinal i : ownedFixed_)  // the unit diagonal of a prescribed DOF, from its owner
+    if (chosen[i] != 0.0) rows.add(i, overlapDofs.getGlobalElement(i), 1.0);
+  return rows.onOwners(ds_.ownedDofMap());
 }
 
 std::size_t MatrixFreeElasticityOperator::bytes() const {

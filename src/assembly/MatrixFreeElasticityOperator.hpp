@@ -9,15 +9,14 @@
 #include <cstddef>
 #include <vector>
 
-#include <Tpetra_Operator.hpp>
-
 #include "assembly/DistributedSpace.hpp"
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/fe/IsotropicMaterial.hpp"
+#include "signorini/solver/StiffnessOperator.hpp"
 
 namespace signorini {
 
-class MatrixFreeElasticityOperator : public Operator {
+class MatrixFreeElasticityOperator : public StiffnessOperator {
  public:
   // fixedSpaceDofs: 1 for a prescribed DOF, indexed dim * (node of ds.space()) + component.
   // Keeps a reference to ds, which must outlive the operator.
@@ -35,7 +34,13 @@ class MatrixFreeElasticityOperator : public Operator {
   // diagonal = diag(Q) on the owned DOFs, cell by cell: the entry of DOF (node a, component c)
   // is the integral of mu (|grad phi_a|^2 + (d_c phi_a)^2) + lambda (d_c phi_a)^2; 1 on
   // prescribed DOFs. What a Jacobi or Chebyshev smoother of Q needs, without Q. Collective.
-  void getLocalDiagCopy(Vector& diagonal) const;
+  void getLocalDiagCopy(Vector& diagonal) const override;
+
+  std::vector<char> prescribedDofs() const override;
+
+  // The element matrices of the cells that hold a selected DOF, their selected rows summed
+  // over the ranks' cells (the entries of the assembled Q, summed in another order).
+  RCP<CrsMatrix> selectedRows(const Vector& selected) const override;
 
   // Heap bytes of what the operator stores (per-cell data, tables, work vectors).
   std::size_t bytes() const;
@@ -47,6 +52,7 @@ class MatrixFreeElasticityOperator : public Operator {
   void diagonalOfCells(double* d) const;
 
   const DistributedSpace& ds_;
+  IsotropicMaterial material_;
   double lambda_, mu_;
   int numPoints_ = 0;
   std::vector<double> weights_;          // reference quadrature weights

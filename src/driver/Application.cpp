@@ -117,7 +117,8 @@ void exportQp(const AssembledProblem& p, const std::string& directory, const Com
   if (comm.getRank() == 0) std::filesystem::create_directories(directory);
   comm.barrier();
   auto Q = p.qp.Qmatrix();
-  if (Q.is_null()) throw InputError("--export-qp needs Q as an assembled matrix");
+  if (Q.is_null())
+    throw InputError("--export-qp needs Q as an assembled matrix: set Problem/stiffness: operator to \"assembled\"");
   Writer::writeSparseFile(directory + "/Q.mtx", Q, "Q", "stiffness, Dirichlet DOFs eliminated symmetrically");
   Writer::writeSparseFile(directory + "/A.mtx", p.qp.A, "A", "contact constraints A v <= d");
   Writer::writeDenseFile(directory + "/b.mtx", p.qp.b, "b", "load vector");

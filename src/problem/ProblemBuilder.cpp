@@ -88,14 +88,19 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: assembly"));
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::assembly);
     assembly.start(true);
-    result.qp = assembleContactQP(*result.space, result.definition);
-    if (result.definition.matrixFreeStiffness) {
+    const ProblemDefinition& def = result.definition;
+    const bool box = def.meshType == "box";
+    // A matrix-free P_k stiffness (k > 1) on a box mesh is never assembled: the geometric
+    // multigrid starts from the P1 stiffness of the same mesh. P1 and Gmsh meshes keep Q
+    // assembled for the preconditioners (the multigrid's Galerkin products, MueLu).
+    const bool onlyGridStiffness = def.matrixFreeStiffness && box && def.degree > 1;
+    result.qp = assembleContactQP(*result.space, def, !onlyGridStiffness);
+    if (def.matrixFreeStiffness) {
       result.qp.Qassembled = result.qp.Qmatrix();
-      result.qp.Q = matrixFreeStiffness(*result.space, result.definition);
+      result.qp.Q = matrixFreeStiffness(*result.space, def);
     }
-    if (result.definition.meshType == "box")
-      result.qp.grid = std::make_shared<BoxGrid>(result.definition.dim, result.definition.cells,
-                                                 result.definition.lengths);
+    if (box) result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
+    if (onlyGridStiffness) result.qp.gridStiffness = assembleGridStiffness(*result.space, def, *result.qp.grid);
     assembly.stop();
   }
   result.setupSeconds = maxOverRanks(*comm, setup.totalElapsedTime());

@@ -76,8 +76,9 @@ ParameterList validProblemParameters() {
         "the benchmark family)",
         range(-1, 30));
   p.set("stiffness: operator", "assembled",
-        "\"assembled\": Q is a sparse matrix; \"matrix-free\": Q is applied cell by cell "
-        "(the assembled matrix is still built for the preconditioner)",
+        "\"assembled\": Q is a sparse matrix; \"matrix-free\": Q is applied cell by cell. On a box mesh of "
+        "degree 2 or 3 no Q is assembled then (the geometric multigrid starts from the mesh's P1 stiffness); "
+        "P1 and Gmsh meshes still assemble Q for the preconditioner",
         choices({"assembled", "matrix-free"}));
 
   ParameterList& dirichlet = p.sublist("Dirichlet", false,

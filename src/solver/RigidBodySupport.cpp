@@ -13,6 +13,7 @@
 
 #include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
+#include "solver/linear/StiffnessParts.hpp"
 
 namespace signorini {
 namespace {
@@ -70,11 +71,9 @@ RCP<MultiVector> combine(const MultiVector& U, const Dense& Y, int count) {
 // The stiffness scale of Q: its mean diagonal entry, or the Rayleigh quotient of a random
 // vector (the same in expectation) when Q is an operator only.
 double stiffnessScale(const ContactQP& qp) {
+  const StiffnessParts stiffness(qp);
+  if (stiffness.available()) return stiffness.diagonal()->meanValue();
   Vector x(qp.Q->getDomainMap());
-  if (qp.Qmatrix()) {
-    qp.Qmatrix()->getLocalDiagCopy(x);
-    return x.meanValue();
-  }
   x.randomize();
   Vector Qx(qp.Q->getRangeMap());
   qp.Q->apply(x, Qx);

@@ -1,6 +1,7 @@
 // The matrix-free stiffness applies the assembled Q to round-off: P1-P3, 2D and 3D, with
-// prescribed DOFs, several vectors at once, and the alpha/beta contract; its diagonal is the
-// assembled one; the paper's problems solved with it reach the assembled path's optimal values.
+// prescribed DOFs, several vectors at once, and the alpha/beta contract; its diagonal, its
+// prescribed DOFs and its selected rows are the assembled ones; the paper's problems and P2/P3
+// boxes (with no Q assembled at all) solved with it reach the assembled path's optimal values.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,8 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include "assembly/ElasticityAssembler.hpp"
+#include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
+#include "signorini/core/Error.hpp"
 #include "signorini/problem/ProblemParameters.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
 #include "support/TestProblems.hpp"
@@ -82,6 +85,34 @@ TEST_P(MatrixFreeElasticityOperatorTest, DiagonalIsTheAssembledOne) {
   EXPECT_LT(got.normInf(), 1e-13 * scale);
 }
 
+TEST_P(MatrixFreeElasticityOperatorTest, SelectedRowsAndPrescribedDofsAreTheAssembledOnes) {
+  const Case k = GetParam();
+  AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), Tpetra::getDefaultComm());
+  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(*problem.space, problem.definition);
+  const CrsMatrix& K = *problem.qp.Qmatrix();
+  EXPECT_EQ(Q->prescribedDofs(), GeometricMultigridPreconditioner::prescribedRows(K));
+
+  // Every third DOF: rows of free and prescribed DOFs, owned next to other ranks' DOFs.
+  Vector selected(K.getRowMap());
+  {
+    auto s = selected.getDataNonConst();
+    for (std::size_t i = 0; i < selected.getLocalLength(); ++i) s[i] = K.getRowMap()->getGlobalElement(i) % 3 == 0;
+  }
+  const RCP<const CrsMatrix> rows = Q->selectedRows(selected);
+  ASSERT_TRUE(rows->getRowMap()->isSameAs(*K.getRowMap()));
+  Vector x(K.getDomainMap()), expected(K.getRangeMap()), got(K.getRangeMap());
+  x.randomize();
+  K.apply(x, expected);
+  expected.elementWiseMultiply(1.0, selected, expected, 0.0);
+  rows->apply(x, got);
+  got.update(-1.0, expected, 1.0);
+  EXPECT_LT(got.normInf(), 1e-13 * expected.normInf());
+  std::size_t entries = 0;  // the other rows are empty
+  for (std::size_t i = 0; i < rows->getNodeNumRows(); ++i)
+    if (selected.getData()[i] == 0.0) entries += rows->getNumEntriesInLocalRow(static_cast<LocalOrdinal>(i));
+  EXPECT_EQ(entries, 0u);
+}
+
 INSTANTIATE_TEST_SUITE_P(Degrees, MatrixFreeElasticityOperatorTest,
                          ::testing::Values(Case{2, 1}, Case{2, 2}, Case{2, 3}, Case{3, 1}, Case{3, 2}, Case{3, 3}),
                          [](const ::testing::TestParamInfo<Case>& info) {
@@ -102,6 +133,40 @@ TEST(MatrixFreeElasticityOperator, SolvesThePaperProblemsToTheAssembledOptimalVa
     EXPECT_NEAR(f.objective, a.objective, 1e-9 * std::fabs(a.objective)) << name;
     EXPECT_LE(std::abs(f.outerIterations - a.outerIterations), 1) << name;
   }
+}
+
+// A P2 or P3 box, matrix-free: no Q is assembled (the geometric multigrid starts from the
+// mesh's P1 stiffness, the contact correction from Q's contact rows), and the solve reaches
+// the assembled path's optimal value with about as many CG iterations.
+TEST(MatrixFreeElasticityOperator, SolvesP2AndP3BoxesWithoutAssemblingQ) {
+  auto comm = Tpetra::getDefaultComm();
+  for (const Case k : {Case{2, 2}, Case{2, 3}, Case{3, 2}, Case{3, 3}}) {
+    const std::string name = std::to_string(k.dim) + "D P" + std::to_string(k.degree);
+    Teuchos::ParameterList definition = contactBoxProblem(k.dim, k.dim == 2 ? 12 : 4);
+    definition.set("element: degree", k.degree);
+    definition.set("body force: " + std::string(k.dim == 2 ? "y" : "z"), "-0.05");
+    const AssembledProblem assembled = buildProblem(definition, comm);
+    definition.set("stiffness: operator", "matrix-free");
+    const AssembledProblem matrixFree = buildProblem(definition, comm);
+    EXPECT_TRUE(matrixFree.qp.Qmatrix().is_null()) << name;
+    ASSERT_FALSE(matrixFree.qp.gridStiffness.is_null()) << name;
+    const SolveResult a = InteriorPointSolver(Teuchos::ParameterList()).solve(assembled.qp);
+    const SolveResult f = InteriorPointSolver(Teuchos::ParameterList()).solve(matrixFree.qp);
+    ASSERT_TRUE(a.converged() && f.converged()) << name;
+    EXPECT_NEAR(f.objective, a.objective, 1e-9 * std::fabs(a.objective)) << name;
+    EXPECT_LE(f.krylovIterations, 1.5 * a.krylovIterations) << name;
+  }
+}
+
+// Preconditioners that would need Q assembled are refused with a message, not run.
+TEST(MatrixFreeElasticityOperator, RefusesAnAlgebraicHierarchyWithoutQ) {
+  Teuchos::ParameterList definition = contactBoxProblem(2, 6);
+  definition.set("element: degree", 2);
+  definition.set("stiffness: operator", "matrix-free");
+  const AssembledProblem problem = buildProblem(definition, Tpetra::getDefaultComm());
+  Teuchos::ParameterList solver;
+  solver.sublist("Preconditioner").set("hierarchy", "algebraic");
+  EXPECT_THROW(InteriorPointSolver(solver).solve(problem.qp), InputError);
 }
 
 }  // namespace

@@ -40,7 +40,7 @@ struct ProblemDefinition {
   IsotropicMaterial material;
   std::vector<Expression> bodyForce;  ///< dim components
   int loadQuadratureDegree = 5;
-  bool matrixFreeStiffness = false;  ///< Q applied cell by cell, the assembled Q kept for preconditioning
+  bool matrixFreeStiffness = false;  ///< Q applied cell by cell (assembled as well for P1 and Gmsh meshes)
   std::vector<BoundaryField> dirichlet, traction;
   std::string contactBoundary;
   std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body

@@ -15,7 +15,9 @@ namespace signorini {
 /// caller's: Q and b in force per displacement and force, d in displacement; the multipliers
 /// of the solution are then forces (nodal constraints) or pressures (weighted gaps).
 struct ContactQP {
-  RCP<const Operator> Q;               ///< symmetric positive definite; a CrsMatrix enables AMG
+  /// symmetric positive definite: a CrsMatrix, or a StiffnessOperator (matrix-free), or any
+  /// Operator (then Qassembled, or no preconditioner)
+  RCP<const Operator> Q;
   RCP<const Vector> b;                 ///< on Q's domain map
   RCP<const CrsMatrix> A;              ///< m x n: range map = constraints, domain map = Q's domain map
   RCP<const Vector> d;                 ///< on A's range map
@@ -26,6 +28,11 @@ struct ContactQP {
   /// optional: Q assembled, when Q is an operator of its own (matrix-free): the
   /// preconditioners and scale estimates use it, every application of Q uses Q.
   RCP<const CrsMatrix> Qassembled;
+  /// optional: P^T Q P for P the P1 interpolation from the vertices of `grid` to Q's DOFs,
+  /// DOF blockSize * vertex + component, any one-to-one row map, prescribed DOFs as unit rows
+  /// (for a Lagrange P_k space, k > 1, the P1 stiffness of its mesh). With a StiffnessOperator
+  /// Q on such a space, the geometric multigrid starts from it and Q is never assembled.
+  RCP<const CrsMatrix> gridStiffness;
 
   /// Q as an assembled matrix: Qassembled if given, else Q if it is a CrsMatrix, else null.
   RCP<const CrsMatrix> Qmatrix() const;

@@ -17,6 +17,7 @@
 #include "solver/RigidBodySupport.hpp"
 #include "solver/ipm/InteriorPointMethods.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
+#include "solver/linear/StiffnessParts.hpp"
 
 namespace signorini {
 
@@ -175,7 +176,11 @@ bool hasRigidBodyMotion(const ContactQP& qp) {
   std::vector<double> modeNorms(qp.nullspace->getNumVectors()), residualNorms(modeNorms.size());
   qp.nullspace->normInf(modeNorms);
   Qr.normInf(residualNorms);
-  const double scale = qp.Qmatrix() ? qp.Qmatrix()->getFrobeniusNorm() : 1.0;
+  // Q's Frobenius norm, or that of its diagonal when Q is matrix-free (a few times smaller).
+  const StiffnessParts stiffness(qp);
+  const double scale = qp.Qmatrix()     ? qp.Qmatrix()->getFrobeniusNorm()
+                       : stiffness.available() ? stiffness.diagonal()->norm2()
+                                             : 1.0;
   for (std::size_t k = 0; k < modeNorms.size(); ++k)
     if (residualNorms[k] <= 1e-12 * scale * modeNorms[k]) return true;
   return false;
@@ -188,8 +193,9 @@ ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, con
   ProblemScales scales;
   // Q is singular when only the contact holds the body: then estimate with every constraint
   // held by a spring of its own stiffness q_i.
-  const bool springs = qp.A->getGlobalNumRows() > 0 && qp.Qmatrix() && hasRigidBodyMotion(qp);
-  if (springs) newton.setWeights(*constraintStiffness(*qp.Qmatrix(), *qp.A));
+  const StiffnessParts stiffness(qp);
+  const bool springs = qp.A->getGlobalNumRows() > 0 && stiffness.available() && hasRigidBodyMotion(qp);
+  if (springs) newton.setWeights(*constraintStiffness(*stiffness.diagonal(), *qp.A));
   scales.krylovIterations = newton.solve(r, w, 1e-2 * r.norm2()).iterations;
   if (springs) newton.setWeights(Vector(qp.A->getRangeMap()));
   w.update(1.0, v0, 1.0);

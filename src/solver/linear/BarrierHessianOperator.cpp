@@ -12,6 +12,7 @@
 
 #include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
+#include "solver/linear/StiffnessParts.hpp"
 
 namespace signorini {
 
@@ -263,43 +264,26 @@ RCP<CrsMatrix> BarrierHessianOperator::assembleByProduct(const CrsMatrix& Q, con
   return H;
 }
 
-RCP<BarrierHessianOperator> BarrierHessianOperator::onContactColumns() const {
-  const RCP<const CrsMatrix>& Q = Qmatrix_;
-  if (Q.is_null()) throw Error("BarrierHessianOperator::onContactColumns needs Q assembled");
-  // 1 on the DOFs that appear in A, seen from Q's column map.
-  Vector onDomain(A_->getDomainMap());
-  {
-    Vector onColumns(A_->getColMap());
-    const auto a = A_->getLocalMatrixHost();
-    auto c = onColumns.getDataNonConst();
-    for (std::size_t e = 0; e < a.graph.entries.extent(0); ++e) c[a.graph.entries(e)] = 1.0;
-    onDomain.doExport(onColumns, Export(A_->getColMap(), A_->getDomainMap()), Tpetra::ADD);
-  }
-  Vector onQColumns(Q->getColMap());
-  onQColumns.doImport(onDomain, Import(Q->getDomainMap(), Q->getColMap()), Tpetra::INSERT);
-  const auto contact = onQColumns.getData();
-
-  const auto q = Q->getLocalMatrixHost();
+RCP<BarrierHessianOperator> BarrierHessianOperator::onContactColumns(const CrsMatrix& contactRows) const {
+  const RCP<const Vector> contact = contactDofIndicator(*A_);
+  if (!contactRows.getRowMap()->isSameAs(*contact->getMap()))
+    throw Error("BarrierHessianOperator::onContactColumns: the contact rows are not on Q's row map");
+  const auto onContact = contact->getData();
+  // Q's rows at the contact DOFs, then their transpose: Q's columns there.
+  const auto q = contactRows.getLocalMatrixHost();
   const LocalOrdinal rows = static_cast<LocalOrdinal>(q.numRows());
   Teuchos::Array<std::size_t> counts(rows, 0);
   for (LocalOrdinal r = 0; r < rows; ++r)
-    for (auto e = q.graph.row_map(r); e < q.graph.row_map(r + 1); ++e)
-      if (contact[q.graph.entries(e)] != 0.0) ++counts[r];
-  auto Qc = rcp(new CrsMatrix(Q->getRowMap(), Q->getColMap(), counts()));
-  Teuchos::Array<LocalOrdinal> cols;
-  Teuchos::Array<Scalar> vals;
+    if (onContact[r] != 0.0) counts[r] = q.graph.row_map(r + 1) - q.graph.row_map(r);
+  auto Qr = rcp(new CrsMatrix(contactRows.getRowMap(), contactRows.getColMap(), counts()));
   for (LocalOrdinal r = 0; r < rows; ++r) {
     if (counts[r] == 0) continue;
-    cols.clear();
-    vals.clear();
-    for (auto e = q.graph.row_map(r); e < q.graph.row_map(r + 1); ++e)
-      if (contact[q.graph.entries(e)] != 0.0) {
-        cols.push_back(q.graph.entries(e));
-        vals.push_back(q.values(e));
-      }
-    Qc->insertLocalValues(r, cols(), vals());
+    const auto begin = q.graph.row_map(r);
+    Qr->insertLocalValues(r, Teuchos::ArrayView<const LocalOrdinal>(&q.graph.entries(begin), counts[r]),
+                          Teuchos::ArrayView<const Scalar>(&q.values(begin), counts[r]));
   }
-  Qc->fillComplete(Q->getDomainMap(), Q->getRangeMap());
+  Qr->fillComplete(contactRows.getDomainMap(), contactRows.getRangeMap());
+  const RCP<CrsMatrix> Qc = Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node>(Qr).createTranspose();
   auto sliced = rcp(new BarrierHessianOperator(Qc, A_));
   sliced->setWeights(*D_);
   return sliced;

@@ -14,7 +14,7 @@ namespace signorini {
 class BarrierHessianOperator : public Operator {
  public:
   // Qassembled: Q as a matrix when Q is an operator of its own (matrix-free), for
-  // assemble() and onContactColumns(); by default Q itself if it is a CrsMatrix.
+  // assemble(); by default Q itself if it is a CrsMatrix.
   BarrierHessianOperator(RCP<const Operator> Q, RCP<const CrsMatrix> A, RCP<const CrsMatrix> Qassembled = Teuchos::null);
 
   // D, on A's range map (copied); all zeros until set.
@@ -63,8 +63,10 @@ class BarrierHessianOperator : public Operator {
   // H P P^T, with P the restriction to the contact DOFs (those in A): Q's columns on the
   // contact DOFs plus A^T D A, with a copy of the current D. It applies H to vectors that
   // vanish off the contact DOFs, and its transpose P P^T H gives H's contact rows, for a
-  // fraction of the cost of H (needs Q assembled).
-  RCP<BarrierHessianOperator> onContactColumns() const;
+  // fraction of the cost of H. `contactRows`: a matrix on Q's row map whose rows at the
+  // contact DOFs are Q's (Q itself will do); Q is symmetric, so its columns there are their
+  // transpose. Collective.
+  RCP<BarrierHessianOperator> onContactColumns(const CrsMatrix& contactRows) const;
 
  private:
   RCP<const Operator> Q_;

@@ -12,17 +12,16 @@
 #include "core/CommunicationPhase.hpp"
 #include "core/ParameterValidation.hpp"
 #include "signorini/core/Error.hpp"
+#include "solver/linear/StiffnessParts.hpp"
 #include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
 #include "solver/preconditioner/MueLuPreconditioner.hpp"
 #include "solver/preconditioner/SubspaceCorrectedPreconditioner.hpp"
 
 namespace signorini {
 
-RCP<Vector> constraintStiffness(const CrsMatrix& Q, const CrsMatrix& A) {
-  Vector diagonal(Q.getRowMap());
-  Q.getLocalDiagCopy(diagonal);
+RCP<Vector> constraintStiffness(const Vector& diagonalOfQ, const CrsMatrix& A) {
   Vector atColumns(A.getColMap());
-  atColumns.doImport(diagonal, Import(Q.getRowMap(), A.getColMap()), Tpetra::INSERT);
+  atColumns.doImport(diagonalOfQ, Import(diagonalOfQ.getMap(), A.getColMap()), Tpetra::INSERT);
   auto q = rcp(new Vector(A.getRowMap()));
   auto qd = q->getDataNonConst();
   auto cd = atColumns.getData();
@@ -143,9 +142,11 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
                        "or \"amg of H\"");
     return;
   }
-  if (qp.Qmatrix().is_null())
-    throw InputError("Preconditioner/type \"" + prec.get<std::string>("type") + "\" needs Q as an assembled CrsMatrix; "
-                     "use \"none\" for a matrix-free Q");
+  const StiffnessParts stiffness(qp);
+  if (!stiffness.available())
+    throw InputError("Preconditioner/type \"" + prec.get<std::string>("type") + "\" needs Q assembled or as a "
+                     "StiffnessOperator; use \"none\" for another matrix-free Q");
+  const bool assembled = !qp.Qmatrix().is_null();
   Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: preconditioner construction"));
   const Teuchos::ParameterList& muelu = prec.sublist("MueLu");
   const Hierarchy hierarchy = choice<Hierarchy>(prec, "hierarchy");
@@ -154,14 +155,18 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
     if (!haveGrid)
       throw InputError("Preconditioner/hierarchy \"geometric\" needs a box mesh (Problem/mesh: type \"box\")");
     auto geometric = std::make_unique<GeometricMultigridPreconditioner>(
-        *qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize, prec.get<int>("geometric: coarsest size"),
-        prec.get<int>("geometric: direct solve size"), prec.sublist("Ifpack2"), muelu,
-        prec.get<int>("geometric: eigenvalue update steps"));
-    if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() > 0) {
+        *qp.grid, qp.Q->getDomainMap(), stiffness.prescribedDofs(), *qp.coordinates, qp.blockSize,
+        prec.get<int>("geometric: coarsest size"), prec.get<int>("geometric: direct solve size"),
+        prec.sublist("Ifpack2"), muelu, prec.get<int>("geometric: eigenvalue update steps"));
+    if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() > 0 &&
+        (assembled || !qp.gridStiffness.is_null())) {
       geometric_ = geometric.get();
       filteredH_ = rcp(new BarrierHessianOperator(qp.Q, qp.A, qp.Qmatrix()));
-      diagonalOfQ_ = rcp(new Vector(qp.Qmatrix()->getRowMap()));
-      qp.Qmatrix()->getLocalDiagCopy(*diagonalOfQ_);
+      diagonalOfQ_ = stiffness.diagonal();
+      if (assembled)
+        geometric_->setFineStiffness(qp.Qmatrix());
+      else
+        geometric_->setGridStiffness(*qp.gridStiffness);
     }
     amg_ = std::move(geometric);
     // A rebuild on the geometric levels updates the Galerkin products of the changed rows.
@@ -171,13 +176,19 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
     // A rebuild of MueLu's hierarchy is a whole setup: only when constraints switch.
     rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.9);
   }
-  if (correction_ != ContactCorrection::None)
-    subspace_ = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A,
+  if (!assembled && !geometric_)
+    throw InputError("a matrix-free Q is preconditioned by Preconditioner/type \"amg of H\" on geometric levels "
+                     "(a box mesh, P2 or P3) alone; set Problem/stiffness: operator to \"assembled\"");
+  if (correction_ != ContactCorrection::None) {
+    const RCP<const CrsMatrix> contactRows = stiffness.contactRows(*qp.A);
+    subspace_ = rcp(new ContactSubspaceSolver(*contactRows, *qp.A,
                                               choice<ContactSubspaceBlocks>(prec, "contact correction: blocks")));
-  if (correction_ == ContactCorrection::Multiplicative) contactColumns_ = H_->onContactColumns();
+    if (correction_ == ContactCorrection::Multiplicative) contactColumns_ = H_->onContactColumns(*contactRows);
+  }
   // Without a contact correction, nothing else would see the weights above the cap.
   if (correction_ != ContactCorrection::None) weightCap_ = prec.get<double>("amg of H: weight cap");
-  if (strategy_ == PreconditionerType::AmgOfH) constraintStiffness_ = constraintStiffness(*qp.Qmatrix(), *qp.A);
+  if (strategy_ == PreconditionerType::AmgOfH)
+    constraintStiffness_ = constraintStiffness(diagonalOfQ_.is_null() ? *stiffness.diagonal() : *diagonalOfQ_, *qp.A);
   reuseHierarchy_ = muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none";
   if (strategy_ == PreconditionerType::AmgOfQ) {
     amg_->compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
@@ -250,7 +261,7 @@ void NewtonSystemSolver::buildGeometricForSum(const Vector& filtered) {
     diagonal.update(1.0, *diagonalOfQ_, 1.0);
   }
   Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup"));
-  geometric_->computeForSum(filteredH_, diagonal, *filteredH_->assembledQ(), C, reuseHierarchy_ && amgReady_);
+  geometric_->computeForSum(filteredH_, diagonal, C, reuseHierarchy_ && amgReady_);
 }
 
 KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absoluteTolerance, bool fromGuess,

@@ -16,7 +16,10 @@
 // and its "contact correction": the AMG combined with an exact solve on the contact DOFs
 // (see SubspaceCorrectedPreconditioner), "none", "additive" or "multiplicative". The
 // multigrid's levels are MueLu's (MueLuPreconditioner) or, on a box mesh, geometric ones
-// above MueLu's (GeometricMultigridPreconditioner): "hierarchy".
+// above MueLu's (GeometricMultigridPreconditioner): "hierarchy". A matrix-free Q (a
+// StiffnessOperator, not assembled) takes "amg of H" on geometric levels, with the grid's P1
+// stiffness (ContactQP::gridStiffness) for a P_k space, and its contact rows for the contact
+// correction.
 #include <memory>
 
 #include <Teuchos_ParameterList.hpp>
@@ -95,7 +98,8 @@ class NewtonSystemSolver {
   void buildGeometricForSum(const Vector& filtered);
 };
 
-// q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i, on A's row map.
-RCP<Vector> constraintStiffness(const CrsMatrix& Q, const CrsMatrix& A);
+// q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i, on A's row map, from
+// diag(Q) on A's domain map.
+RCP<Vector> constraintStiffness(const Vector& diagonalOfQ, const CrsMatrix& A);
 
 }  // namespace signorini

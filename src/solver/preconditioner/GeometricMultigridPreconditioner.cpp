@@ -230,28 +230,8 @@ Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParamete
   return p;
 }
 
-GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
-    const GeometricGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates, int blockSize, long long coarsestSize,
-    long long directSolveSize, const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps)
-    : smoother_(defaultSmootherParameters()), eigenvalueUpdateSteps_(eigenvalueUpdateSteps) {
-  smoother_.setParameters(smoother);
-  // One step is the Rayleigh quotient of the start: at 2D nx = 800 CG then did not converge.
-  if (eigenvalueUpdateSteps == 1 || eigenvalueUpdateSteps == 2 || eigenvalueUpdateSteps < 0)
-    throw Error("GeometricMultigridPreconditioner: eigenvalue update steps must be 0 (fresh estimates) or at "
-                "least 3");
-  const int dim = grid.dimension();
-  if (static_cast<int>(coordinates.getNumVectors()) != dim || blockSize < 1 ||
-      Q.getRowMap()->getNodeNumElements() != blockSize * coordinates.getLocalLength())
-    throw Error("GeometricMultigridPreconditioner: coordinates, block size and Q do not match");
-
-  auto fine = std::make_shared<Level>();
-  fine->dofMap = Q.getRowMap();
-  fine->coordinates.resize(dim * coordinates.getLocalLength());
-  for (int c = 0; c < dim; ++c) {
-    auto x = coordinates.getData(c);
-    for (std::size_t i = 0; i < coordinates.getLocalLength(); ++i) fine->coordinates[dim * i + c] = x[i];
-  }
-  fine->dirichlet.assign(Q.getNodeNumRows(), 0);
+std::vector<char> GeometricMultigridPreconditioner::prescribedRows(const CrsMatrix& Q) {
+  std::vector<char> prescribed(Q.getNodeNumRows(), 0);
   for (std::size_t row = 0; row < Q.getNodeNumRows(); ++row) {
     typename CrsMatrix::local_inds_host_view_type cols;
     typename CrsMatrix::values_host_view_type vals;
@@ -260,14 +240,41 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
     bool coupled = false;
     for (std::size_t k = 0; k < cols.extent(0); ++k)
       if (Q.getColMap()->getGlobalElement(cols(k)) != gid && vals(k) != 0.0) coupled = true;
-    fine->dirichlet[row] = !coupled;
+    prescribed[row] = !coupled;
   }
+  return prescribed;
+}
+
+GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
+    const GeometricGrid& grid, const RCP<const Map>& dofMap, const std::vector<char>& prescribed,
+    const MultiVector& coordinates, int blockSize, long long coarsestSize, long long directSolveSize,
+    const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps)
+    : smoother_(defaultSmootherParameters()), eigenvalueUpdateSteps_(eigenvalueUpdateSteps) {
+  smoother_.setParameters(smoother);
+  // One step is the Rayleigh quotient of the start: at 2D nx = 800 CG then did not converge.
+  if (eigenvalueUpdateSteps == 1 || eigenvalueUpdateSteps == 2 || eigenvalueUpdateSteps < 0)
+    throw Error("GeometricMultigridPreconditioner: eigenvalue update steps must be 0 (fresh estimates) or at "
+                "least 3");
+  const int dim = grid.dimension();
+  if (static_cast<int>(coordinates.getNumVectors()) != dim || blockSize < 1 ||
+      dofMap->getNodeNumElements() != blockSize * coordinates.getLocalLength() ||
+      prescribed.size() != dofMap->getNodeNumElements())
+    throw Error("GeometricMultigridPreconditioner: coordinates, block size, DOF map and prescribed DOFs do not match");
+
+  auto fine = std::make_shared<Level>();
+  fine->dofMap = dofMap;
+  fine->coordinates.resize(dim * coordinates.getLocalLength());
+  for (int c = 0; c < dim; ++c) {
+    auto x = coordinates.getData(c);
+    for (std::size_t i = 0; i < coordinates.getLocalLength(); ++i) fine->coordinates[dim * i + c] = x[i];
+  }
+  fine->dirichlet = prescribed;
   levels_.push_back(fine);
 
   // A P_k space (more nodes than the grid's vertices) goes to P1 on its own mesh first.
-  const bool isP1 = Q.getGlobalNumRows() == static_cast<Tpetra::global_size_t>(blockSize * grid.numVertices());
+  isP1_ = dofMap->getGlobalNumElements() == static_cast<Tpetra::global_size_t>(blockSize * grid.numVertices());
   std::shared_ptr<const GeometricGrid> owner;  // keeps `next` alive
-  const GeometricGrid* next = isP1 ? (owner = grid.coarser()).get() : &grid;
+  const GeometricGrid* next = isP1_ ? (owner = grid.coarser()).get() : &grid;
   // A coarse grid the direct solver takes is the last: its exact solve is the best coarse
   // correction. The fine space always gets its levels: it may be P_k, denser to factor.
   auto goesOn = [&] {
@@ -409,8 +416,34 @@ void GeometricMultigridPreconditioner::build(const RCP<CrsMatrix>& A, RCP<const 
   buildFrom(0, change, reuse);
 }
 
+void GeometricMultigridPreconditioner::setFineStiffness(const RCP<const CrsMatrix>& Q) {
+  fineStiffness_ = Q;
+  firstCoarseStiffness_ = Teuchos::null;
+}
+
+void GeometricMultigridPreconditioner::setGridStiffness(const CrsMatrix& gridStiffness) {
+  if (isP1_ || levels_.size() < 2)
+    throw Error("GeometricMultigridPreconditioner::setGridStiffness needs a P_k fine space, k > 1, with a level below");
+  const RCP<const Map>& first = levels_[1]->dofMap;
+  if (gridStiffness.getGlobalNumRows() != first->getGlobalNumElements())
+    throw Error("GeometricMultigridPreconditioner::setGridStiffness: the matrix is not on the grid's vertices");
+  firstCoarseStiffness_ = Tpetra::importAndFillCompleteCrsMatrix<CrsMatrix>(
+      Teuchos::rcpFromRef(gridStiffness), Import(gridStiffness.getRowMap(), first), first, first);
+  fineStiffness_ = Teuchos::null;
+}
+
+RCP<const CrsMatrix> GeometricMultigridPreconditioner::firstCoarseStiffness() const {
+  if (!firstCoarseStiffness_.is_null()) return firstCoarseStiffness_;
+  if (fineStiffness_.is_null())
+    throw Error("GeometricMultigridPreconditioner::computeForSum needs setFineStiffness() or setGridStiffness() first");
+  const Level& fine = *levels_[0];
+  auto PtQP = rcp(new CrsMatrix(fine.P->getDomainMap(), 0));
+  Tpetra::TripleMatrixMultiply::MultiplyRAP(*fine.P, true, *fineStiffness_, false, *fine.P, false, *PtQP);
+  return PtQP;
+}
+
 void GeometricMultigridPreconditioner::computeForSum(const RCP<const Operator>& H, const Vector& diagonal,
-                                                     const CrsMatrix& Q, const RCP<const CrsMatrix>& C, bool reuse) {
+                                                     const RCP<const CrsMatrix>& C, bool reuse) {
   if (levels_.size() < 2)
     throw Error("GeometricMultigridPreconditioner::computeForSum needs a geometric level below the fine one");
   Level& fine = *levels_[0];
@@ -424,9 +457,8 @@ void GeometricMultigridPreconditioner::computeForSum(const RCP<const Operator>& 
       if (addInPattern(*first.A, *product)) coarseChange = product;
     }
     if (coarseChange.is_null()) {  // P^T Q P + P^T C P afresh
-      CrsMatrix PtQP(fine.P->getDomainMap(), 0);
-      Tpetra::TripleMatrixMultiply::MultiplyRAP(*fine.P, true, Q, false, *fine.P, false, PtQP);
-      first.A = Tpetra::MatrixMatrix::add(1.0, false, PtQP, 1.0, false, *galerkinProductOfChange(fine.P, C));
+      first.A = Tpetra::MatrixMatrix::add(1.0, false, *firstCoarseStiffness(), 1.0, false,
+                                          *galerkinProductOfChange(fine.P, C));
       change = Teuchos::null;
     }
     rememberTerm(C);

@@ -17,8 +17,8 @@
 // so P is the exact embedding; the 3D pattern alternates with the box parity and the grids
 // are not nested, which interpolation handles all the same.
 //
-// Dirichlet DOFs (rows of the fine matrix with a diagonal entry only, as symmetric
-// elimination leaves them) stay out of the coarse spaces: a coarse DOF at a Dirichlet DOF
+// Dirichlet DOFs (prescribed: rows and columns of the identity, as symmetric elimination
+// leaves them) stay out of the coarse spaces: a coarse DOF at a Dirichlet DOF
 // is injected into it alone, and the interpolation to other DOFs skips it.
 #include <memory>
 #include <vector>
@@ -37,34 +37,44 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // The Ifpack2 Chebyshev parameters used where the user's "smoother" list is silent.
   static Teuchos::ParameterList defaultSmootherParameters();
 
-  // `grid`: the P1 grid of the fine space's mesh; `Q`: the fine matrix (its pattern and
-  // Dirichlet rows are those of every matrix given to compute()); `coordinates`: the owned
-  // fine nodes, on a node map with Q's DOF = blockSize * node + component. Collective.
+  // `grid`: the P1 grid of the fine space's mesh; `dofMap`: the fine DOFs (the row map of
+  // every matrix given to compute()), `prescribed` 1 for each owned one that is a Dirichlet
+  // DOF (a unit row and column, see prescribedRows()); `coordinates`: the owned fine nodes,
+  // on a node map with DOF = blockSize * node + component. Collective.
   // `eigenvalueUpdateSteps`: Lanczos steps of the smoothers' eigenvalue estimates after a
   // Galerkin update, started from the previous estimate's Ritz vector and the changed rows
   // (0: a fresh estimate of "chebyshev: eigenvalue max iterations" steps at every build; the
   // default, 3, is Preconditioner/geometric: eigenvalue update steps in NewtonSystemSolver).
   // Throws InputError when the nodes do not contain the coarse grid's vertices.
-  GeometricMultigridPreconditioner(const GeometricGrid& grid, const CrsMatrix& Q, const MultiVector& coordinates,
+  GeometricMultigridPreconditioner(const GeometricGrid& grid, const RCP<const Map>& dofMap,
+                                   const std::vector<char>& prescribed, const MultiVector& coordinates,
                                    int blockSize, long long coarsestSize, long long directSolveSize,
                                    const Teuchos::ParameterList& smoother,
                                    const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps);
+  // The rows of Q with a diagonal entry only, as symmetric elimination leaves Dirichlet DOFs.
+  static std::vector<char> prescribedRows(const CrsMatrix& Q);
   ~GeometricMultigridPreconditioner() override;
 
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
   // The coarse matrices are updated with the Galerkin products of `change` alone.
   void update(const RCP<CrsMatrix>& A, const CrsMatrix& change, bool reuse = false) override;
 
+  // What computeForSum() takes for Q: the fine matrix itself (its Galerkin product P^T Q P
+  // is formed when needed; Q must stay valid), or, for a P_k fine space (k > 1), P^T Q P given
+  // as the grid's P1 stiffness (ContactQP::gridStiffness: DOF blockSize * vertex + component
+  // of the constructor's grid, any one-to-one row map; copied), so that Q need not be assembled.
+  void setFineStiffness(const RCP<const CrsMatrix>& Q);
+  void setGridStiffness(const CrsMatrix& gridStiffness);
+
   // The hierarchy for H = Q + C with the fine level left an operator: `H` applies it and
-  // `diagonal` is its diagonal; Q is the fine matrix (the constructor's pattern) and C, on Q's
-  // row map, is nonzero on few rows (A^T D A on the contact DOFs). No fine matrix is
-  // assembled: the fine smoother is a ChebyshevSmoother of H (reading the smoother list's
-  // degree, ratio, boost factor and max eigenvalue), and the first coarse matrix is
-  // P^T Q P + P^T C P, which later calls with C on the same graph update with the product of
-  // what changed in C. C is copied; H must stay valid while the cycle is used. Needs a
-  // geometric level. Collective.
-  void computeForSum(const RCP<const Operator>& H, const Vector& diagonal, const CrsMatrix& Q,
-                     const RCP<const CrsMatrix>& C, bool reuse = false);
+  // `diagonal` is its diagonal; Q is set as above and C, on the fine DOF map, is nonzero on
+  // few rows (A^T D A on the contact DOFs). No fine matrix is assembled: the fine smoother is a
+  // ChebyshevSmoother of H (reading the smoother list's degree, ratio, boost factor and max
+  // eigenvalue), and the first coarse matrix is P^T Q P + P^T C P, which later calls with C on
+  // the same graph update with the product of what changed in C. C is copied; H must stay
+  // valid while the cycle is used. Needs a geometric level. Collective.
+  void computeForSum(const RCP<const Operator>& H, const Vector& diagonal, const RCP<const CrsMatrix>& C,
+                     bool reuse = false);
   RCP<Operator> getOperator() const override;
 
   // Grids below the fine level (0: MueLu alone), and their global unknowns, finest first.
@@ -89,6 +99,8 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   bool directCoarsest_ = false;
   std::unique_ptr<MultilevelPreconditioner> coarse_;
   RCP<Operator> cycle_;
+  bool isP1_ = false;  // the fine space is P1 on the grid's vertices
+  RCP<const CrsMatrix> fineStiffness_, firstCoarseStiffness_;  // see setFineStiffness()
   // The C of the last computeForSum(): its graph and values (null after a compute()).
   RCP<const CrsMatrix::crs_graph_type> lastTerm_;
   std::vector<double> lastTermValues_;
@@ -105,6 +117,7 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   double maxEigenvalue(Level& level, const RCP<const CrsMatrix>& change);
   RCP<const CrsMatrix> changeOfTerm(const CrsMatrix& C) const;
   void rememberTerm(const RCP<const CrsMatrix>& C);
+  RCP<const CrsMatrix> firstCoarseStiffness() const;
 };
 
 }  // namespace signorini

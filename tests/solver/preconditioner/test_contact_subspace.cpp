@@ -189,7 +189,8 @@ TEST(SubspaceCorrectedPreconditioner, SymmetricPositiveDefiniteAndExactOnTheSubs
       Mx.update(-1.0, x, 1.0);
       EXPECT_LT(Mx.norm2(), 1e-10 * x.norm2()) << name;
       // The same M^-1 with both residuals taken from H P P^T instead of H.
-      SubspaceCorrectedPreconditioner sliced(s.H, amg.getOperator(), s.S, combination, s.H->onContactColumns());
+      SubspaceCorrectedPreconditioner sliced(s.H, amg.getOperator(), s.S, combination,
+                                             s.H->onContactColumns(*s.problem.qp.Qmatrix()));
       Vector slicedMu(qp.Q->getDomainMap());
       sliced.apply(u, slicedMu);
       slicedMu.update(-1.0, Mu, 1.0);
@@ -204,7 +205,7 @@ TEST(BarrierHessianOperator, ContactColumnsGiveHOnTheSubspace) {
     WeightedProblem s = weightedProblem(c);
     const std::string name = describe(c);
     const ContactQP& qp = s.problem.qp;
-    const RCP<BarrierHessianOperator> HP = s.H->onContactColumns();
+    const RCP<BarrierHessianOperator> HP = s.H->onContactColumns(*s.problem.qp.Qmatrix());
     const Vector indicator = contactIndicator(qp);
     Vector x(qp.Q->getDomainMap()), Hx(qp.Q->getDomainMap()), HPx(qp.Q->getDomainMap());
     x.randomize();

@@ -12,6 +12,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "assembly/ElasticityAssembler.hpp"
 #include "fe/BoxGrid.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
@@ -41,8 +42,10 @@ AssembledProblem box(int dim, int cells, int degree, bool clamped = true) {
 // most `directSolveSize` unknowns.
 GeometricMultigridPreconditioner multigrid(const ContactQP& qp, long long coarsestSize = 200,
                                            int eigenvalueUpdateSteps = 3, long long directSolveSize = 100) {
-  return GeometricMultigridPreconditioner(*qp.grid, *qp.Qmatrix(), *qp.coordinates, qp.blockSize, coarsestSize,
-                                          directSolveSize, Teuchos::ParameterList(), Teuchos::ParameterList(), eigenvalueUpdateSteps);
+  return GeometricMultigridPreconditioner(*qp.grid, qp.Qmatrix()->getRowMap(),
+                                          GeometricMultigridPreconditioner::prescribedRows(*qp.Qmatrix()),
+                                          *qp.coordinates, qp.blockSize, coarsestSize, directSolveSize,
+                                          Teuchos::ParameterList(), Teuchos::ParameterList(), eigenvalueUpdateSteps);
 }
 
 // A box clamped on its top face with contact on its bottom one, and the Hessians
@@ -275,6 +278,7 @@ TEST(GeometricMultigrid, FineOperatorGivesTheHierarchyOfTheAssembledSum) {
     // Fresh eigenvalue estimates at every build, so that the cycles can be compared.
     GeometricMultigridPreconditioner sum = multigrid(qp, 50, 0);
     ASSERT_GE(sum.geometricLevels(), 2);
+    sum.setFineStiffness(qp.Qmatrix());
     RCP<const CrsMatrix> firstCoarse;
     for (int step : {0, 2, 7}) {
       const std::string label = std::to_string(dim) + "D step " + std::to_string(step);
@@ -284,7 +288,7 @@ TEST(GeometricMultigrid, FineOperatorGivesTheHierarchyOfTheAssembledSum) {
       Vector diagonal(diagonalOfQ.getMap());
       C->getLocalDiagCopy(diagonal);
       diagonal.update(1.0, diagonalOfQ, 1.0);
-      sum.computeForSum(Teuchos::rcpFromRef(box.H), diagonal, *qp.Qmatrix(), C);
+      sum.computeForSum(Teuchos::rcpFromRef(box.H), diagonal, C);
       if (firstCoarse.is_null()) firstCoarse = sum.levelMatrix(1);
       EXPECT_EQ(sum.levelMatrix(1).get(), firstCoarse.get()) << label << ": not updated in place";
       GeometricMultigridPreconditioner assembled = multigrid(qp, 50, 0);
@@ -344,13 +348,48 @@ TEST(GeometricMultigrid, UpdatedEigenvalueEstimatesKeepTheCgCounts) {
   EXPECT_THROW(multigrid(problem.qp, 50, 2), Error);
 }
 
+// For a P_k space (k > 1) the P1 stiffness of its mesh on the grid is P^T Q P: the hierarchy
+// started from it, with no Q assembled, has the coarse matrices of the one started from Q.
+TEST(GeometricMultigrid, GridStiffnessIsTheGalerkinProductOfQ) {
+  for (const auto& [dim, degree] : {std::pair{2, 2}, std::pair{2, 3}, std::pair{3, 2}, std::pair{3, 3}}) {
+    const std::string label = std::to_string(dim) + "D P" + std::to_string(degree);
+    Teuchos::ParameterList definition = contactBoxProblem(dim, dim == 2 ? 8 : 4);
+    definition.set("element: degree", degree);
+    const AssembledProblem problem = buildProblem(definition, Tpetra::getDefaultComm());
+    const ContactQP& qp = problem.qp;
+    BarrierHessianOperator H(qp.Q, qp.A);
+    Vector D(qp.A->getRangeMap()), diagonal(qp.Q->getRangeMap());
+    qp.Qmatrix()->getLocalDiagCopy(diagonal);
+    D.putScalar(10.0 * diagonal.normInf());
+    H.setWeights(D);
+    const RCP<const CrsMatrix> C = H.contactTerm(D);
+    const RCP<const CrsMatrix> grid = assembleGridStiffness(*problem.space, problem.definition, *qp.grid);
+    GeometricMultigridPreconditioner fromQ = multigrid(qp, 20, 0), fromGrid = multigrid(qp, 20, 0);
+    ASSERT_GE(fromQ.geometricLevels(), 2) << label;
+    fromQ.setFineStiffness(qp.Qmatrix());
+    fromGrid.setGridStiffness(*grid);
+    fromQ.computeForSum(Teuchos::rcpFromRef(H), diagonal, C);
+    fromGrid.computeForSum(Teuchos::rcpFromRef(H), diagonal, C);
+    for (int l = 1; l <= fromQ.geometricLevels(); ++l) {
+      Vector x(fromQ.levelMatrix(l)->getDomainMap()), a(x.getMap()), b(x.getMap());
+      x.randomize();
+      fromGrid.levelMatrix(l)->apply(x, a);
+      fromQ.levelMatrix(l)->apply(x, b);
+      a.update(-1.0, b, 1.0);
+      EXPECT_LT(a.norm2(), 1e-12 * b.norm2()) << label << ", level " << l;
+    }
+  }
+}
+
 // A grid that the mesh does not refine is an input error, not a wrong preconditioner.
 TEST(GeometricMultigrid, RejectsAGridTheMeshDoesNotRefine) {
   const AssembledProblem problem = box(2, 8, 1);
   BoxGrid wrong = dynamic_cast<const BoxGrid&>(*problem.qp.grid);
   wrong.cells = {6, 6, 1};  // halved: vertices at thirds, which the 8-cell mesh lacks
-  EXPECT_THROW(GeometricMultigridPreconditioner(wrong, *problem.qp.Qmatrix(), *problem.qp.coordinates, 2, 1, 0,
-                                                Teuchos::ParameterList(), Teuchos::ParameterList(), 5),
+  const CrsMatrix& Q = *problem.qp.Qmatrix();
+  EXPECT_THROW(GeometricMultigridPreconditioner(wrong, Q.getRowMap(), GeometricMultigridPreconditioner::prescribedRows(Q),
+                                                *problem.qp.coordinates, 2, 1, 0, Teuchos::ParameterList(),
+                                                Teuchos::ParameterList(), 5),
                InputError);
 }
 

@@ -1,0 +1,88 @@
+#!/usr/bin/python3
+"""Whole contact solves of 3D P2 and P3 members with the stiffness assembled and matrix-free
+(`Problem/stiffness: operator`), on 2 ranks: peak memory per unknown, solve time per Newton
+system, main iterations, Newton systems and CG iterations, and the optimal value.
+
+The matrix-free path assembles no P_k stiffness on a box mesh (the geometric multigrid starts
+from the mesh's P1 stiffness), so in the memory the assembled path needs for a problem it
+solves a larger one: `--budget-case` names the assembled run whose peak memory per rank is
+the budget, and the table marks the matrix-free runs that stay within it.
+
+    /usr/bin/python3 bench/matrix_free_solve.py [--ranks 2] [--cases 3d-p3-nx12,...]
+
+Writes bench/results/matrix-free-solve.{json,md}.
+"""
+import argparse
+import json
+import os
+import subprocess
+
+from preconditioners import ENV, ROOT
+from provenance import provenance
+
+MEMBER = os.path.join(ROOT, "xml", "family", "3d-p2-nx32.xml")  # the family's 3D load and supports
+# (degree, nx, paths): both paths where the assembled one is measured, matrix-free beyond.
+CASES = [(2, 16, ("assembled", "matrix-free")), (2, 24, ("assembled", "matrix-free")),
+         (3, 12, ("assembled", "matrix-free")), (3, 16, ("assembled", "matrix-free")),
+         (3, 21, ("matrix-free",))]
+
+
+def run(degree, nx, path, ranks, workdir):
+    out = os.path.join(workdir, f"3d-p{degree}-nx{nx}-{path}")
+    cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"), MEMBER, "--output", out,
+           "--set", "Output/write solution=false", "--set", f"Problem/element: degree={degree}",
+           "--set", f"Problem/mesh: cells={{{nx}}}", "--set", f"Problem/stiffness: operator={path}"]
+    subprocess.run(cmd, env=ENV, capture_output=True, text=True, check=False)
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    return {"degree": degree, "nx": nx, "path": path, "ranks": ranks, "status": s["status"], "n": s["n"],
+            "objective": s["objective"], "main_iterations": s["outer_iterations"],
+            "newton_systems": s["newton_steps"], "cg_iterations": s["krylov_iterations"],
+            "assembly_seconds": s["time"]["assembly"], "solve_seconds": s["time"]["solve"],
+            "seconds_per_newton_system": s["time"]["solve"] / max(s["newton_steps"], 1),
+            "peak_mib_max_rank": s["memory_mib"]["max_rank"],
+            "peak_bytes_per_unknown": s["memory_mib"]["all_ranks"] * 2**20 / s["n"]}
+
+
+def table(runs, budget):
+    lines = ["| P | nx | n | stiffness | status | it | Newton | CG | assembly [s] | solve [s] | s per Newton system "
+             "| peak MiB (max rank) | peak bytes per unknown | within the budget |", "|" + "---|" * 14]
+    for r in runs:
+        within = "—" if budget is None else ("yes" if r["peak_mib_max_rank"] <= budget else "no")
+        lines.append(f"| {r['degree']} | {r['nx']} | {r['n']} | {r['path']} | {r['status']} | {r['main_iterations']} "
+                     f"| {r['newton_systems']} | {r['cg_iterations']} | {r['assembly_seconds']:.2f} "
+                     f"| {r['solve_seconds']:.2f} | {r['seconds_per_newton_system']:.3f} "
+                     f"| {r['peak_mib_max_rank']:.0f} | {r['peak_bytes_per_unknown']:.0f} | {within} |")
+    return "\n".join(lines) + "\n"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--ranks", type=int, default=2)
+    parser.add_argument("--cases", default="", help="comma-separated 3d-p<degree>-nx<nx> to keep")
+    parser.add_argument("--budget-case", default="3d-p3-nx16", help="the assembled run whose peak memory is the budget")
+    parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "matrix-free-solve"))
+    args = parser.parse_args()
+    made = provenance(args.ranks)  # before any result file is rewritten
+    keep = {c for c in args.cases.split(",") if c}
+    runs = []
+    for degree, nx, paths in CASES:
+        if keep and f"3d-p{degree}-nx{nx}" not in keep:
+            continue
+        for path in paths:
+            runs.append(run(degree, nx, path, args.ranks, args.workdir))
+            print(table(runs[-1:], None).splitlines()[-1], flush=True)
+    budget = next((r["peak_mib_max_rank"] for r in runs
+                   if r["path"] == "assembled" and f"3d-p{r['degree']}-nx{r['nx']}" == args.budget_case), None)
+    base = os.path.join(ROOT, "bench", "results", "matrix-free-solve")
+    with open(base + ".json", "w") as f:
+        json.dump({"provenance": made, "budget_case": args.budget_case, "budget_mib_per_rank": budget,
+                   "runs": runs}, f, indent=1)
+    with open(base + ".md", "w") as f:
+        f.write(table(runs, budget) + f"\nThe budget: the peak memory per rank of the assembled {args.budget_case} "
+                f"run ({budget} MiB). Family load and supports (xml/family/3d-p2-nx32.xml), {args.ranks} ranks, "
+                "default solver parameters. Written by bench/matrix_free_solve.py.\n")
+
+
+if __name__ == "__main__":
+    main()
