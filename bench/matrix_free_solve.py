@@ -1,14 +1,15 @@
 #!/usr/bin/python3
-"""Whole contact solves of 3D P2 and P3 members with the stiffness assembled and matrix-free
-(`Problem/stiffness: operator`), on 2 ranks: peak memory per unknown, solve time per Newton
-system, main iterations, Newton systems and CG iterations, and the optimal value.
+"""Whole contact solves of P2 and P3 members of the benchmark family, 2D and 3D, with the
+stiffness assembled and matrix-free (`Problem/stiffness: operator`), on 2 ranks: peak memory
+per unknown, assembly time, solve time per Newton system, main iterations, Newton systems and
+CG iterations, and the optimal value.
 
 The matrix-free path assembles no P_k stiffness on a box mesh (the geometric multigrid starts
 from the mesh's P1 stiffness), so in the memory the assembled path needs for a problem it
 solves a larger one: `--budget-case` names the assembled run whose peak memory per rank is
 the budget, and the table marks the matrix-free runs that stay within it.
 
-    /usr/bin/python3 bench/matrix_free_solve.py [--ranks 2] [--cases 3d-p3-nx12,...]
+    /usr/bin/python3 bench/matrix_free_solve.py [--ranks 2] [--cases 3d-p3-nx12,2d-p2-nx200,...]
 
 Writes bench/results/matrix-free-solve.{json,md}.
 """
@@ -20,22 +21,28 @@ import subprocess
 from preconditioners import ENV, ROOT
 from provenance import provenance
 
-MEMBER = os.path.join(ROOT, "xml", "family", "3d-p2-nx32.xml")  # the family's 3D load and supports
-# (degree, nx, paths): both paths where the assembled one is measured, matrix-free beyond.
-CASES = [(2, 16, ("assembled", "matrix-free")), (2, 24, ("assembled", "matrix-free")),
-         (3, 12, ("assembled", "matrix-free")), (3, 16, ("assembled", "matrix-free")),
-         (3, 21, ("matrix-free",))]
+# (dimension, degree, nx, paths), each run on the family member of its dimension (load and
+# supports). P3 nx = 22 has 2.55 times the unknowns of nx = 16, the budget case.
+MEMBERS = {2: os.path.join(ROOT, "xml", "family", "2d-p2-nx200.xml"),
+           3: os.path.join(ROOT, "xml", "family", "3d-p2-nx32.xml")}
+BOTH = ("assembled", "matrix-free")
+CASES = [(2, 2, 200, BOTH), (2, 3, 100, BOTH), (3, 2, 16, BOTH), (3, 2, 24, BOTH), (3, 2, 32, BOTH),
+         (3, 3, 12, BOTH), (3, 3, 16, BOTH), (3, 3, 22, BOTH)]
 
 
-def run(degree, nx, path, ranks, workdir):
-    out = os.path.join(workdir, f"3d-p{degree}-nx{nx}-{path}")
-    cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"), MEMBER, "--output", out,
+def name(dim, degree, nx):
+    return f"{dim}d-p{degree}-nx{nx}"
+
+
+def run(dim, degree, nx, path, ranks, workdir):
+    out = os.path.join(workdir, f"{name(dim, degree, nx)}-{path}")
+    cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"), MEMBERS[dim], "--output", out,
            "--set", "Output/write solution=false", "--set", f"Problem/element: degree={degree}",
            "--set", f"Problem/mesh: cells={{{nx}}}", "--set", f"Problem/stiffness: operator={path}"]
     subprocess.run(cmd, env=ENV, capture_output=True, text=True, check=False)
     with open(os.path.join(out, "summary.json")) as f:
         s = json.load(f)
-    return {"degree": degree, "nx": nx, "path": path, "ranks": ranks, "status": s["status"], "n": s["n"],
+    return {"dim": dim, "degree": degree, "nx": nx, "path": path, "ranks": ranks, "status": s["status"], "n": s["n"],
             "objective": s["objective"], "main_iterations": s["outer_iterations"],
             "newton_systems": s["newton_steps"], "cg_iterations": s["krylov_iterations"],
             "assembly_seconds": s["time"]["assembly"], "solve_seconds": s["time"]["solve"],
@@ -45,11 +52,11 @@ def run(degree, nx, path, ranks, workdir):
 
 
 def table(runs, budget):
-    lines = ["| P | nx | n | stiffness | status | it | Newton | CG | assembly [s] | solve [s] | s per Newton system "
-             "| peak MiB (max rank) | peak bytes per unknown | within the budget |", "|" + "---|" * 14]
+    lines = ["| d | P | nx | n | stiffness | status | it | Newton | CG | assembly [s] | solve [s] | s per Newton system "
+             "| peak MiB (max rank) | peak bytes per unknown | within the budget |", "|" + "---|" * 15]
     for r in runs:
         within = "—" if budget is None else ("yes" if r["peak_mib_max_rank"] <= budget else "no")
-        lines.append(f"| {r['degree']} | {r['nx']} | {r['n']} | {r['path']} | {r['status']} | {r['main_iterations']} "
+        lines.append(f"| {r['dim']} | {r['degree']} | {r['nx']} | {r['n']} | {r['path']} | {r['status']} | {r['main_iterations']} "
                      f"| {r['newton_systems']} | {r['cg_iterations']} | {r['assembly_seconds']:.2f} "
                      f"| {r['solve_seconds']:.2f} | {r['seconds_per_newton_system']:.3f} "
                      f"| {r['peak_mib_max_rank']:.0f} | {r['peak_bytes_per_unknown']:.0f} | {within} |")
@@ -66,22 +73,22 @@ def main():
     made = provenance(args.ranks)  # before any result file is rewritten
     keep = {c for c in args.cases.split(",") if c}
     runs = []
-    for degree, nx, paths in CASES:
-        if keep and f"3d-p{degree}-nx{nx}" not in keep:
+    for dim, degree, nx, paths in CASES:
+        if keep and name(dim, degree, nx) not in keep:
             continue
         for path in paths:
-            runs.append(run(degree, nx, path, args.ranks, args.workdir))
+            runs.append(run(dim, degree, nx, path, args.ranks, args.workdir))
             print(table(runs[-1:], None).splitlines()[-1], flush=True)
     budget = next((r["peak_mib_max_rank"] for r in runs
-                   if r["path"] == "assembled" and f"3d-p{r['degree']}-nx{r['nx']}" == args.budget_case), None)
+                   if r["path"] == "assembled" and name(r["dim"], r["degree"], r["nx"]) == args.budget_case), None)
     base = os.path.join(ROOT, "bench", "results", "matrix-free-solve")
     with open(base + ".json", "w") as f:
         json.dump({"provenance": made, "budget_case": args.budget_case, "budget_mib_per_rank": budget,
                    "runs": runs}, f, indent=1)
     with open(base + ".md", "w") as f:
         f.write(table(runs, budget) + f"\nThe budget: the peak memory per rank of the assembled {args.budget_case} "
-                f"run ({budget} MiB). Family load and supports (xml/family/3d-p2-nx32.xml), {args.ranks} ranks, "
-                "default solver parameters. Written by bench/matrix_free_solve.py.\n")
+                f"run ({budget} MiB). The family's load and supports (xml/family/2d-p2-nx200.xml, 3d-p2-nx32.xml), "
+                f"{args.ranks} ranks, default solver parameters. Written by bench/matrix_free_solve.py.\n")
 
 
 if __name__ == "__main__":

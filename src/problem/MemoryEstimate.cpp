@@ -14,11 +14,12 @@
 namespace signorini {
 namespace {
 
-// Stiffness nonzeros per row away from the boundary, by dimension and degree (measured on
-// box meshes), and the bytes a solve keeps per nonzero at the least (whole runs measured
-// 51 in 3D P1 and 87 in 2D P1).
-constexpr double kNonzerosPerRow[2][3] = {{14, 24, 36}, {38, 80, 150}};
-constexpr double kBytesPerNonzero = 40;
+// Bytes per unknown, by dimension and degree, with Q assembled and with a matrix-free P2/P3
+// stiffness (P1 keeps Q assembled). Measured on the largest members beyond the ranks' fixed
+// memory (110 MiB each): assembled 876, 975, 1038 (2D P1-P3) and 1462, 1843, 2451 (3D);
+// matrix-free 823, 690 (2D P2, P3) and 966, 727 (3D).
+constexpr double kAssembledBytesPerUnknown[2][3] = {{700, 780, 830}, {1150, 1450, 1950}};
+constexpr double kMatrixFreeBytesPerUnknown[2][3] = {{700, 650, 550}, {1150, 770, 580}};
 
 // MemAvailable of this machine in bytes, 0 if unknown.
 double availableBytes() {
@@ -56,8 +57,9 @@ std::string bytesText(double bytes) {
 
 }  // namespace
 
-double minimumSolveBytes(double unknowns, int dim, int degree) {
-  return unknowns * kNonzerosPerRow[dim - 2][degree - 1] * kBytesPerNonzero;
+double minimumSolveBytes(double unknowns, int dim, int degree, bool assembledStiffness) {
+  const auto& perUnknown = assembledStiffness ? kAssembledBytesPerUnknown : kMatrixFreeBytesPerUnknown;
+  return unknowns * perUnknown[dim - 2][degree - 1];
 }
 
 double boxMeshUnknowns(int dim, const std::array<long long, 3>& cells, int degree) {
@@ -66,8 +68,8 @@ double boxMeshUnknowns(int dim, const std::array<long long, 3>& cells, int degre
   return dim * nodes;
 }
 
-void checkMemoryFits(double unknowns, int dim, int degree, const Comm& comm) {
-  const double needed = minimumSolveBytes(unknowns, dim, degree);
+void checkMemoryFits(double unknowns, int dim, int degree, bool assembledStiffness, const Comm& comm) {
+  const double needed = minimumSolveBytes(unknowns, dim, degree, assembledStiffness);
   const int ranks = ranksOnThisMachine(comm);
   const double available = availableBytes();
   const double local = available > 0 ? needed / comm.getSize() * ranks / available : 0.0;

@@ -39,6 +39,13 @@ double peakResidentMiB() {
   return usage.ru_maxrss / 1024.0;  // Linux reports KiB
 }
 
+// A matrix-free P_k stiffness (k > 1) on a box mesh is never assembled: the geometric
+// multigrid starts from the P1 stiffness of the same mesh. P1 and Gmsh meshes keep Q
+// assembled for the preconditioners (the multigrid's Galerkin products, MueLu).
+bool storesNoStiffness(const ProblemDefinition& def) {
+  return def.matrixFreeStiffness && def.meshType == "box" && def.degree > 1;
+}
+
 }  // namespace
 
 AssembledProblem::AssembledProblem() = default;
@@ -61,7 +68,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     const GmshSource gmsh = readGmshSource(problem);
     if (gmsh.file.empty()) {
       ProblemDefinition def = readProblemDefinition(problem);
-      checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree, *comm);
+      checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree,
+                      !storesNoStiffness(def), *comm);
       result.space = std::make_unique<DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
       result.definition = std::move(def);
     } else {
@@ -76,7 +84,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       result.definition = readProblemDefinition(problem, dim);
       result.space = std::make_unique<DistributedSpace>(comm, std::move(mesh), result.definition.degree);
       checkMemoryFits(static_cast<double>(result.definition.dim) * result.space->numGlobalNodes(),
-                      result.definition.dim, result.definition.degree, *comm);
+                      result.definition.dim, result.definition.degree, true, *comm);
     }
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);
@@ -90,10 +98,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     assembly.start(true);
     const ProblemDefinition& def = result.definition;
     const bool box = def.meshType == "box";
-    // A matrix-free P_k stiffness (k > 1) on a box mesh is never assembled: the geometric
-    // multigrid starts from the P1 stiffness of the same mesh. P1 and Gmsh meshes keep Q
-    // assembled for the preconditioners (the multigrid's Galerkin products, MueLu).
-    const bool onlyGridStiffness = def.matrixFreeStiffness && box && def.degree > 1;
+    const bool onlyGridStiffness = storesNoStiffness(def);
     result.qp = assembleContactQP(*result.space, def, !onlyGridStiffness);
     if (def.matrixFreeStiffness) {
       result.qp.Qassembled = result.qp.Qmatrix();
