@@ -465,8 +465,9 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
   return weights;
 }
 
-RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const DistributedSpace& ds, const ProblemDefinition& problem) {
-  return rcp(new MatrixFreeElasticityOperator(ds, problem.material, dirichletData(ds, problem).fixed));
+RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const std::shared_ptr<const DistributedSpace>& ds,
+                                                      const ProblemDefinition& problem) {
+  return rcp(new MatrixFreeElasticityOperator(ds, problem.material, dirichletData(*ds, problem).fixed));
 }
 
 RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDefinition& problem,

@@ -27,9 +27,10 @@ ContactQP assembleContactQP(const DistributedSpace& space, const ProblemDefiniti
 RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& space, const ProblemDefinition& problem,
                                      const GeometricGrid& grid);
 
-// Q of assembleContactQP applied cell by cell, with the same Dirichlet elimination. Keeps a
-// reference to space, which must outlive it.
-RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const DistributedSpace& space, const ProblemDefinition& problem);
+// Q of assembleContactQP applied cell by cell, with the same Dirichlet elimination; shares
+// the space.
+RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const std::shared_ptr<const DistributedSpace>& space,
+                                                      const ProblemDefinition& problem);
 
 // The contact nodes this rank owns, as space node ids in constraint order: row first + k of
 // A is node nodes[k]. Constraints follow the renumbered nodes, so each rank owns the

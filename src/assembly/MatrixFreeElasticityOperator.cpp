@@ -13,10 +13,15 @@
 
 namespace signorini {
 
-MatrixFreeElasticityOperator::MatrixFreeElasticityOperator(const DistributedSpace& ds,
+MatrixFreeElasticityOperator::MatrixFreeElasticityOperator(std::shared_ptr<const DistributedSpace> shared,
                                                            const IsotropicMaterial& material,
                                                            const std::vector<char>& fixedSpaceDofs)
-    : ds_(ds), material_(material), lambda_(material.effectiveLame1(ds.dim())), mu_(material.lame2()) {
+    : space_(std::move(shared)),
+      ds_(*space_),
+      material_(material),
+      lambda_(material.effectiveLame1(ds_.dim())),
+      mu_(material.lame2()) {
+  const DistributedSpace& ds = ds_;
   const LagrangeSpace& space = ds.space();
   const LagrangeBasis& basis = space.basis();
   const int dim = ds.dim(), npc = space.nodesPerCell();

@@ -7,6 +7,7 @@
 // quadrature points and integrates sigma : grad phi_a, and exports the sums to the owners.
 // Prescribed DOFs have the rows and columns of the identity, as in the assembled matrix.
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "assembly/DistributedSpace.hpp"
@@ -18,9 +19,9 @@ namespace signorini {
 
 class MatrixFreeElasticityOperator : public StiffnessOperator {
  public:
-  // fixedSpaceDofs: 1 for a prescribed DOF, indexed dim * (node of ds.space()) + component.
-  // Keeps a reference to ds, which must outlive the operator.
-  MatrixFreeElasticityOperator(const DistributedSpace& ds, const IsotropicMaterial& material,
+  // fixedSpaceDofs: 1 for a prescribed DOF, indexed dim * (node of ds->space()) + component.
+  // Shares ds, on whose cells it applies Q.
+  MatrixFreeElasticityOperator(std::shared_ptr<const DistributedSpace> ds, const IsotropicMaterial& material,
                                const std::vector<char>& fixedSpaceDofs);
 
   // Y = beta Y + alpha Q X; Q is symmetric, so every mode applies Q.
@@ -51,7 +52,8 @@ class MatrixFreeElasticityOperator : public StiffnessOperator {
   template <int D>
   void diagonalOfCells(double* d) const;
 
-  const DistributedSpace& ds_;
+  std::shared_ptr<const DistributedSpace> space_;
+  const DistributedSpace& ds_;  // *space_
   IsotropicMaterial material_;
   double lambda_, mu_;
   int numPoints_ = 0;

@@ -334,7 +334,11 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   checkOutputDirectory(directory, *comm);
 
   const std::string baseDirectory = std::filesystem::path(cl.input).parent_path().string();
-  AssembledProblem problem = buildProblem(user.sublist("Problem"), comm, baseDirectory.empty() ? "." : baseDirectory);
+  Teuchos::ParameterList& problemList = user.sublist("Problem");
+  // The export writes Q: "auto" assembles it then.
+  if (!cl.exportQp.empty() && problemList.get<std::string>("stiffness: operator", "auto") == "auto")
+    problemList.set("stiffness: operator", "assembled");
+  AssembledProblem problem = buildProblem(problemList, comm, baseDirectory.empty() ? "." : baseDirectory);
   const ProblemDefinition& def = problem.definition;
   const long long n = problem.qp.b->getGlobalLength(), m = problem.qp.d->getGlobalLength();
   const double serialMeshMiB = problem.space->serialPhaseBytes() / (1024.0 * 1024.0);

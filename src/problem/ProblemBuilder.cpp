@@ -70,7 +70,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       ProblemDefinition def = readProblemDefinition(problem);
       checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree,
                       !storesNoStiffness(def), *comm);
-      result.space = std::make_unique<DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
+      result.space = std::make_shared<const DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
       result.definition = std::move(def);
     } else {
       std::shared_ptr<SimplexMesh> mesh;
@@ -82,7 +82,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       int dim = mesh ? mesh->dim : 0;
       Teuchos::broadcast(*comm, 0, 1, &dim);
       result.definition = readProblemDefinition(problem, dim);
-      result.space = std::make_unique<DistributedSpace>(comm, std::move(mesh), result.definition.degree);
+      result.space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), result.definition.degree);
       checkMemoryFits(static_cast<double>(result.definition.dim) * result.space->numGlobalNodes(),
                       result.definition.dim, result.definition.degree, true, *comm);
     }
@@ -102,7 +102,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     result.qp = assembleContactQP(*result.space, def, !onlyGridStiffness);
     if (def.matrixFreeStiffness) {
       result.qp.Qassembled = result.qp.Qmatrix();
-      result.qp.Q = matrixFreeStiffness(*result.space, def);
+      result.qp.Q = matrixFreeStiffness(result.space, def);
     }
     if (box) result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
     if (onlyGridStiffness) result.qp.gridStiffness = assembleGridStiffness(*result.space, def, *result.qp.grid);

@@ -75,11 +75,12 @@ ParameterList validProblemParameters() {
         "Expert: Quadrature degree for body forces and tractions; -1: element degree + 4 (exact for "
         "the benchmark family)",
         range(-1, 30));
-  p.set("stiffness: operator", "assembled",
+  p.set("stiffness: operator", "auto",
         "\"assembled\": Q is a sparse matrix; \"matrix-free\": Q is applied cell by cell. On a box mesh of "
         "degree 2 or 3 no Q is assembled then (the geometric multigrid starts from the mesh's P1 stiffness); "
-        "P1 and Gmsh meshes still assemble Q for the preconditioner",
-        choices({"assembled", "matrix-free"}));
+        "P1 and Gmsh meshes still assemble Q for the preconditioner. \"auto\": matrix-free on a box mesh of "
+        "degree 2 or 3 (less memory, as fast end to end), else assembled",
+        choices({"auto", "assembled", "matrix-free"}));
 
   ParameterList& dirichlet = p.sublist("Dirichlet", false,
                                        "One sublist per clamped boundary, named after it");
@@ -161,7 +162,9 @@ ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) 
   }
   const int q = p.get<int>("load: quadrature degree");
   def.loadQuadratureDegree = q < 0 ? def.degree + 4 : q;
-  def.matrixFreeStiffness = p.get<std::string>("stiffness: operator") == "matrix-free";
+  const std::string stiffness = p.get<std::string>("stiffness: operator");
+  def.matrixFreeStiffness =
+      stiffness == "matrix-free" || (stiffness == "auto" && def.meshType == "box" && def.degree > 1);
 
   def.dirichlet = boundaryFields(p, "Dirichlet", "displacement: ", dim);
   def.traction = boundaryFields(p, "Traction", "traction: ", dim);

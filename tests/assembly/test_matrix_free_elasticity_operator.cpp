@@ -44,7 +44,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, AppliesTheAssembledStiffness) {
   const Case k = GetParam();
   auto comm = Tpetra::getDefaultComm();
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), comm);
-  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(*problem.space, problem.definition);
+  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(problem.space, problem.definition);
   const CrsMatrix& K = *problem.qp.Qmatrix();
   ASSERT_TRUE(Q->getDomainMap()->isSameAs(*K.getDomainMap()));
   ASSERT_TRUE(Q->getRangeMap()->isSameAs(*K.getRangeMap()));
@@ -75,7 +75,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, AppliesTheAssembledStiffness) {
 TEST_P(MatrixFreeElasticityOperatorTest, DiagonalIsTheAssembledOne) {
   const Case k = GetParam();
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), Tpetra::getDefaultComm());
-  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(*problem.space, problem.definition);
+  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(problem.space, problem.definition);
   const CrsMatrix& K = *problem.qp.Qmatrix();
   Vector expected(K.getRowMap()), got(K.getRowMap());
   K.getLocalDiagCopy(expected);
@@ -88,7 +88,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, DiagonalIsTheAssembledOne) {
 TEST_P(MatrixFreeElasticityOperatorTest, SelectedRowsAndPrescribedDofsAreTheAssembledOnes) {
   const Case k = GetParam();
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), Tpetra::getDefaultComm());
-  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(*problem.space, problem.definition);
+  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(problem.space, problem.definition);
   const CrsMatrix& K = *problem.qp.Qmatrix();
   EXPECT_EQ(Q->prescribedDofs(), GeometricMultigridPreconditioner::prescribedRows(K));
 
@@ -123,6 +123,7 @@ TEST(MatrixFreeElasticityOperator, SolvesThePaperProblemsToTheAssembledOptimalVa
   auto comm = Tpetra::getDefaultComm();
   for (const char* name : {"A", "B", "C", "D", "E", "F", "G", "H", "I", "J", "K", "L", "M"}) {
     Teuchos::ParameterList definition = shippedProblem(std::string("paper/") + name);
+    definition.set("stiffness: operator", "assembled");
     const AssembledProblem assembled = buildProblem(definition, comm);
     definition.set("stiffness: operator", "matrix-free");
     const AssembledProblem matrixFree = buildProblem(definition, comm);
@@ -156,6 +157,16 @@ TEST(MatrixFreeElasticityOperator, SolvesP2AndP3BoxesWithoutAssemblingQ) {
     EXPECT_NEAR(f.objective, a.objective, 1e-9 * std::fabs(a.objective)) << name;
     EXPECT_LE(f.krylovIterations, 1.5 * a.krylovIterations) << name;
   }
+}
+
+// The QP of a matrix-free problem stays valid once the problem is gone: Q shares the space.
+TEST(MatrixFreeElasticityOperator, OutlivesTheProblem) {
+  Teuchos::ParameterList definition = contactBoxProblem(2, 6);
+  definition.set("element: degree", 2);
+  definition.set("body force: y", "-0.05");
+  definition.set("stiffness: operator", "matrix-free");
+  const ContactQP qp = buildProblem(definition, Tpetra::getDefaultComm()).qp;
+  EXPECT_TRUE(InteriorPointSolver(Teuchos::ParameterList()).solve(qp).converged());
 }
 
 // Preconditioners that would need Q assembled are refused with a message, not run.

@@ -229,6 +229,23 @@ TEST(Application, UnwritableOutputDirectoryStopsTheRunBeforeTheSolve) {
   EXPECT_EQ(log.str(), "");  // nothing built, nothing solved
 }
 
+// Problem C (P2 on a box) runs matrix-free by default; --export-qp assembles Q for its file.
+TEST(Application, ExportAssemblesAStiffnessThatIsMatrixFreeByDefault) {
+  auto comm = Tpetra::getDefaultComm();
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  const std::string dir = std::string(binary ? binary : "/tmp") + "/app-export-np" + std::to_string(comm->getSize());
+  CommandLine cl;
+  cl.input = sourceDir() + "/xml/paper/C.xml";
+  cl.output = dir + "/out";
+  cl.exportQp = dir + "/qp";
+  std::ostringstream log;
+  ASSERT_TRUE(runApplication(cl, comm, log).converged());
+  comm->barrier();
+  if (comm->getRank() == 0) {
+    EXPECT_NE(readFile(dir + "/qp/Q.mtx").find("%%MatrixMarket matrix coordinate"), std::string::npos);
+  }
+}
+
 // A whole run of problem M: outputs exist and summary.json carries the solver's counters.
 TEST(Application, RunWritesSummaryHistoryAndQp) {
   auto comm = Tpetra::getDefaultComm();

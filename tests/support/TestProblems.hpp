@@ -15,8 +15,12 @@ std::string sourceDir();
 
 // The "Problem" sublist of xml/<relativePath>.
 Teuchos::ParameterList shippedProblem(const std::string& relativePath);
+// The same with the stiffness assembled, for tests that read Q's matrix (P2/P3 box meshes
+// are matrix-free by default).
+Teuchos::ParameterList assembledShippedProblem(const std::string& relativePath);
 
-// A box problem: no load, no boundary condition, no contact; the caller adds what it needs.
+// A box problem: no load, no boundary condition, no contact, the stiffness assembled; the
+// caller adds what it needs.
 Teuchos::ParameterList boxProblem(int dim, int cells, int degree);
 
 // A P1 box clamped on its top face, with contact on its bottom one and no load.

@@ -40,7 +40,9 @@ struct ProblemDefinition {
   IsotropicMaterial material;
   std::vector<Expression> bodyForce;  ///< dim components
   int loadQuadratureDegree = 5;
-  bool matrixFreeStiffness = false;  ///< Q applied cell by cell (assembled as well for P1 and Gmsh meshes)
+  /// Q applied cell by cell (assembled as well for P1 and Gmsh meshes); by default on box
+  /// meshes of degree 2 and 3
+  bool matrixFreeStiffness = false;
   std::vector<BoundaryField> dirichlet, traction;
   std::string contactBoundary;
   std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body

@@ -17,7 +17,8 @@ namespace signorini {
 class DistributedSpace;
 
 /// A distributed problem ready to solve: the QP and what output needs (the definition and
-/// the space). Move-only; owns the space, shares the QP's Tpetra objects.
+/// the space). Move-only; shares the space with a matrix-free Q (which applies Q on it, so a
+/// copy of the QP stays valid without the problem) and the QP's Tpetra objects.
 struct AssembledProblem {
   AssembledProblem();
   AssembledProblem(AssembledProblem&&) noexcept;
@@ -26,7 +27,7 @@ struct AssembledProblem {
 
   ProblemDefinition definition;
   /// This rank's mesh and P_k space with their global numbering (for output and the pressure).
-  std::unique_ptr<DistributedSpace> space;
+  std::shared_ptr<const DistributedSpace> space;
   ContactQP qp;
   double setupSeconds = 0, assemblySeconds = 0;  ///< max over ranks
   /// Rank 0's peak resident set during mesh and space, above its size before them (METIS'

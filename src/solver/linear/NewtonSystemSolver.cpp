@@ -154,9 +154,13 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   if (hierarchy == Hierarchy::Geometric || (hierarchy == Hierarchy::Auto && haveGrid)) {
     if (!haveGrid)
       throw InputError("Preconditioner/hierarchy \"geometric\" needs a box mesh (Problem/mesh: type \"box\")");
+    // Without Q assembled the fine level cannot be factored: the P_k -> P1 level is taken
+    // however few unknowns the P1 grid has.
+    long long coarsestSize = prec.get<int>("geometric: coarsest size");
+    if (!assembled) coarsestSize = std::min(coarsestSize, qp.blockSize * qp.grid->numVertices());
     auto geometric = std::make_unique<GeometricMultigridPreconditioner>(
         *qp.grid, qp.Q->getDomainMap(), stiffness.prescribedDofs(), *qp.coordinates, qp.blockSize,
-        prec.get<int>("geometric: coarsest size"), prec.get<int>("geometric: direct solve size"),
+        coarsestSize, prec.get<int>("geometric: direct solve size"),
         prec.sublist("Ifpack2"), muelu, prec.get<int>("geometric: eigenvalue update steps"));
     if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() > 0 &&
         (assembled || !qp.gridStiffness.is_null())) {
@@ -178,7 +182,8 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   }
   if (!assembled && !geometric_)
     throw InputError("a matrix-free Q is preconditioned by Preconditioner/type \"amg of H\" on geometric levels "
-                     "(a box mesh, P2 or P3) alone; set Problem/stiffness: operator to \"assembled\"");
+                     "alone (a box mesh of degree 2 or 3; from a library, ContactQP::grid and gridStiffness); set "
+                     "Problem/stiffness: operator to \"assembled\"");
   if (correction_ != ContactCorrection::None) {
     const RCP<const CrsMatrix> contactRows = stiffness.contactRows(*qp.A);
     subspace_ = rcp(new ContactSubspaceSolver(*contactRows, *qp.A,

@@ -18,7 +18,7 @@ using namespace signorini::testing;
 
 TEST(BarrierHessianOperator, MatchesTheAssembledMatrix) {
   for (const char* name : {"M", "B", "H"}) {
-    AssembledProblem p = buildProblem(shippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm());
+    AssembledProblem p = buildProblem(assembledShippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm());
     BarrierHessianOperator H(p.qp.Q, p.qp.A);
     Vector D(p.qp.A->getRangeMap());
     D.randomize(1.0, 1e6);  // spans the range of y/s met near a solution
@@ -62,7 +62,7 @@ double relativeMismatch(const BarrierHessianOperator& H, const CrsMatrix& assemb
 // Contact constraints couple the DOFs of one node, so H shares Q's graph and every
 // assembly after the first reuses the positions found by the first.
 TEST(BarrierHessianOperator, AssemblySharesQsGraphAndFollowsNewWeights) {
-  AssembledProblem p = buildProblem(shippedProblem("paper/H"), Tpetra::getDefaultComm());
+  AssembledProblem p = buildProblem(assembledShippedProblem("paper/H"), Tpetra::getDefaultComm());
   BarrierHessianOperator H(p.qp.Q, p.qp.A);
   Vector D(p.qp.A->getRangeMap());
   for (int round = 0; round < 3; ++round) {
@@ -78,7 +78,7 @@ TEST(BarrierHessianOperator, AssemblySharesQsGraphAndFollowsNewWeights) {
 // Between Newton steps the preconditioner's H is updated in place: the same values as a
 // fresh assembly, and the change it reports is the difference, on the contact rows alone.
 TEST(BarrierHessianOperator, UpdateInPlaceEqualsAFreshAssembly) {
-  AssembledProblem p = buildProblem(shippedProblem("paper/H"), Tpetra::getDefaultComm());
+  AssembledProblem p = buildProblem(assembledShippedProblem("paper/H"), Tpetra::getDefaultComm());
   BarrierHessianOperator H(p.qp.Q, p.qp.A);
   ASSERT_TRUE(H.assemblesOnQGraph());
   Vector D0(p.qp.A->getRangeMap()), D1(p.qp.A->getRangeMap());
@@ -119,7 +119,7 @@ TEST(BarrierHessianOperator, UpdateInPlaceEqualsAFreshAssembly) {
 // A constraint that couples DOFs far apart (as a mortar or multi-point constraint would)
 // falls outside Q's graph: the assembly must still be exact.
 TEST(BarrierHessianOperator, AssemblesConstraintsOutsideQsPattern) {
-  AssembledProblem p = buildProblem(shippedProblem("paper/G"), Tpetra::getDefaultComm());
+  AssembledProblem p = buildProblem(assembledShippedProblem("paper/G"), Tpetra::getDefaultComm());
   const auto& A0 = *p.qp.A;
   const GlobalOrdinal n = static_cast<GlobalOrdinal>(A0.getDomainMap()->getGlobalNumElements());
   auto A = rcp(new CrsMatrix(A0.getRowMap(), 4));
@@ -149,7 +149,7 @@ TEST(BarrierHessianOperator, AssemblesConstraintsOutsideQsPattern) {
 // keeps the pattern of its first call and follows new weights exactly (P2 in 2D and 3D).
 TEST(BarrierHessianOperator, AssemblesWeightedGapsInAFixedPattern) {
   for (const char* name : {"H", "C"}) {
-    Teuchos::ParameterList problem = shippedProblem(std::string("paper/") + name);
+    Teuchos::ParameterList problem = assembledShippedProblem(std::string("paper/") + name);
     problem.sublist("Contact").set("formulation", "weighted gap");
     AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
     BarrierHessianOperator H(p.qp.Q, p.qp.A);
@@ -167,7 +167,7 @@ TEST(BarrierHessianOperator, AssemblesWeightedGapsInAFixedPattern) {
 }
 
 TEST(BarrierHessianOperator, ZeroWeightsGiveQ) {
-  AssembledProblem p = buildProblem(shippedProblem("paper/G"), Tpetra::getDefaultComm());
+  AssembledProblem p = buildProblem(assembledShippedProblem("paper/G"), Tpetra::getDefaultComm());
   BarrierHessianOperator H(p.qp.Q, p.qp.A);
   Vector x(H.getDomainMap()), y(H.getRangeMap()), z(H.getRangeMap());
   x.randomize();
