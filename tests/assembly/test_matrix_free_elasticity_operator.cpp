@@ -11,7 +11,7 @@
 #include <Tpetra_MultiVector.hpp>
 
 #include "assembly/ElasticityAssembler.hpp"
-#include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
+#include "solver/linear/StiffnessParts.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/problem/ProblemParameters.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
@@ -90,7 +90,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, SelectedRowsAndPrescribedDofsAreTheAsse
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), Tpetra::getDefaultComm());
   const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(problem.space, problem.definition);
   const CrsMatrix& K = *problem.qp.Qmatrix();
-  EXPECT_EQ(Q->prescribedDofs(), GeometricMultigridPreconditioner::prescribedRows(K));
+  EXPECT_EQ(Q->prescribedDofs(), prescribedRows(K));
 
   // Every third DOF: rows of free and prescribed DOFs, owned next to other ranks' DOFs.
   Vector selected(K.getRowMap());

@@ -229,11 +229,16 @@ TEST(Application, UnwritableOutputDirectoryStopsTheRunBeforeTheSolve) {
   EXPECT_EQ(log.str(), "");  // nothing built, nothing solved
 }
 
+// A directory of its own for a test on this rank count, in the build tree when known.
+std::string scratchDirectory(const std::string& name, const Comm& comm) {
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  return std::string(binary ? binary : "/tmp") + "/" + name + "-np" + std::to_string(comm.getSize());
+}
+
 // Problem C (P2 on a box) runs matrix-free by default; --export-qp assembles Q for its file.
 TEST(Application, ExportAssemblesAStiffnessThatIsMatrixFreeByDefault) {
   auto comm = Tpetra::getDefaultComm();
-  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
-  const std::string dir = std::string(binary ? binary : "/tmp") + "/app-export-np" + std::to_string(comm->getSize());
+  const std::string dir = scratchDirectory("app-export", *comm);
   CommandLine cl;
   cl.input = sourceDir() + "/xml/paper/C.xml";
   cl.output = dir + "/out";
@@ -249,8 +254,7 @@ TEST(Application, ExportAssemblesAStiffnessThatIsMatrixFreeByDefault) {
 // A whole run of problem M: outputs exist and summary.json carries the solver's counters.
 TEST(Application, RunWritesSummaryHistoryAndQp) {
   auto comm = Tpetra::getDefaultComm();
-  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
-  const std::string dir = std::string(binary ? binary : "/tmp") + "/app-test-np" + std::to_string(comm->getSize());
+  const std::string dir = scratchDirectory("app-test", *comm);
   CommandLine cl;
   cl.input = sourceDir() + "/xml/paper/M.xml";
   cl.output = dir + "/out";

@@ -45,9 +45,6 @@ class BarrierHessianOperator : public Operator {
   // Q + A^T D A with other weights D than the operator's (on A's range map).
   RCP<CrsMatrix> assemble(const Vector& D) const;
 
-  // Q as a matrix (see the constructor), or null.
-  const RCP<const CrsMatrix>& assembledQ() const { return Qmatrix_; }
-
   // A^T D A alone, on Q's row map (nonzero on the contact DOFs' rows), for weights D (on A's
   // range map); Q need not be assembled. The matrix keeps its pattern (that of A^T A) from
   // the first call and is overwritten by the next one. Collective.

@@ -5,7 +5,6 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/core/Error.hpp"
-#include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
 
 namespace signorini {
 
@@ -31,13 +30,28 @@ RCP<Vector> StiffnessParts::diagonal() const {
 
 std::vector<char> StiffnessParts::prescribedDofs() const {
   require();
-  return matrix_.is_null() ? stiffness_->prescribedDofs() : GeometricMultigridPreconditioner::prescribedRows(*matrix_);
+  return matrix_.is_null() ? stiffness_->prescribedDofs() : prescribedRows(*matrix_);
 }
 
 RCP<const CrsMatrix> StiffnessParts::contactRows(const CrsMatrix& A) const {
   require();
   if (!matrix_.is_null()) return matrix_;
   return stiffness_->selectedRows(*contactDofIndicator(A));
+}
+
+std::vector<char> prescribedRows(const CrsMatrix& Q) {
+  std::vector<char> prescribed(Q.getNodeNumRows(), 0);
+  for (std::size_t row = 0; row < Q.getNodeNumRows(); ++row) {
+    typename CrsMatrix::local_inds_host_view_type cols;
+    typename CrsMatrix::values_host_view_type vals;
+    Q.getLocalRowView(static_cast<LocalOrdinal>(row), cols, vals);
+    const GlobalOrdinal gid = Q.getRowMap()->getGlobalElement(row);
+    bool coupled = false;
+    for (std::size_t k = 0; k < cols.extent(0); ++k)
+      if (Q.getColMap()->getGlobalElement(cols(k)) != gid && vals(k) != 0.0) coupled = true;
+    prescribed[row] = !coupled;
+  }
+  return prescribed;
 }
 
 RCP<Vector> contactDofIndicator(const CrsMatrix& A) {

@@ -30,6 +30,10 @@ class StiffnessParts {
   void require() const;
 };
 
+// 1 for each owned row of Q with a diagonal entry only, as symmetric elimination leaves a
+// Dirichlet DOF.
+std::vector<char> prescribedRows(const CrsMatrix& Q);
+
 // 1 on the DOFs (of A's domain map) that a row of A uses. Collective.
 RCP<Vector> contactDofIndicator(const CrsMatrix& A);
 

@@ -230,21 +230,6 @@ Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParamete
   return p;
 }
 
-std::vector<char> GeometricMultigridPreconditioner::prescribedRows(const CrsMatrix& Q) {
-  std::vector<char> prescribed(Q.getNodeNumRows(), 0);
-  for (std::size_t row = 0; row < Q.getNodeNumRows(); ++row) {
-    typename CrsMatrix::local_inds_host_view_type cols;
-    typename CrsMatrix::values_host_view_type vals;
-    Q.getLocalRowView(static_cast<LocalOrdinal>(row), cols, vals);
-    const GlobalOrdinal gid = Q.getRowMap()->getGlobalElement(row);
-    bool coupled = false;
-    for (std::size_t k = 0; k < cols.extent(0); ++k)
-      if (Q.getColMap()->getGlobalElement(cols(k)) != gid && vals(k) != 0.0) coupled = true;
-    prescribed[row] = !coupled;
-  }
-  return prescribed;
-}
-
 GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
     const GeometricGrid& grid, const RCP<const Map>& dofMap, const std::vector<char>& prescribed,
     const MultiVector& coordinates, int blockSize, long long coarsestSize, long long directSolveSize,

@@ -39,7 +39,7 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
 
   // `grid`: the P1 grid of the fine space's mesh; `dofMap`: the fine DOFs (the row map of
   // every matrix given to compute()), `prescribed` 1 for each owned one that is a Dirichlet
-  // DOF (a unit row and column, see prescribedRows()); `coordinates`: the owned fine nodes,
+  // DOF (a unit row and column, see StiffnessParts); `coordinates`: the owned fine nodes,
   // on a node map with DOF = blockSize * node + component. Collective.
   // `eigenvalueUpdateSteps`: Lanczos steps of the smoothers' eigenvalue estimates after a
   // Galerkin update, started from the previous estimate's Ritz vector and the changed rows
@@ -51,8 +51,6 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
                                    int blockSize, long long coarsestSize, long long directSolveSize,
                                    const Teuchos::ParameterList& smoother,
                                    const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps);
-  // The rows of Q with a diagonal entry only, as symmetric elimination leaves Dirichlet DOFs.
-  static std::vector<char> prescribedRows(const CrsMatrix& Q);
   ~GeometricMultigridPreconditioner() override;
 
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;

@@ -18,6 +18,7 @@
 #include "signorini/solver/InteriorPointSolver.hpp"
 #include "solver/linear/BarrierHessianOperator.hpp"
 #include "solver/linear/KrylovSolver.hpp"
+#include "solver/linear/StiffnessParts.hpp"
 #include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
 #include "solver/preconditioner/MueLuPreconditioner.hpp"
 #include "support/TestProblems.hpp"
@@ -43,9 +44,23 @@ AssembledProblem box(int dim, int cells, int degree, bool clamped = true) {
 GeometricMultigridPreconditioner multigrid(const ContactQP& qp, long long coarsestSize = 200,
                                            int eigenvalueUpdateSteps = 3, long long directSolveSize = 100) {
   return GeometricMultigridPreconditioner(*qp.grid, qp.Qmatrix()->getRowMap(),
-                                          GeometricMultigridPreconditioner::prescribedRows(*qp.Qmatrix()),
+                                          prescribedRows(*qp.Qmatrix()),
                                           *qp.coordinates, qp.blockSize, coarsestSize, directSolveSize,
                                           Teuchos::ParameterList(), Teuchos::ParameterList(), eigenvalueUpdateSteps);
+}
+
+// Every coarse matrix of `got` applies that of `expected` to 1e-12, on a random vector.
+void expectSameCoarseMatrices(const GeometricMultigridPreconditioner& got,
+                              const GeometricMultigridPreconditioner& expected, const std::string& label) {
+  ASSERT_EQ(got.geometricLevels(), expected.geometricLevels()) << label;
+  for (int l = 1; l <= expected.geometricLevels(); ++l) {
+    Vector x(expected.levelMatrix(l)->getDomainMap()), a(x.getMap()), b(x.getMap());
+    x.randomize();
+    got.levelMatrix(l)->apply(x, a);
+    expected.levelMatrix(l)->apply(x, b);
+    a.update(-1.0, b, 1.0);
+    EXPECT_LT(a.norm2(), 1e-12 * b.norm2()) << label << ", level " << l;
+  }
 }
 
 // A box clamped on its top face with contact on its bottom one, and the Hessians
@@ -293,14 +308,7 @@ TEST(GeometricMultigrid, FineOperatorGivesTheHierarchyOfTheAssembledSum) {
       EXPECT_EQ(sum.levelMatrix(1).get(), firstCoarse.get()) << label << ": not updated in place";
       GeometricMultigridPreconditioner assembled = multigrid(qp, 50, 0);
       assembled.compute(box.H.assemble());
-      for (int l = 1; l <= sum.geometricLevels(); ++l) {
-        Vector x(assembled.levelMatrix(l)->getDomainMap()), a(x.getMap()), b(x.getMap());
-        x.randomize();
-        sum.levelMatrix(l)->apply(x, a);
-        assembled.levelMatrix(l)->apply(x, b);
-        a.update(-1.0, b, 1.0);
-        EXPECT_LT(a.norm2(), 1e-12 * b.norm2()) << label << ", level " << l;
-      }
+      expectSameCoarseMatrices(sum, assembled, label);
       Vector x(qp.Q->getDomainMap()), a(x.getMap()), b(x.getMap());
       x.randomize();
       sum.getOperator()->apply(x, a);
@@ -370,14 +378,7 @@ TEST(GeometricMultigrid, GridStiffnessIsTheGalerkinProductOfQ) {
     fromGrid.setGridStiffness(*grid);
     fromQ.computeForSum(Teuchos::rcpFromRef(H), diagonal, C);
     fromGrid.computeForSum(Teuchos::rcpFromRef(H), diagonal, C);
-    for (int l = 1; l <= fromQ.geometricLevels(); ++l) {
-      Vector x(fromQ.levelMatrix(l)->getDomainMap()), a(x.getMap()), b(x.getMap());
-      x.randomize();
-      fromGrid.levelMatrix(l)->apply(x, a);
-      fromQ.levelMatrix(l)->apply(x, b);
-      a.update(-1.0, b, 1.0);
-      EXPECT_LT(a.norm2(), 1e-12 * b.norm2()) << label << ", level " << l;
-    }
+    expectSameCoarseMatrices(fromGrid, fromQ, label);
   }
 }
 
@@ -387,7 +388,7 @@ TEST(GeometricMultigrid, RejectsAGridTheMeshDoesNotRefine) {
   BoxGrid wrong = dynamic_cast<const BoxGrid&>(*problem.qp.grid);
   wrong.cells = {6, 6, 1};  // halved: vertices at thirds, which the 8-cell mesh lacks
   const CrsMatrix& Q = *problem.qp.Qmatrix();
-  EXPECT_THROW(GeometricMultigridPreconditioner(wrong, Q.getRowMap(), GeometricMultigridPreconditioner::prescribedRows(Q),
+  EXPECT_THROW(GeometricMultigridPreconditioner(wrong, Q.getRowMap(), prescribedRows(Q),
                                                 *problem.qp.coordinates, 2, 1, 0, Teuchos::ParameterList(),
                                                 Teuchos::ParameterList(), 5),
                InputError);
