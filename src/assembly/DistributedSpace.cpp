@@ -1,6 +1,8 @@
 #include "assembly/DistributedSpace.hpp"
 
 #include <algorithm>
+#include <tuple>
+#include <utility>
 #if defined(__GLIBC__)
 #include <malloc.h>
 #endif
@@ -25,6 +27,25 @@ RCP<const Map> dofMapOf(const std::vector<GlobalOrdinal>& nodes, int dim, const 
     for (int c = 0; c < dim; ++c) dofs.push_back(dim * n + c);
   return rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                      Teuchos::ArrayView<const GlobalOrdinal>(dofs), 0, comm));
+}
+
+// The owned nodes' map, and its DOF map. Ranks own consecutive ranges of the renumbered nodes
+// in rank order; told so, Tpetra finds the owner of an index by a search in the ranges,
+// where a map given as a list of indices needs a distributed directory built with an
+// all-to-all exchange of every index (the largest part of the imports' setup).
+std::pair<RCP<const Map>, RCP<const Map>> ownedMapsOf(const std::vector<GlobalOrdinal>& owned, int dim,
+                                                      const RCP<const Comm>& comm) {
+  const long long count = static_cast<long long>(owned.size());
+  long long upTo = 0;
+  Teuchos::scan(*comm, Teuchos::REDUCE_SUM, 1, &count, &upTo);
+  bool consecutive = true;
+  for (std::size_t i = 0; i < owned.size(); ++i) consecutive = consecutive && owned[i] == upTo - count + static_cast<long long>(i);
+  if (!onEveryRank(*comm, consecutive)) {
+    const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+    return {rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(owned), 0, comm)), dofMapOf(owned, dim, comm)};
+  }
+  const auto all = static_cast<Tpetra::global_size_t>(sumOverRanks(*comm, count));
+  return {rcp(new Map(all, owned.size(), 0, comm)), rcp(new Map(dim * all, dim * owned.size(), 0, comm))};
 }
 
 }  // namespace
@@ -115,9 +136,8 @@ void DistributedSpace::adopt(detail::MeshPart&& part, int degree) {
   const std::vector<GlobalOrdinal> owned(overlap.begin(), overlap.begin() + numOwned);
 
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  ownedNodeMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(owned), 0, comm_));
+  std::tie(ownedNodeMap_, ownedDofMap_) = ownedMapsOf(owned, dim(), comm_);
   overlapNodeMap_ = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(overlap), 0, comm_));
-  ownedDofMap_ = dofMapOf(owned, dim(), comm_);
   overlapDofMap_ = dofMapOf(overlap, dim(), comm_);
 }
 

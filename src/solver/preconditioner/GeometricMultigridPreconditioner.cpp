@@ -417,14 +417,24 @@ void GeometricMultigridPreconditioner::setGridStiffness(const CrsMatrix& gridSti
   fineStiffness_ = Teuchos::null;
 }
 
-RCP<const CrsMatrix> GeometricMultigridPreconditioner::firstCoarseStiffness() const {
-  if (!firstCoarseStiffness_.is_null()) return firstCoarseStiffness_;
+RCP<CrsMatrix> GeometricMultigridPreconditioner::firstCoarseStiffness() const {
+  if (!firstCoarseStiffness_.is_null()) return rcp(new CrsMatrix(*firstCoarseStiffness_, Teuchos::Copy));
   if (fineStiffness_.is_null())
     throw Error("GeometricMultigridPreconditioner::computeForSum needs setFineStiffness() or setGridStiffness() first");
   const Level& fine = *levels_[0];
   auto PtQP = rcp(new CrsMatrix(fine.P->getDomainMap(), 0));
   Tpetra::TripleMatrixMultiply::MultiplyRAP(*fine.P, true, *fineStiffness_, false, *fine.P, false, *PtQP);
   return PtQP;
+}
+
+// C's entries lie in Q's pattern, so those of P^T C P lie in P^T Q P's: they are summed into
+// it in place. Tpetra's sum of two matrices, which builds a third, took longer than the
+// product P^T Q P itself.
+RCP<CrsMatrix> GeometricMultigridPreconditioner::firstCoarseMatrix(const RCP<const CrsMatrix>& C) const {
+  const RCP<CrsMatrix> term = galerkinProductOfChange(levels_[0]->P, C);
+  const RCP<CrsMatrix> sum = firstCoarseStiffness();
+  if (addInPattern(*sum, *term)) return sum;
+  return Tpetra::MatrixMatrix::add(1.0, false, *firstCoarseStiffness(), 1.0, false, *term);
 }
 
 void GeometricMultigridPreconditioner::computeForSum(const RCP<const Operator>& H, const Vector& diagonal,
@@ -442,8 +452,7 @@ void GeometricMultigridPreconditioner::computeForSum(const RCP<const Operator>& 
       if (addInPattern(*first.A, *product)) coarseChange = product;
     }
     if (coarseChange.is_null()) {  // P^T Q P + P^T C P afresh
-      first.A = Tpetra::MatrixMatrix::add(1.0, false, *firstCoarseStiffness(), 1.0, false,
-                                          *galerkinProductOfChange(fine.P, C));
+      first.A = firstCoarseMatrix(C);
       change = Teuchos::null;
     }
     rememberTerm(C);

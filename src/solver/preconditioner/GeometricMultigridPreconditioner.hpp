@@ -115,7 +115,9 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   double maxEigenvalue(Level& level, const RCP<const CrsMatrix>& change);
   RCP<const CrsMatrix> changeOfTerm(const CrsMatrix& C) const;
   void rememberTerm(const RCP<const CrsMatrix>& C);
-  RCP<const CrsMatrix> firstCoarseStiffness() const;
+  // P^T Q P (a matrix of its own), and P^T (Q + C) P.
+  RCP<CrsMatrix> firstCoarseStiffness() const;
+  RCP<CrsMatrix> firstCoarseMatrix(const RCP<const CrsMatrix>& C) const;
 };
 
 }  // namespace signorini
