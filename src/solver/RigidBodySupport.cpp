@@ -182,19 +182,19 @@ RCP<Vector> motionTheLoadPullsFree(const ContactQP& qp, const MultiVector& F) {
 
 }  // namespace
 
-void checkRigidBodyMotionsHeld(const ContactQP& qp) {
-  if (qp.nullspace.is_null() || qp.nullspace->getNumVectors() == 0) return;
+int checkRigidBodyMotionsHeld(const ContactQP& qp) {
+  if (qp.nullspace.is_null() || qp.nullspace->getNumVectors() == 0) return 0;
   const MultiVector& R = *qp.nullspace;
   const int k = static_cast<int>(R.getNumVectors());
   MultiVector QR(qp.Q->getRangeMap(), k);
   qp.Q->apply(R, QR);
   // theta = rᵀQr / rᵀr: ~0 for the motions no prescribed displacement removes.
   const Eigen energy = symmetricEigen(innerProducts(R, QR), innerProducts(R, R), k);
-  if (energy.values.empty()) return;  // dependent modes: nothing to conclude from them
+  if (energy.values.empty()) return 0;  // dependent modes: nothing to conclude from them
   const double scale = stiffnessScale(qp);
   int free = 0;
   while (free < k && energy.values[free] <= kFree * scale) ++free;
-  if (free == 0) return;
+  if (free == 0) return 0;
   const RCP<const MultiVector> F = combine(R, energy.vectors, free);  // orthonormal columns
 
   if (const RCP<Vector> r = motionNoConstraintStops(qp, *F))
@@ -208,6 +208,7 @@ void checkRigidBodyMotionsHeld(const ContactQP& qp) {
                      ", which no prescribed displacement removes and no contact constraint resists: the "
                      "problem has no equilibrium; prescribe a displacement that holds the body "
                      "(Problem/Dirichlet) or check the direction of the load");
+  return free;
 }
 
 }  // namespace signorini

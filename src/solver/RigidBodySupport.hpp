@@ -10,8 +10,9 @@
 namespace signorini {
 
 // Throws an InputError (on every rank) naming the first rigid body motion that nothing
-// holds or that the load pulls free. Does nothing without rigid body modes (qp.nullspace).
-// Collective; costs one application of Q and of A to the modes.
-void checkRigidBodyMotionsHeld(const ContactQP& qp);
+// holds or that the load pulls free. Returns the number of independent rigid body motions
+// no prescribed displacement removes (those the contact holds); 0 without rigid body modes
+// (qp.nullspace). Collective; costs one application of Q and of A to the modes.
+int checkRigidBodyMotionsHeld(const ContactQP& qp);
 
 }  // namespace signorini

@@ -19,10 +19,12 @@ enum class Centering { Mehrotra, Fixed };
 enum class ForcingType { Reduction, Adaptive, Constant, EisenstatWalker, Relative };
 enum class StartingPoint { Shift, Relaxed };
 
+// `freeWithoutContact`: some rigid body motion is not removed by a prescribed displacement, so
+// that Q is singular (checkRigidBodyMotionsHeld tells).
 SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
-                            IterationObserver& observer);
+                            IterationObserver& observer, bool freeWithoutContact);
 SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
-                               IterationObserver& observer);
+                               IterationObserver& observer, bool freeWithoutContact);
 // No constraints (m = 0): one Krylov solve of Q v = b to the KKT tolerance, whichever method.
 SolveResult solveUnconstrained(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
                                IterationObserver& observer);
@@ -42,11 +44,8 @@ struct ProblemScales {
   int krylovIterations = 0;
 };
 // `newton` must have its weights set to zero (H = Q); they are zero again on return.
-ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0);
-
-// True if Q maps one of the rigid body modes (qp.nullspace; none given: false) to zero
-// (to round-off): no Dirichlet condition holds the body in that direction. Collective.
-bool hasRigidBodyMotion(const ContactQP& qp);
+ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0,
+                            bool freeWithoutContact);
 
 // Adds the end-of-solve data (objective, multipliers, KKT measures, active set) to `result`.
 void finishResult(const ContactQP& qp, const Vector& v, const Vector& lambda, const Vector& slack,

@@ -137,12 +137,12 @@ SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initia
   IterationObserver silent;
   IterationObserver& obs = observer ? *observer : silent;
   checkRepresentableScale(qp);
-  checkRigidBodyMotionsHeld(qp);
+  const bool freeWithoutContact = checkRigidBodyMotionsHeld(qp) > 0;
   if (qp.A->getRangeMap()->getGlobalNumElements() == 0)
     return detail::solveUnconstrained(qp, params_, initialGuess, obs);
   if (choice<Method>(params_, "method") == Method::Primal)
-    return detail::solvePrimalBarrier(qp, params_, initialGuess, obs);
-  return detail::solvePrimalDual(qp, params_, initialGuess, obs);
+    return detail::solvePrimalBarrier(qp, params_, initialGuess, obs, freeWithoutContact);
+  return detail::solvePrimalDual(qp, params_, initialGuess, obs, freeWithoutContact);
 }
 
 namespace detail {
@@ -169,24 +169,8 @@ RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0) {
   return v;
 }
 
-bool hasRigidBodyMotion(const ContactQP& qp) {
-  if (qp.nullspace.is_null()) return false;
-  MultiVector Qr(qp.Q->getRangeMap(), qp.nullspace->getNumVectors());
-  qp.Q->apply(*qp.nullspace, Qr);
-  std::vector<double> modeNorms(qp.nullspace->getNumVectors()), residualNorms(modeNorms.size());
-  qp.nullspace->normInf(modeNorms);
-  Qr.normInf(residualNorms);
-  // Q's Frobenius norm, or that of its diagonal when Q is matrix-free (a few times smaller).
-  const StiffnessParts stiffness(qp);
-  const double scale = qp.Qmatrix()     ? qp.Qmatrix()->getFrobeniusNorm()
-                       : stiffness.available() ? stiffness.diagonal()->norm2()
-                                             : 1.0;
-  for (std::size_t k = 0; k < modeNorms.size(); ++k)
-    if (residualNorms[k] <= 1e-12 * scale * modeNorms[k]) return true;
-  return false;
-}
-
-ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0) {
+ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0,
+                            bool freeWithoutContact) {
   // r = b - Q v0; Q w = r roughly; v_hat = v0 + w.
   Vector r(*qp.b, Teuchos::Copy), w(qp.Q->getDomainMap());
   qp.Q->apply(v0, r, Teuchos::NO_TRANS, -1.0, 1.0);
@@ -194,7 +178,7 @@ ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, con
   // Q is singular when only the contact holds the body: then estimate with every constraint
   // held by a spring of its own stiffness q_i.
   const StiffnessParts stiffness(qp);
-  const bool springs = qp.A->getGlobalNumRows() > 0 && stiffness.available() && hasRigidBodyMotion(qp);
+  const bool springs = qp.A->getGlobalNumRows() > 0 && stiffness.available() && freeWithoutContact;
   if (springs) newton.setWeights(*constraintStiffness(*stiffness.diagonal(), *qp.A));
   scales.krylovIterations = newton.solve(r, w, 1e-2 * r.norm2()).iterations;
   if (springs) newton.setWeights(Vector(qp.A->getRangeMap()));

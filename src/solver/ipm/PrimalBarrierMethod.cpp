@@ -120,7 +120,7 @@ struct GammaRule {
 // solved by inner damped Newton steps to ||grad psi|| < zeta_k.
 class PrimalBarrierMethod {
  public:
-  PrimalBarrierMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0);
+  PrimalBarrierMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0, bool freeWithoutContact);
   SolveResult run(IterationObserver& observer, Teuchos::Time& timer);
 
  private:
@@ -136,6 +136,7 @@ class PrimalBarrierMethod {
 
   const ContactQP& qp_;
   const Teuchos::ParameterList& p_;
+  const bool freeWithoutContact_;
   const long long m_;
   const StoppingRule stop_;
   const int maxInner_;
@@ -159,9 +160,11 @@ class PrimalBarrierMethod {
   double slope_ = 0;            // g^T dv of the current direction
 };
 
-PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0)
+PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+                                   bool freeWithoutContact)
     : qp_(qp),
       p_(p),
+      freeWithoutContact_(freeWithoutContact),
       m_(qp.A->getRangeMap()->getGlobalNumElements()),
       stop_(p),
       maxInner_(p.get<int>("primal: maximum inner iterations")),
@@ -182,7 +185,7 @@ PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const Teuchos::Par
 // A strictly feasible start, the first barrier parameter and inner tolerance.
 void PrimalBarrierMethod::start() {
   newton_.setWeights(D_);
-  const ProblemScales scales = problemScales(qp_, newton_, *v_);
+  const ProblemScales scales = problemScales(qp_, newton_, *v_, freeWithoutContact_);
   result_.krylovIterations += scales.krylovIterations;
   displacementScale_ = scales.displacement;
   const double margin = p_.get<double>("primal: starting margin") * scales.displacement;
@@ -397,12 +400,12 @@ void PrimalBarrierMethod::extrapolate(double previousMu, double dvarsigma) {
 }  // namespace
 
 SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
-                               IterationObserver& observer) {
+                               IterationObserver& observer, bool freeWithoutContact) {
   Teuchos::Time timer("primal");
   timer.start(true);
   observer.onStart("primal (Algorithm 3.1)", qp.Q->getDomainMap()->getGlobalNumElements(),
                    qp.A->getRangeMap()->getGlobalNumElements());
-  PrimalBarrierMethod method(qp, p, v0);
+  PrimalBarrierMethod method(qp, p, v0, freeWithoutContact);
   return method.run(observer, timer);
 }
 

@@ -31,7 +31,7 @@ void forEach(Vector& out, F f) {
 // function 1/2 ||F||^2 with fixed centering.
 class PrimalDualMethod {
  public:
-  PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0);
+  PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0, bool freeWithoutContact);
   SolveResult run(IterationObserver& observer, Teuchos::Time& timer);
 
  private:
@@ -50,6 +50,7 @@ class PrimalDualMethod {
 
   const ContactQP& qp_;
   const Teuchos::ParameterList& p_;
+  const bool freeWithoutContact_;
   const long long m_;
   const Centering centering_;
   const bool correctorFromPredictor_;
@@ -75,9 +76,11 @@ class PrimalDualMethod {
   bool havePending_ = false;
 };
 
-PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0)
+PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+                                   bool freeWithoutContact)
     : qp_(qp),
       p_(p),
+      freeWithoutContact_(freeWithoutContact),
       m_(qp.A->getRangeMap()->getGlobalNumElements()),
       centering_(choice<Centering>(p, "primal-dual: centering")),
       correctorFromPredictor_(p.get<bool>("primal-dual: corrector from predictor")),
@@ -98,7 +101,7 @@ PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::Parameter
 // s = max(d - A v, displacement scale), s^T y = theta * energy scale, y = mu0 / s.
 void PrimalDualMethod::start() {
   newton_.setWeights(D_);
-  const ProblemScales scales = problemScales(qp_, newton_, *v_);
+  const ProblemScales scales = problemScales(qp_, newton_, *v_, freeWithoutContact_);
   result_.krylovIterations += scales.krylovIterations;
   qp_.A->apply(*v_, Av_);
   {
@@ -343,12 +346,12 @@ void PrimalDualMethod::report(const KKTMeasures& kkt, IterationObserver& observe
 }  // namespace
 
 SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
-                            IterationObserver& observer) {
+                            IterationObserver& observer, bool freeWithoutContact) {
   Teuchos::Time timer("primal-dual");
   timer.start(true);
   observer.onStart("primal-dual (" + p.get<std::string>("primal-dual: centering") + " centering)",
                    qp.Q->getDomainMap()->getGlobalNumElements(), qp.A->getRangeMap()->getGlobalNumElements());
-  PrimalDualMethod method(qp, p, v0);
+  PrimalDualMethod method(qp, p, v0, freeWithoutContact);
   return method.run(observer, timer);
 }
 

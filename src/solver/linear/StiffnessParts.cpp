@@ -40,15 +40,15 @@ RCP<const CrsMatrix> StiffnessParts::contactRows(const CrsMatrix& A) const {
 }
 
 std::vector<char> prescribedRows(const CrsMatrix& Q) {
-  std::vector<char> prescribed(Q.getNodeNumRows(), 0);
-  for (std::size_t row = 0; row < Q.getNodeNumRows(); ++row) {
-    typename CrsMatrix::local_inds_host_view_type cols;
-    typename CrsMatrix::values_host_view_type vals;
-    Q.getLocalRowView(static_cast<LocalOrdinal>(row), cols, vals);
-    const GlobalOrdinal gid = Q.getRowMap()->getGlobalElement(row);
+  const auto local = Q.getLocalMatrixHost();
+  const Map &rows = *Q.getRowMap(), &columns = *Q.getColMap();
+  const auto numRows = static_cast<LocalOrdinal>(local.numRows());
+  std::vector<char> prescribed(numRows, 0);
+  for (LocalOrdinal row = 0; row < numRows; ++row) {
+    const LocalOrdinal self = columns.getLocalElement(rows.getGlobalElement(row));
     bool coupled = false;
-    for (std::size_t k = 0; k < cols.extent(0); ++k)
-      if (Q.getColMap()->getGlobalElement(cols(k)) != gid && vals(k) != 0.0) coupled = true;
+    for (auto e = local.graph.row_map(row); e < local.graph.row_map(row + 1) && !coupled; ++e)
+      coupled = local.values(e) != 0.0 && local.graph.entries(e) != self;
     prescribed[row] = !coupled;
   }
   return prescribed;
