@@ -20,7 +20,6 @@
 #include "core/Collectives.hpp"
 #include "fe/ElasticityElement.hpp"
 #include "signorini/core/Error.hpp"
-#include "solver/preconditioner/RigidBodyModes.hpp"
 
 #include "assembly/ContactMultiplierBasis.hpp"
 
@@ -613,7 +612,6 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   qp.b = b;
   qp.A = constraints.A;
   qp.d = constraints.d;
-  qp.nullspace = rigidBodyModes(ds.ownedDofMap(), *coordinates);
   qp.coordinates = coordinates;
   qp.blockSize = dim;
   return qp;

@@ -183,8 +183,9 @@ RCP<Vector> motionTheLoadPullsFree(const ContactQP& qp, const MultiVector& F) {
 }  // namespace
 
 int checkRigidBodyMotionsHeld(const ContactQP& qp) {
-  if (qp.nullspace.is_null() || qp.nullspace->getNumVectors() == 0) return 0;
-  const MultiVector& R = *qp.nullspace;
+  const RCP<const MultiVector> modes = qp.nearNullspace();
+  if (modes.is_null() || modes->getNumVectors() == 0) return 0;
+  const MultiVector& R = *modes;
   const int k = static_cast<int>(R.getNumVectors());
   MultiVector QR(qp.Q->getRangeMap(), k);
   qp.Q->apply(R, QR);

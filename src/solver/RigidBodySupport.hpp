@@ -12,7 +12,7 @@ namespace signorini {
 // Throws an InputError (on every rank) naming the first rigid body motion that nothing
 // holds or that the load pulls free. Returns the number of independent rigid body motions
 // no prescribed displacement removes (those the contact holds); 0 without rigid body modes
-// (qp.nullspace). Collective; costs one application of Q and of A to the modes.
+// (qp.nearNullspace()). Collective; costs one application of Q and of A to the modes.
 int checkRigidBodyMotionsHeld(const ContactQP& qp);
 
 }  // namespace signorini

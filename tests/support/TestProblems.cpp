@@ -48,7 +48,7 @@ Teuchos::ParameterList contactBoxProblem(int dim, int cells) {
 }
 
 int solveLinear(const ContactQP& qp, Vector& x, double tol) {
-  MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nullspace, qp.coordinates);
+  MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nearNullspace(), qp.coordinates);
   amg.compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
   KrylovSolver cg;
   x.putScalar(0.0);

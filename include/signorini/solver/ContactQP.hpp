@@ -21,7 +21,9 @@ struct ContactQP {
   RCP<const Vector> b;                 ///< on Q's domain map
   RCP<const CrsMatrix> A;              ///< m x n: range map = constraints, domain map = Q's domain map
   RCP<const Vector> d;                 ///< on A's range map
-  RCP<const MultiVector> nullspace;    ///< optional: rigid body modes on Q's domain map (for MueLu)
+  /// optional: rigid body modes on Q's domain map (for MueLu and the rigid body check); without
+  /// them, nearNullspace() makes them from `coordinates` where they are needed
+  RCP<const MultiVector> nullspace;
   RCP<const MultiVector> coordinates;  ///< optional: node coordinates on a node map (for MueLu)
   int blockSize = 1;                   ///< unknowns per node (dof = blockSize * node + component)
   std::shared_ptr<const GeometricGrid> grid;  ///< optional: the mesh's P1 grid (geometric multigrid)
@@ -36,6 +38,9 @@ struct ContactQP {
 
   /// Q as an assembled matrix: Qassembled if given, else Q if it is a CrsMatrix, else null.
   RCP<const CrsMatrix> Qmatrix() const;
+  /// `nullspace`, or without it the rigid body modes made from `coordinates` when blockSize is
+  /// their dimension (a new MultiVector, 3 or 6 columns), or null. Collective.
+  RCP<const MultiVector> nearNullspace() const;
 };
 
 }  // namespace signorini

@@ -176,7 +176,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
     // A rebuild on the geometric levels updates the Galerkin products of the changed rows.
     rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.0);
   } else {
-    amg_ = std::make_unique<MueLuPreconditioner>(muelu, qp.blockSize, qp.nullspace, qp.coordinates);
+    amg_ = std::make_unique<MueLuPreconditioner>(muelu, qp.blockSize, qp.nearNullspace(), qp.coordinates);
     // A rebuild of MueLu's hierarchy is a whole setup: only when constraints switch.
     rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.9);
   }

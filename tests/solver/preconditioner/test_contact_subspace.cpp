@@ -169,7 +169,7 @@ TEST(SubspaceCorrectedPreconditioner, SymmetricPositiveDefiniteAndExactOnTheSubs
     WeightedProblem s = weightedProblem(c);
     const std::string name = describe(c);
     const ContactQP& qp = s.problem.qp;
-    MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nullspace, qp.coordinates);
+    MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nearNullspace(), qp.coordinates);
     amg.compute(s.H->assemble());
     for (const ContactCorrection combination : {ContactCorrection::Additive, ContactCorrection::Multiplicative}) {
       const char* combinationName = combination == ContactCorrection::Additive ? "additive" : "multiplicative";

@@ -176,7 +176,7 @@ TEST(GeometricMultigrid, CgCountsDoNotGrowWithTheMesh) {
     const KrylovResult r = solve(problem.qp, gmg);
     EXPECT_LE(r.iterations, c.maxIterations) << c.dim << "D P" << c.degree << " nx " << c.cells;
     if (c.dim == 2 && c.cells == 64) {
-      MueLuPreconditioner amg(Teuchos::ParameterList(), problem.qp.blockSize, problem.qp.nullspace,
+      MueLuPreconditioner amg(Teuchos::ParameterList(), problem.qp.blockSize, problem.qp.nearNullspace(),
                               problem.qp.coordinates);
       amg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
       EXPECT_GT(solve(problem.qp, amg).iterations, r.iterations + 2) << "smoothed aggregation alone";
