@@ -79,52 +79,64 @@ RCP<CrsMatrix> interpolation(const GeometricGrid& coarse, int blockSize, const R
   // Every fine node's simplex and weights; the Dirichlet flags of the coarse DOFs they use.
   std::vector<long long> vertices(numFine * (dim + 1));
   std::vector<double> weights(numFine * (dim + 1));
-  std::vector<GlobalOrdinal> used;
-  for (std::size_t i = 0; i < numFine; ++i) {
+  for (std::size_t i = 0; i < numFine; ++i)
     coarse.interpolation(&fineCoordinates[dim * i], &vertices[(dim + 1) * i], &weights[(dim + 1) * i]);
-    for (int k = 0; k <= dim; ++k)
-      for (int c = 0; c < blockSize; ++c) used.push_back(blockSize * vertices[(dim + 1) * i + k] + c);
-  }
-  std::sort(used.begin(), used.end());
-  used.erase(std::unique(used.begin(), used.end()), used.end());
+  std::vector<long long> usedVertices(vertices);
+  for (long long v : atVertex)
+    if (v >= 0) usedVertices.push_back(v);
+  std::sort(usedVertices.begin(), usedVertices.end());
+  usedVertices.erase(std::unique(usedVertices.begin(), usedVertices.end()), usedVertices.end());
+  std::vector<GlobalOrdinal> used;  // P's column map: all components of the used vertices, sorted
+  used.reserve(blockSize * usedVertices.size());
+  for (long long v : usedVertices)
+    for (int c = 0; c < blockSize; ++c) used.push_back(blockSize * v + c);
   auto usedMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(used), 0, comm));
+  const auto toUsed = rcp(new Import(coarseMap, usedMap));
   Vector flags(coarseMap), usedFlags(usedMap);
   {
     auto f = flags.getDataNonConst();
     for (std::size_t k = 0; k < coarseDirichlet.size(); ++k) f[k] = coarseDirichlet[k];
   }
-  usedFlags.doImport(flags, Import(coarseMap, usedMap), Tpetra::INSERT);
+  usedFlags.doImport(flags, *toUsed, Tpetra::INSERT);
   auto usedData = usedFlags.getData();
+  // Local column of component c at coarse vertex v: the used list holds every component.
+  const auto column = [&](long long v, int c) {
+    const auto at = std::lower_bound(usedVertices.begin(), usedVertices.end(), v) - usedVertices.begin();
+    return static_cast<LocalOrdinal>(blockSize * at + c);
+  };
 
+  // P's rows in local CSR form, straight into the arrays Tpetra keeps; the import above is
+  // its column import.
   const std::size_t numFineDofs = fineMap->getNodeNumElements();
-  auto P = rcp(new CrsMatrix(fineMap, dim + 1));
-  std::vector<GlobalOrdinal> cols;
-  std::vector<Scalar> vals;
-  for (std::size_t row = 0; row < numFineDofs; ++row) {
-    const std::size_t i = row / blockSize;
-    const int c = static_cast<int>(row % blockSize);
-    cols.clear();
-    vals.clear();
-    if (fineDirichlet[row]) {
-      if (atVertex[i] >= 0) {  // the coarse DOF here is Dirichlet too: injection
-        cols.push_back(blockSize * atVertex[i] + c);
-        vals.push_back(1.0);
-      }
+  using Graph = CrsMatrix::local_graph_device_type;
+  typename Graph::row_map_type::non_const_type rowPointers("P row pointers", numFineDofs + 1);
+  std::vector<std::pair<LocalOrdinal, Scalar>> entries;
+  std::vector<std::pair<LocalOrdinal, Scalar>> row;
+  for (std::size_t r = 0; r < numFineDofs; ++r) {
+    const std::size_t i = r / blockSize;
+    const int c = static_cast<int>(r % blockSize);
+    row.clear();
+    if (fineDirichlet[r]) {
+      if (atVertex[i] >= 0) row.emplace_back(column(atVertex[i], c), 1.0);  // a Dirichlet coarse DOF: injection
     } else {
       for (int k = 0; k <= dim; ++k) {
         const double w = weights[(dim + 1) * i + k];
-        const GlobalOrdinal col = blockSize * vertices[(dim + 1) * i + k] + c;
-        if (w > 1e-12 && usedData[usedMap->getLocalElement(col)] == 0.0) {
-          cols.push_back(col);
-          vals.push_back(w);
-        }
+        const LocalOrdinal col = column(vertices[(dim + 1) * i + k], c);
+        if (w > 1e-12 && usedData[col] == 0.0) row.emplace_back(col, w);
       }
+      std::sort(row.begin(), row.end());
     }
-    if (!cols.empty())
-      P->insertGlobalValues(fineMap->getGlobalElement(row), Teuchos::ArrayView<const GlobalOrdinal>(cols),
-                            Teuchos::ArrayView<const Scalar>(vals));
+    entries.insert(entries.end(), row.begin(), row.end());
+    rowPointers(r + 1) = entries.size();
   }
-  P->fillComplete(coarseMap, fineMap);
+  typename Graph::entries_type::non_const_type columns("P columns", entries.size());
+  typename CrsMatrix::local_matrix_device_type::values_type values("P values", entries.size());
+  for (std::size_t e = 0; e < entries.size(); ++e) {
+    columns(e) = entries[e].first;
+    values(e) = entries[e].second;
+  }
+  auto P = rcp(new CrsMatrix(fineMap, usedMap, rowPointers, columns, values));
+  P->expertStaticFillComplete(coarseMap, fineMap, toUsed);
   return P;
 }
 
