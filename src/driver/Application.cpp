@@ -27,6 +27,7 @@
 #include "core/CommunicationPhase.hpp"
 #include "core/ParameterValidation.hpp"
 #include "core/RootTask.hpp"
+#include "driver/HugePages.hpp"
 #include "io/RunSummary.hpp"
 #include "io/XmlEscape.hpp"
 #include "signorini/assembly/ContactPressure.hpp"
@@ -405,6 +406,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     summary.setupPeakMiBPerRank = problem.setupPeakMiBPerRank;
     summary.contact = contact;
     summary.peakMemoryMiBAllRanks = sumOverRanks(*comm, rss);
+    summary.hugePages = onEveryRank(*comm, detail::mallocAsksForHugePages());
     if (root) {
       writeSummaryJson(summary, directory + "/summary.json");
       if (!cl.summary.empty()) writeSummaryJson(summary, cl.summary);

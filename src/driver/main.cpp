@@ -14,6 +14,7 @@
 
 #include "driver/Application.hpp"
 #include "driver/CommandLine.hpp"
+#include "driver/HugePages.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/core/Version.hpp"
 
@@ -46,6 +47,7 @@ int leaveAfterError(const std::string& message, bool userError) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  signorini::detail::restartWithHugePages(argv);
   // Kokkos prints its own options when it sees --help: it gets the arguments without it.
   std::vector<char*> args;
   bool help = false;

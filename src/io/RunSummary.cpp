@@ -99,6 +99,7 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
   }
   j << "  \"memory_mib\": {\"max_rank\": " << number(s.peakMemoryMiBMaxRank)
     << ", \"all_ranks\": " << number(s.peakMemoryMiBAllRanks) << "},\n"
+    << "  \"huge_pages\": " << (s.hugePages ? "true" : "false") << ",\n"
     << "  \"serial_mesh_mib\": " << number(s.serialMeshMiB) << ",\n"
     << "  \"serial_mesh_peak_rss_mib\": " << number(s.serialMeshPeakMiB) << ",\n"
     << "  \"setup_peak_rss_mib\": [";

@@ -18,6 +18,7 @@ struct RunSummary {
   const SolveResult* result = nullptr;
   double setupSeconds = 0, assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;  // max over ranks
   double peakMemoryMiBMaxRank = 0, peakMemoryMiBAllRanks = 0;  // peak resident set size
+  bool hugePages = false;  // malloc asked for transparent huge pages (see driver/HugePages.hpp)
   // Rank 0's serial mesh phase: global mesh, space and partition arrays (capacities), and
   // the growth of its peak resident set over that phase.
   double serialMeshMiB = 0, serialMeshPeakMiB = 0;
