@@ -18,8 +18,10 @@
 #include "BenchmarkSupport.hpp"
 #include "assembly/DistributedSpace.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
+#include "driver/HugePages.hpp"
 
 int main(int argc, char** argv) {
+  signorini::detail::restartWithHugePages(argv);  // as the signorini program does
   Tpetra::ScopeGuard tpetra(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   if (argc < 4) {

@@ -15,10 +15,12 @@
 #include "BenchmarkSupport.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "solver/preconditioner/SparseCholesky.hpp"
+#include "driver/HugePages.hpp"
 
 using namespace signorini;
 
 int main(int argc, char** argv) {
+  signorini::detail::restartWithHugePages(argv);  // as the signorini program does
   Tpetra::ScopeGuard tpetra(&argc, &argv);
   auto comm = Tpetra::getDefaultComm();
   if (argc < 3 || comm->getSize() != 1) {
