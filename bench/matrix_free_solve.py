@@ -22,12 +22,13 @@ from preconditioners import ENV, ROOT
 from provenance import provenance
 
 # (dimension, degree, nx, paths), each run on the family member of its dimension (load and
-# supports). P3 nx = 22 has 2.55 times the unknowns of nx = 16, the budget case.
+# supports). P3 nx = 22 has 2.55 times the unknowns of nx = 16, the budget case; P3 nx = 32
+# (2.7 M unknowns) and, matrix-free only, nx = 44 (7.1 M) are the large runs.
 MEMBERS = {2: os.path.join(ROOT, "xml", "family", "2d-p2-nx200.xml"),
            3: os.path.join(ROOT, "xml", "family", "3d-p2-nx32.xml")}
 BOTH = ("assembled", "matrix-free")
 CASES = [(2, 2, 200, BOTH), (2, 3, 100, BOTH), (3, 2, 16, BOTH), (3, 2, 24, BOTH), (3, 2, 32, BOTH),
-         (3, 3, 12, BOTH), (3, 3, 16, BOTH), (3, 3, 22, BOTH)]
+         (3, 3, 12, BOTH), (3, 3, 16, BOTH), (3, 3, 22, BOTH), (3, 3, 32, BOTH), (3, 3, 44, ("matrix-free",))]
 
 
 def name(dim, degree, nx):

@@ -16,10 +16,10 @@ namespace {
 
 // Bytes per unknown, by dimension and degree, with Q assembled and with a matrix-free P2/P3
 // stiffness (P1 keeps Q assembled). Measured on the largest members beyond the ranks' fixed
-// memory (110 MiB each): assembled 876, 975, 1038 (2D P1-P3) and 1462, 1843, 2451 (3D);
-// matrix-free 823, 690 (2D P2, P3) and 966, 727 (3D).
-constexpr double kAssembledBytesPerUnknown[2][3] = {{700, 780, 830}, {1150, 1450, 1950}};
-constexpr double kMatrixFreeBytesPerUnknown[2][3] = {{700, 650, 550}, {1150, 770, 580}};
+// memory (110 MiB each): assembled 822, 965, 1038 (2D P1-P3) and 1377, 1744, 2385 (3D);
+// matrix-free 773, 671 (2D P2, P3) and 833, 583 (3D). Four fifths of them are the bounds.
+constexpr double kAssembledBytesPerUnknown[2][3] = {{650, 770, 830}, {1100, 1390, 1900}};
+constexpr double kMatrixFreeBytesPerUnknown[2][3] = {{650, 610, 530}, {1100, 660, 460}};
 
 // MemAvailable of this machine in bytes, 0 if unknown.
 double availableBytes() {
