@@ -39,7 +39,8 @@ struct ContactQP {
   /// Q as an assembled matrix: Qassembled if given, else Q if it is a CrsMatrix, else null.
   RCP<const CrsMatrix> Qmatrix() const;
   /// `nullspace`, or without it the rigid body modes made from `coordinates` when blockSize is
-  /// their dimension (a new MultiVector, 3 or 6 columns), or null. Collective.
+  /// their dimension and their rows are the nodes of Q's DOFs on every rank (a new
+  /// MultiVector, 3 or 6 columns), or null. Collective.
   RCP<const MultiVector> nearNullspace() const;
 };
 
