@@ -97,4 +97,18 @@ TEST(RigidBodySupport, QpWithoutModesIsNotChecked) {
   EXPECT_EQ(checkMessage(qp), "");
 }
 
+TEST(RigidBodySupport, ModesAreMadeFromCoordinatesOfQsNodesOnly) {
+  ContactQP qp = buildProblem(boxProblem(2, 2, 1), Tpetra::getDefaultComm()).qp;
+  qp.nullspace = Teuchos::null;
+  ASSERT_FALSE(qp.nearNullspace().is_null());
+  EXPECT_EQ(qp.nearNullspace()->getNumVectors(), 3u);
+  // One coordinate row more than Q's nodes on rank 0: no modes, on every rank.
+  const auto comm = Tpetra::getDefaultComm();
+  const std::size_t rows = qp.coordinates->getLocalLength() + (comm->getRank() == 0 ? 1 : 0);
+  qp.coordinates = Teuchos::rcp(new MultiVector(
+      Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), rows, 0, comm)), 2));
+  EXPECT_TRUE(qp.nearNullspace().is_null());
+  EXPECT_EQ(checkMessage(qp), "");
+}
+
 }  // namespace
