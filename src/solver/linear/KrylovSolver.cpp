@@ -95,40 +95,48 @@ KrylovResult KrylovSolver::solve(const RCP<const Operator>& A, const RCP<const O
     if (bnorm > 0.0) tol = std::max(floor, std::min(tol, startReduction * std::min(r0norm, bnorm) / bnorm));
   }
 
-  auto solver = belosFactory().create(solver_, Teuchos::null);
-  const auto valid = solver->getValidParameters();
-  auto params = rcp(new Teuchos::ParameterList(belos_));
-  params->set("Convergence Tolerance", tol);
-  params->set("Maximum Iterations", maxIterations);
-  // The forcing condition is on the true residual relative to the right-hand side, where
-  // the solver lets us say so (MINRES always measures it that way).
-  for (const char* scaling : {"Implicit Residual Scaling", "Explicit Residual Scaling"})
-    if (valid->isParameter(scaling) && !params->isParameter(scaling)) params->set(scaling, "Norm of RHS");
-  // CG's check p^T A p > 0 also fires on round-off once the residual is tiny; a truly
-  // indefinite system shows up as non-convergence instead.
-  if (valid->isParameter("Assert Positive Definiteness") && !params->isParameter("Assert Positive Definiteness"))
-    params->set("Assert Positive Definiteness", false);
+  BelosSolver& solver = belosSolver(tol, maxIterations);
   if (!M.is_null()) {
     std::vector<double> targets(b->getNumVectors());
     b->norm2(Teuchos::ArrayView<double>(targets));
     for (double& target : targets) target = tol * (target > 0.0 ? target : 1.0);
-    const bool skip = isCgRelativeToRhs(*solver, *params);
-    problem->setRightPrec(skip ? rcp<const Operator>(new SkippedAtConvergence(M, targets)) : M);
+    problem->setRightPrec(skipLastPreconditioning_ ? rcp<const Operator>(new SkippedAtConvergence(M, targets)) : M);
   }
-  solver->setParameters(params);
-  solver->setProblem(problem);
+  solver.setProblem(problem);
   KrylovResult result;
   try {
-    const Belos::ReturnType status = solver->solve();
+    const Belos::ReturnType status = solver.solve();
     result.converged = status == Belos::Converged;
-    result.relativeResidual = solver->achievedTol();
+    result.relativeResidual = solver.achievedTol();
   } catch (const std::exception&) {
     // Breakdown: report no convergence; the caller decides what to do with x.
     result.converged = false;
     result.relativeResidual = std::numeric_limits<double>::infinity();
   }
-  result.iterations = solver->getNumIters();
+  result.iterations = solver.getNumIters();
   return result;
+}
+
+KrylovSolver::BelosSolver& KrylovSolver::belosSolver(double tol, int maxIterations) const {
+  auto params = rcp(new Teuchos::ParameterList());
+  if (belosSolver_.is_null()) {
+    belosSolver_ = belosFactory().create(solver_, Teuchos::null);
+    const auto valid = belosSolver_->getValidParameters();
+    *params = belos_;
+    // The forcing condition is on the true residual relative to the right-hand side, where
+    // the solver lets us say so (MINRES always measures it that way).
+    for (const char* scaling : {"Implicit Residual Scaling", "Explicit Residual Scaling"})
+      if (valid->isParameter(scaling) && !params->isParameter(scaling)) params->set(scaling, "Norm of RHS");
+    // CG's check p^T A p > 0 also fires on round-off once the residual is tiny; a truly
+    // indefinite system shows up as non-convergence instead.
+    if (valid->isParameter("Assert Positive Definiteness") && !params->isParameter("Assert Positive Definiteness"))
+      params->set("Assert Positive Definiteness", false);
+    skipLastPreconditioning_ = isCgRelativeToRhs(*belosSolver_, *params);
+  }
+  params->set("Convergence Tolerance", tol);
+  params->set("Maximum Iterations", maxIterations);
+  belosSolver_->setParameters(params);
+  return *belosSolver_;
 }
 
 }  // namespace signorini

@@ -7,6 +7,11 @@
 
 #include "signorini/core/TpetraTypes.hpp"
 
+namespace Belos {
+template <class ScalarType, class MV, class OP>
+class SolverManager;
+}
+
 namespace signorini {
 
 struct KrylovResult {
@@ -34,8 +39,16 @@ class KrylovSolver {
   const std::string& solverName() const { return solver_; }
 
  private:
+  using BelosSolver = Belos::SolverManager<Scalar, MultiVector, Operator>;
+
   std::string solver_;
   Teuchos::ParameterList belos_;
+  // Made and configured at the first solve; later solves only set the tolerance and the
+  // iteration limit (a Belos solver is not cheap to make: its parameter lists and status tests).
+  mutable RCP<BelosSolver> belosSolver_;
+  mutable bool skipLastPreconditioning_ = false;
+
+  BelosSolver& belosSolver(double tol, int maxIterations) const;
 };
 
 }  // namespace signorini
