@@ -69,7 +69,9 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
            range(0.0, 1e300));
   prec.set("contact correction", "multiplicative",
            "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
-           "\"additive\" or \"multiplicative\" (symmetric: subspace, AMG, subspace)",
+           "\"additive\" or \"multiplicative\" (symmetric: subspace, AMG, subspace); none where the "
+           "\"amg of H\" is one grid factored exactly (a box mesh with at most \"geometric: direct solve "
+           "size\" unknowns)",
            choices<ContactCorrection>({{"none", ContactCorrection::None},
                                        {"additive", ContactCorrection::Additive},
                                        {"multiplicative", ContactCorrection::Multiplicative}},
@@ -172,6 +174,11 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
       else
         geometric_->setGridStiffness(*qp.gridStiffness);
     }
+    // A single grid factored exactly is H's inverse: a contact correction would add nothing,
+    // and the weights need no cap, which only serves such a correction.
+    if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() == 0 &&
+        geometric->directCoarsestSolve())
+      correction_ = ContactCorrection::None;
     amg_ = std::move(geometric);
     // A rebuild on the geometric levels updates the Galerkin products of the changed rows.
     rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.0);

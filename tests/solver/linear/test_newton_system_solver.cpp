@@ -101,6 +101,21 @@ TEST(NewtonSystemSolver, FilteredAmgKeepsCgCountsFlatAsWeightsGrow) {
     }
 }
 
+// A box mesh small enough to be one grid factored exactly (the defaults: no geometric level
+// above 200 unknowns, a direct solve up to 2500) gets H's exact inverse as its preconditioner:
+// one CG iteration per system, round-off allowing two, however large the weights grow; a
+// contact correction or a cap on the weights would make it inexact.
+TEST(NewtonSystemSolver, OneGridFactoredExactlyIsAnExactPreconditioner) {
+  for (int dim : {2, 3}) {
+    const AssembledProblem problem = buildProblem(contactBoxProblem(dim, dim == 2 ? 8 : 4), Tpetra::getDefaultComm());
+    ASSERT_LT(problem.qp.Q->getDomainMap()->getGlobalNumElements(), 2500u);
+    Vector r(problem.qp.Q->getRangeMap());
+    r.randomize();
+    const std::vector<int> counts = cgCounts(problem.qp, Teuchos::ParameterList(), r, 12);
+    EXPECT_LE(*std::max_element(counts.begin(), counts.end()), 2) << dim << "D: " << show(counts);
+  }
+}
+
 // In the interior point method, whose Newton systems reduce their residual tenfold from
 // starts that improve as mu falls, the filtered geometric hierarchy keeps paper/G's last
 // main iterations as cheap as its first: 3-5 CG iterations in the last against 4 in the
