@@ -1,6 +1,11 @@
 #!/usr/bin/env bash
 # Installs every dependency of Signorini from Debian's package archive.
 # Idempotent: when everything is present it returns at once without touching apt.
+#
+#     scripts/install-deps.sh [--bench]
+#
+# --bench also installs what optional benchmark programs compare against: IPOPT with MUMPS
+# (bench/ipopt.py).
 set -euo pipefail
 
 packages=(
@@ -19,6 +24,12 @@ packages=(
   doxygen                     # API reference (make doc)
   python3 python3-numpy python3-matplotlib python3-meshio  # scripts and output checks
 )
+for arg in "$@"; do
+  case "$arg" in
+    --bench) packages+=(coinor-libipopt-dev) ;;  # IPOPT and MUMPS (bench/ipopt.py)
+    *) echo "install-deps: unknown option $arg (known: --bench)" >&2; exit 2 ;;
+  esac
+done
 
 missing=()
 for p in "${packages[@]}"; do
