@@ -13,6 +13,7 @@
 
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/ElasticityAssembler.hpp"
+#include "assembly/MeshVertexGrid.hpp"
 #include "core/Collectives.hpp"
 #include "core/CommunicationPhase.hpp"
 #include "core/RootTask.hpp"
@@ -39,12 +40,10 @@ double peakResidentMiB() {
   return usage.ru_maxrss / 1024.0;  // Linux reports KiB
 }
 
-// A matrix-free P_k stiffness (k > 1) on a box mesh is never assembled: the geometric
-// multigrid starts from the P1 stiffness of the same mesh. P1 and Gmsh meshes keep Q
-// assembled for the preconditioners (the multigrid's Galerkin products, MueLu).
-bool storesNoStiffness(const ProblemDefinition& def) {
-  return def.matrixFreeStiffness && def.meshType == "box" && def.degree > 1;
-}
+// A matrix-free P_k stiffness (k > 1) is never assembled: the geometric multigrid starts from
+// the P1 stiffness of the same mesh. A P1 one keeps Q assembled for the preconditioners (the
+// multigrid's Galerkin products, MueLu).
+bool storesNoStiffness(const ProblemDefinition& def) { return def.matrixFreeStiffness && def.degree > 1; }
 
 }  // namespace
 
@@ -84,7 +83,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       result.definition = readProblemDefinition(problem, dim);
       result.space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), result.definition.degree);
       checkMemoryFits(static_cast<double>(result.definition.dim) * result.space->numGlobalNodes(),
-                      result.definition.dim, result.definition.degree, true, *comm);
+                      result.definition.dim, result.definition.degree, !storesNoStiffness(result.definition), *comm);
     }
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);
@@ -104,7 +103,11 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       result.qp.Qassembled = result.qp.Qmatrix();
       result.qp.Q = matrixFreeStiffness(result.space, def);
     }
-    if (box) result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
+    // The grids of the geometric multigrid: a box's nested ones, or a P_k space's own mesh.
+    if (box)
+      result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
+    else if (def.degree > 1)
+      result.qp.grid = std::make_shared<MeshVertexGrid>(result.space);
     if (onlyGridStiffness) result.qp.gridStiffness = assembleGridStiffness(*result.space, def, *result.qp.grid);
     assembly.stop();
   }

@@ -76,10 +76,10 @@ ParameterList validProblemParameters() {
         "the benchmark family)",
         range(-1, 30));
   p.set("stiffness: operator", "auto",
-        "\"assembled\": Q is a sparse matrix; \"matrix-free\": Q is applied cell by cell. On a box mesh of "
-        "degree 2 or 3 no Q is assembled then (the geometric multigrid starts from the mesh's P1 stiffness); "
-        "P1 and Gmsh meshes still assemble Q for the preconditioner. \"auto\": matrix-free on a box mesh of "
-        "degree 2 or 3 (less memory, as fast end to end), else assembled",
+        "\"assembled\": Q is a sparse matrix; \"matrix-free\": Q is applied cell by cell. Of degree 2 or 3 "
+        "no Q is assembled then (the geometric multigrid starts from the mesh's P1 stiffness); P1 still "
+        "assembles Q for the preconditioner. \"auto\": matrix-free of degree 2 or 3 (less memory, as fast end "
+        "to end), else assembled",
         choices({"auto", "assembled", "matrix-free"}));
 
   ParameterList& dirichlet = p.sublist("Dirichlet", false,
@@ -164,7 +164,7 @@ ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) 
   def.loadQuadratureDegree = q < 0 ? def.degree + 4 : q;
   const std::string stiffness = p.get<std::string>("stiffness: operator");
   def.matrixFreeStiffness =
-      stiffness == "matrix-free" || (stiffness == "auto" && def.meshType == "box" && def.degree > 1);
+      stiffness == "matrix-free" || (stiffness == "auto" && def.degree > 1);
 
   def.dirichlet = boundaryFields(p, "Dirichlet", "displacement: ", dim);
   def.traction = boundaryFields(p, "Traction", "traction: ", dim);

@@ -2,8 +2,9 @@
 /// \file
 /// What the geometric multigrid needs of a mesh: a P1 simplex grid whose vertices are nodes
 /// of the fine space, which simplex holds a point and its P1 weights there, and the next
-/// coarser grid. The problem layer fills it in (a box mesh's grids are BoxGrid); the solver
-/// sees no mesh. Library users whose meshes are nested refinements can implement it.
+/// coarser grid. The problem layer fills it in (a box mesh's nested grids, or the vertices of
+/// a P_k space's own mesh with no coarser grid); the solver sees no mesh. Library users whose
+/// meshes are nested refinements can implement it.
 #include <memory>
 #include <string>
 

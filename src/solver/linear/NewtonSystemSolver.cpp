@@ -86,9 +86,9 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
                                            {"gathered", ContactSubspaceBlocks::Gathered}},
                                           "contact correction: blocks"));
   prec.set("hierarchy", "auto",
-           "Multigrid levels: \"geometric\" (box meshes: P_k to P1, then grids with half the boxes per direction, "
-           "Galerkin coarse matrices, Chebyshev smoothing, a direct solve or MueLu below); "
-           "\"algebraic\": MueLu alone; \"auto\": geometric on box meshes",
+           "Multigrid levels: \"geometric\" (P_k to P1 on the same mesh; on box meshes then grids with half the "
+           "boxes per direction; Galerkin coarse matrices, Chebyshev smoothing, a direct solve or MueLu below); "
+           "\"algebraic\": MueLu alone; \"auto\": geometric on box meshes and for degrees 2 and 3",
            choices<Hierarchy>({{"auto", Hierarchy::Auto},
                                {"algebraic", Hierarchy::Algebraic},
                                {"geometric", Hierarchy::Geometric}},
@@ -155,7 +155,8 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   const bool haveGrid = qp.grid && !qp.coordinates.is_null();
   if (hierarchy == Hierarchy::Geometric || (hierarchy == Hierarchy::Auto && haveGrid)) {
     if (!haveGrid)
-      throw InputError("Preconditioner/hierarchy \"geometric\" needs a box mesh (Problem/mesh: type \"box\")");
+      throw InputError("Preconditioner/hierarchy \"geometric\" needs a box mesh (Problem/mesh: type \"box\") or "
+                       "a degree of 2 or 3");
     // Without Q assembled the fine level cannot be factored: the P_k -> P1 level is taken
     // however few unknowns the P1 grid has.
     long long coarsestSize = prec.get<int>("geometric: coarsest size");
@@ -189,7 +190,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   }
   if (!assembled && !geometric_)
     throw InputError("a matrix-free Q is preconditioned by Preconditioner/type \"amg of H\" on geometric levels "
-                     "alone (a box mesh of degree 2 or 3; from a library, ContactQP::grid and gridStiffness); set "
+                     "alone (degree 2 or 3; from a library, ContactQP::grid and gridStiffness); set "
                      "Problem/stiffness: operator to \"assembled\"");
   if (correction_ != ContactCorrection::None) {
     const RCP<const CrsMatrix> contactRows = stiffness.contactRows(*qp.A);

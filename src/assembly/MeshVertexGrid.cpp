@@ -1,0 +1,139 @@
+#include "assembly/MeshVertexGrid.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/core/Error.hpp"
+
+namespace signorini {
+namespace {
+
+// The barycentric coordinates (dim + 1) of x in the simplex with vertex coordinates `v`
+// (dim + 1 points), by Gaussian elimination with partial pivoting of the dim x dim system.
+void barycentric(int dim, const double* v, const double* x, double* lambda) {
+  double J[3][4];  // [v_k - v_0 | x - v_0]
+  for (int r = 0; r < dim; ++r) {
+    for (int k = 0; k < dim; ++k) J[r][k] = v[(k + 1) * dim + r] - v[r];
+    J[r][dim] = x[r] - v[r];
+  }
+  for (int col = 0; col < dim; ++col) {
+    int pivot = col;
+    for (int r = col + 1; r < dim; ++r)
+      if (std::fabs(J[r][col]) > std::fabs(J[pivot][col])) pivot = r;
+    std::swap(J[col], J[pivot]);
+    if (J[col][col] == 0.0) throw Error("MeshVertexGrid: a degenerate cell");
+    for (int r = col + 1; r < dim; ++r) {
+      const double f = J[r][col] / J[col][col];
+      for (int k = col; k <= dim; ++k) J[r][k] -= f * J[col][k];
+    }
+  }
+  double sum = 0.0;
+  for (int r = dim - 1; r >= 0; --r) {
+    double mu = J[r][dim];
+    for (int k = r + 1; k < dim; ++k) mu -= J[r][k] * lambda[k + 1];
+    lambda[r + 1] = mu / J[r][r];
+    sum += lambda[r + 1];
+  }
+  lambda[0] = 1.0 - sum;
+}
+
+}  // namespace
+
+MeshVertexGrid::MeshVertexGrid(std::shared_ptr<const DistributedSpace> space) : space_(std::move(space)) {
+  const DistributedSpace& ds = *space_;
+  const LagrangeSpace& lspace = ds.space();
+  const int dim = ds.dim();
+  const long long numLocalVertices = ds.mesh().numVertices(), numNodes = lspace.numNodes();
+
+  // Global vertex ids: each owner numbers its vertices in the order of their node ids, after
+  // the vertices of the ranks before it; the ghosts learn theirs through the node maps.
+  std::vector<long long> owned;
+  for (long long v = 0; v < numLocalVertices; ++v)
+    if (ds.ownsNode(v)) owned.push_back(v);
+  std::sort(owned.begin(), owned.end(), [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
+  const long long count = static_cast<long long>(owned.size());
+  long long upTo = 0;
+  Teuchos::scan(*ds.comm(), Teuchos::REDUCE_SUM, 1, &count, &upTo);
+  Teuchos::reduceAll(*ds.comm(), Teuchos::REDUCE_SUM, 1, &count, &numVertices_);
+  Vector ownedIds(ds.ownedNodeMap()), overlapIds(ds.overlapNodeMap());  // id + 1, exact in a double
+  {
+    auto data = ownedIds.getDataNonConst();
+    for (long long k = 0; k < count; ++k)
+      data[ds.ownedNodeMap()->getLocalElement(ds.globalNode(owned[k]))] = static_cast<double>(upTo - count + k + 1);
+  }
+  overlapIds.doImport(ownedIds, Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>(ds.ownedNodeMap(), ds.overlapNodeMap()),
+                      Tpetra::INSERT);
+  vertexId_.assign(numLocalVertices, -1);
+  {
+    auto data = overlapIds.getData();
+    const auto& spaceNodes = ds.overlapSpaceNodes();
+    for (std::size_t i = 0; i < spaceNodes.size(); ++i)
+      if (spaceNodes[i] < numLocalVertices) vertexId_[spaceNodes[i]] = static_cast<long long>(data[i]) - 1;
+  }
+  if (std::find(vertexId_.begin(), vertexId_.end(), -1) != vertexId_.end())
+    throw Error("MeshVertexGrid: a vertex of the local cells has no owner's id");
+
+  cellOfNode_.assign(numNodes, -1);
+  for (long long c = 0; c < ds.mesh().numCells(); ++c)
+    for (int a = 0; a < lspace.nodesPerCell(); ++a) cellOfNode_[lspace.cellNodes(c)[a]] = c;
+
+  const double* xyz = lspace.nodeCoordinates().data();
+  nodesByPlace_.resize(numNodes);
+  std::iota(nodesByPlace_.begin(), nodesByPlace_.end(), 0LL);
+  std::sort(nodesByPlace_.begin(), nodesByPlace_.end(), [&](long long a, long long b) {
+    return std::lexicographical_compare(xyz + dim * a, xyz + dim * (a + 1), xyz + dim * b, xyz + dim * (b + 1));
+  });
+  vertexById_.resize(numLocalVertices);
+  std::iota(vertexById_.begin(), vertexById_.end(), 0LL);
+  std::sort(vertexById_.begin(), vertexById_.end(), [&](long long a, long long b) { return vertexId_[a] < vertexId_[b]; });
+}
+
+long long MeshVertexGrid::nodeAt(const double* x) const {
+  const int dim = dimension();
+  const double* xyz = space_->space().nodeCoordinates().data();
+  const auto at = std::lower_bound(nodesByPlace_.begin(), nodesByPlace_.end(), x, [&](long long node, const double* p) {
+    return std::lexicographical_compare(xyz + dim * node, xyz + dim * (node + 1), p, p + dim);
+  });
+  if (at == nodesByPlace_.end() || !std::equal(x, x + dim, xyz + dim * *at)) return -1;
+  return *at;
+}
+
+long long MeshVertexGrid::vertexAt(const double* x) const {
+  const long long node = nodeAt(x);
+  return node >= 0 && node < static_cast<long long>(vertexId_.size()) ? vertexId_[node] : -1;
+}
+
+void MeshVertexGrid::vertexCoordinates(long long vertex, double* x) const {
+  const auto at = std::lower_bound(vertexById_.begin(), vertexById_.end(), vertex,
+                                   [&](long long v, long long id) { return vertexId_[v] < id; });
+  if (at == vertexById_.end() || vertexId_[*at] != vertex)
+    throw Error("MeshVertexGrid: vertex " + std::to_string(vertex) + " is not in this rank's part of the mesh");
+  const int dim = dimension();
+  std::copy_n(&space_->space().nodeCoordinates()[dim * *at], dim, x);
+}
+
+void MeshVertexGrid::interpolation(const double* x, long long* vertices, double* weights) const {
+  const long long node = nodeAt(x);
+  if (node < 0) throw Error("MeshVertexGrid: interpolation at a point that is not a node of this rank's part");
+  const int dim = dimension();
+  const long long cell = cellOfNode_[node];
+  double coords[12];
+  space_->mesh().cellVertexCoordinates(cell, coords);
+  barycentric(dim, coords, x, weights);
+  const long long* nodes = space_->space().cellNodes(cell);  // its vertices first
+  for (int k = 0; k <= dim; ++k) {
+    vertices[k] = vertexId_[nodes[k]];
+    weights[k] = std::max(weights[k], 0.0);  // round-off below 0 at nodes on the cell's boundary
+  }
+}
+
+std::string MeshVertexGrid::description() const {
+  return "P1 grid of the mesh's " + std::to_string(numVertices_) + " vertices";
+}
+
+}  // namespace signorini
