@@ -10,6 +10,7 @@
 #include "assembly/SummedRows.hpp"
 #include "fe/ElasticityElement.hpp"
 #include "fe/SimplexQuadrature.hpp"
+#include "signorini/core/Error.hpp"
 
 namespace signorini {
 
@@ -55,34 +56,48 @@ MatrixFreeElasticityOperator::MatrixFreeElasticityOperator(std::shared_ptr<const
   toOverlap_ = rcp(new Import(ds.ownedDofMap(), ds.overlapDofMap()));
 }
 
-// y += Q x on the overlap DOFs of the local cells, prescribed DOFs left out.
+// y += Q x on the overlap DOFs of the local cells, prescribed DOFs left out: for the
+// nodes per cell of each degree, so that every loop has a fixed length the compiler unrolls
+// and vectorises.
 template <int D>
 void MatrixFreeElasticityOperator::applyCells(const double* x, double* y) const {
-  const int npc = ds_.space().nodesPerCell();
-  const long long numCells = static_cast<long long>(cellNodes_.size()) / npc;
-  constexpr int kMaxNodes = LagrangeBasis::maxSize;
-  double xe[kMaxNodes][D], ye[kMaxNodes][D], grad[kMaxNodes][D];
+  switch (ds_.space().nodesPerCell()) {
+    case D + 1: return applyCellsOf<D, D + 1>(x, y);                          // P1
+    case (D + 1) * (D + 2) / 2: return applyCellsOf<D, (D + 1) * (D + 2) / 2>(x, y);  // P2
+    case (D + 1) * (D + 2) * (D + 3) / 6: return applyCellsOf<D, (D + 1) * (D + 2) * (D + 3) / 6>(x, y);  // P3
+    default: throw Error("MatrixFreeElasticityOperator: no cell kernel for this degree");
+  }
+}
+
+// Per quadrature point, the displacement gradient is taken in reference coordinates first
+// (G = sum_a x_a dphi_a^T, then grad u = G J^-1) and the stress is mapped back once
+// (S = sigma J^-T, then y_a += S dphi_a): two passes over the nodes instead of mapping every
+// node's gradient to physical coordinates.
+template <int D, int NPC>
+void MatrixFreeElasticityOperator::applyCellsOf(const double* x, double* y) const {
+  const long long numCells = static_cast<long long>(cellNodes_.size()) / NPC;
+  double xe[NPC][D], ye[NPC][D];
   for (long long cell = 0; cell < numCells; ++cell) {
-    const int* nodes = &cellNodes_[cell * npc];
+    const int* nodes = &cellNodes_[cell * NPC];
     const double* geometry = &cellGeometry_[cell * (1 + D * D)];
     const double volume = geometry[0];
-    const double* Jinv = geometry + 1;
-    for (int a = 0; a < npc; ++a)
+    const double* Jinv = geometry + 1;  // Jinv[s * D + e] = d xi_s / d x_e
+    for (int a = 0; a < NPC; ++a)
       for (int c = 0; c < D; ++c) {
         const int dof = D * nodes[a] + c;
         xe[a][c] = fixed_[dof] ? 0.0 : x[dof];
         ye[a][c] = 0.0;
       }
     for (int q = 0; q < numPoints_; ++q) {
-      const double* dphi = &gradients_[q * npc * D];
+      const double* dphi = &gradients_[q * NPC * D];  // dphi[a * D + s] = d phi_a / d xi_s
+      double G[D][D] = {};
+      for (int a = 0; a < NPC; ++a)
+        for (int c = 0; c < D; ++c)
+          for (int s = 0; s < D; ++s) G[c][s] += xe[a][c] * dphi[a * D + s];
       double gradU[D][D] = {};  // gradU[c][e] = d u_c / d x_e
-      for (int a = 0; a < npc; ++a)
-        for (int e = 0; e < D; ++e) {
-          double g = 0.0;
-          for (int s = 0; s < D; ++s) g += dphi[a * D + s] * Jinv[s * D + e];
-          grad[a][e] = g;
-          for (int c = 0; c < D; ++c) gradU[c][e] += xe[a][c] * g;
-        }
+      for (int c = 0; c < D; ++c)
+        for (int e = 0; e < D; ++e)
+          for (int s = 0; s < D; ++s) gradU[c][e] += G[c][s] * Jinv[s * D + e];
       double trace = 0.0;
       for (int c = 0; c < D; ++c) trace += gradU[c][c];
       const double w = weights_[q] * volume;
@@ -90,14 +105,15 @@ void MatrixFreeElasticityOperator::applyCells(const double* x, double* y) const 
       for (int c = 0; c < D; ++c)
         for (int e = 0; e < D; ++e)
           sigma[c][e] = w * (mu_ * (gradU[c][e] + gradU[e][c]) + (c == e ? lambda_ * trace : 0.0));
-      for (int a = 0; a < npc; ++a)
-        for (int c = 0; c < D; ++c) {
-          double sum = 0.0;
-          for (int e = 0; e < D; ++e) sum += sigma[c][e] * grad[a][e];
-          ye[a][c] += sum;
-        }
+      double S[D][D] = {};  // S[c][s] = sum_e sigma[c][e] d xi_s / d x_e
+      for (int c = 0; c < D; ++c)
+        for (int s = 0; s < D; ++s)
+          for (int e = 0; e < D; ++e) S[c][s] += sigma[c][e] * Jinv[s * D + e];
+      for (int a = 0; a < NPC; ++a)
+        for (int c = 0; c < D; ++c)
+          for (int s = 0; s < D; ++s) ye[a][c] += S[c][s] * dphi[a * D + s];
     }
-    for (int a = 0; a < npc; ++a)
+    for (int a = 0; a < NPC; ++a)
       for (int c = 0; c < D; ++c) {
         const int dof = D * nodes[a] + c;
         if (!fixed_[dof]) y[dof] += ye[a][c];

@@ -49,6 +49,8 @@ class MatrixFreeElasticityOperator : public StiffnessOperator {
  private:
   template <int D>
   void applyCells(const double* x, double* y) const;
+  template <int D, int NPC>
+  void applyCellsOf(const double* x, double* y) const;
   template <int D>
   void diagonalOfCells(double* d) const;
 
