@@ -18,10 +18,12 @@ RCP<const Comm> selfComm() { return rcp(new Teuchos::MpiComm<int>(MPI_COMM_SELF)
 
 namespace {
 
-// Whether importing through `importer` only copies: same rows, in the same order, on every rank.
+// Whether importing through `importer` only copies on this rank: the same rows, in the same
+// order, none more or fewer.
 bool copiesOnly(const Import& importer) {
-  return importer.getNumRemoteIDs() == 0 && importer.getNumPermuteIDs() == 0 &&
-         importer.getNumSameIDs() == importer.getTargetMap()->getNodeNumElements();
+  const std::size_t rows = importer.getTargetMap()->getNodeNumElements();
+  return importer.getNumRemoteIDs() == 0 && importer.getNumPermuteIDs() == 0 && importer.getNumSameIDs() == rows &&
+         importer.getSourceMap()->getNodeNumElements() == rows;
 }
 
 }  // namespace
