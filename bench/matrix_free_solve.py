@@ -9,10 +9,10 @@ from the mesh's P1 stiffness), so in the memory the assembled path needs for a p
 solves a larger one: `--budget-case` names the assembled run whose peak memory per rank is
 the budget, and the table marks the matrix-free runs that stay within it.
 
-    /usr/bin/python3 bench/matrix_free_solve.py [--ranks 2] [--cases 3d-p3-nx12,2d-p2-nx200,...] [--largest]
+    /usr/bin/python3 bench/matrix_free_solve.py [--ranks 2] [--cases 3d-p3-nx12,2d-p2-nx200,...] [--largest 2|3]
 
-Writes bench/results/matrix-free-solve.{json,md}; with --largest, 3D P3 near a 24 GB machine's
-memory on each path, bench/results/matrix-free-solve-largest.{json,md}.
+Writes bench/results/matrix-free-solve.{json,md}; with --largest 2 or 3, 3D P2 or P3 near a
+24 GB machine's memory on each path, bench/results/matrix-free-solve-largest-p<2|3>.{json,md}.
 """
 import argparse
 import json
@@ -30,9 +30,10 @@ MEMBERS = {2: os.path.join(ROOT, "xml", "family", "2d-p2-nx200.xml"),
 BOTH = ("assembled", "matrix-free")
 CASES = [(2, 2, 200, BOTH), (2, 3, 100, BOTH), (3, 2, 16, BOTH), (3, 2, 24, BOTH), (3, 2, 32, BOTH),
          (3, 3, 12, BOTH), (3, 3, 16, BOTH), (3, 3, 22, BOTH), (3, 3, 32, BOTH), (3, 3, 44, ("matrix-free",))]
-# --largest: 3D P3 near the memory of a 24 GB machine on each path (6.0 M unknowns assembled,
-# 15.2 M matrix-free), written to matrix-free-solve-largest.{json,md}.
-LARGEST = [(3, 3, 44, ("assembled",)), (3, 3, 60, ("matrix-free",))]
+# --largest DEGREE: 3D P2 or P3 near the memory of a 24 GB machine on each path (P3: 6.0 M
+# unknowns assembled, 15.2 M matrix-free), written to matrix-free-solve-largest-p<DEGREE>.{json,md}.
+LARGEST = {2: [(3, 2, 60, ("assembled",)), (3, 2, 80, ("matrix-free",))],
+           3: [(3, 3, 44, ("assembled",)), (3, 3, 60, ("matrix-free",))]}
 
 
 def name(dim, degree, nx):
@@ -74,12 +75,12 @@ def main():
     parser.add_argument("--cases", default="", help="comma-separated 3d-p<degree>-nx<nx> to keep")
     parser.add_argument("--budget-case", default="3d-p3-nx16", help="the assembled run whose peak memory is the budget")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "matrix-free-solve"))
-    parser.add_argument("--largest", action="store_true", help="run LARGEST instead of CASES")
+    parser.add_argument("--largest", type=int, choices=sorted(LARGEST), help="run LARGEST[degree] instead of CASES")
     args = parser.parse_args()
     made = provenance(args.ranks)  # before any result file is rewritten
     keep = {c for c in args.cases.split(",") if c}
     runs = []
-    for dim, degree, nx, paths in LARGEST if args.largest else CASES:
+    for dim, degree, nx, paths in LARGEST[args.largest] if args.largest else CASES:
         if keep and name(dim, degree, nx) not in keep:
             continue
         for path in paths:
@@ -87,7 +88,8 @@ def main():
             print(table(runs[-1:], None).splitlines()[-1], flush=True)
     budget = next((r["peak_mib_max_rank"] for r in runs
                    if r["path"] == "assembled" and name(r["dim"], r["degree"], r["nx"]) == args.budget_case), None)
-    base = os.path.join(ROOT, "bench", "results", "matrix-free-solve" + ("-largest" if args.largest else ""))
+    base = os.path.join(ROOT, "bench", "results",
+                        "matrix-free-solve" + (f"-largest-p{args.largest}" if args.largest else ""))
     with open(base + ".json", "w") as f:
         json.dump({"provenance": made, "budget_case": args.budget_case, "budget_mib_per_rank": budget,
                    "runs": runs}, f, indent=1)
