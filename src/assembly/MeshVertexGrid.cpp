@@ -1,48 +1,16 @@
 #include "assembly/MeshVertexGrid.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <numeric>
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "fe/ElasticityElement.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
-namespace {
-
-// The barycentric coordinates (dim + 1) of x in the simplex with vertex coordinates `v`
-// (dim + 1 points), by Gaussian elimination with partial pivoting of the dim x dim system.
-void barycentric(int dim, const double* v, const double* x, double* lambda) {
-  double J[3][4];  // [v_k - v_0 | x - v_0]
-  for (int r = 0; r < dim; ++r) {
-    for (int k = 0; k < dim; ++k) J[r][k] = v[(k + 1) * dim + r] - v[r];
-    J[r][dim] = x[r] - v[r];
-  }
-  for (int col = 0; col < dim; ++col) {
-    int pivot = col;
-    for (int r = col + 1; r < dim; ++r)
-      if (std::fabs(J[r][col]) > std::fabs(J[pivot][col])) pivot = r;
-    std::swap(J[col], J[pivot]);
-    if (J[col][col] == 0.0) throw Error("MeshVertexGrid: a degenerate cell");
-    for (int r = col + 1; r < dim; ++r) {
-      const double f = J[r][col] / J[col][col];
-      for (int k = col; k <= dim; ++k) J[r][k] -= f * J[col][k];
-    }
-  }
-  double sum = 0.0;
-  for (int r = dim - 1; r >= 0; --r) {
-    double mu = J[r][dim];
-    for (int k = r + 1; k < dim; ++k) mu -= J[r][k] * lambda[k + 1];
-    lambda[r + 1] = mu / J[r][r];
-    sum += lambda[r + 1];
-  }
-  lambda[0] = 1.0 - sum;
-}
-
-}  // namespace
 
 MeshVertexGrid::MeshVertexGrid(std::shared_ptr<const DistributedSpace> space) : space_(std::move(space)) {
   const DistributedSpace& ds = *space_;
@@ -122,9 +90,17 @@ void MeshVertexGrid::interpolation(const double* x, long long* vertices, double*
   if (node < 0) throw Error("MeshVertexGrid: interpolation at a point that is not a node of this rank's part");
   const int dim = dimension();
   const long long cell = cellOfNode_[node];
-  double coords[12];
+  double coords[12], Jinv[9];
   space_->mesh().cellVertexCoordinates(cell, coords);
-  barycentric(dim, coords, x, weights);
+  inverseJacobian(dim, coords, Jinv);
+  // The reference coordinates of x are the P1 weights of vertices 1 .. dim.
+  double sum = 0.0;
+  for (int s = 0; s < dim; ++s) {
+    weights[s + 1] = 0.0;
+    for (int c = 0; c < dim; ++c) weights[s + 1] += Jinv[s * dim + c] * (x[c] - coords[c]);
+    sum += weights[s + 1];
+  }
+  weights[0] = 1.0 - sum;
   const long long* nodes = space_->space().cellNodes(cell);  // its vertices first
   for (int k = 0; k <= dim; ++k) {
     vertices[k] = vertexId_[nodes[k]];

@@ -24,13 +24,13 @@ using namespace signorini;
 std::shared_ptr<const SimplexMesh> distortedMesh(int dim) {
   const long long n = dim == 2 ? 6 : 3;
   SimplexMesh mesh = makeBoxMesh(dim, {n, n, dim == 3 ? n : 1}, {1.0, 1.0, 1.0});
-  for (long long v = 0; v < mesh.numVertices(); ++v)
-    for (int c = 0; c < dim; ++c) {
-      double& x = mesh.vertices[dim * v + c];
-      bool interior = true;
-      for (int k = 0; k < dim; ++k) interior = interior && mesh.vertices[dim * v + k] > 1e-9 && mesh.vertices[dim * v + k] < 1 - 1e-9;
-      if (interior) x += 0.2 / n * std::sin(7.0 * v + 3.0 * c);
-    }
+  for (long long v = 0; v < mesh.numVertices(); ++v) {
+    double* x = &mesh.vertices[dim * v];
+    bool interior = true;
+    for (int c = 0; c < dim; ++c) interior = interior && x[c] > 1e-9 && x[c] < 1 - 1e-9;
+    if (interior)
+      for (int c = 0; c < dim; ++c) x[c] += 0.2 / n * std::sin(7.0 * v + 3.0 * c);
+  }
   return std::make_shared<const SimplexMesh>(std::move(mesh));
 }
 
