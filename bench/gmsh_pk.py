@@ -1,9 +1,10 @@
 #!/usr/bin/python3
 """P2 and P3 contact solves on Gmsh meshes (the Hertz examples, refined), on 2 ranks, with
-three preconditioner paths: MueLu alone on the assembled Q + A^T D A ("algebraic"), the
+four preconditioner paths: MueLu alone on the assembled Q + A^T D A ("algebraic"), the
 geometric P_k -> P1 step on the mesh's own vertices with MueLu below, on an assembled Q
 ("assembled") and with Q applied cell by cell and never assembled ("matrix-free", the
-default for degrees 2 and 3). Reports the optimal value, main iterations, Newton systems, CG
+default for degrees 2 and 3), and the same matrix-free Q with the P1 step to the mesh refined
+at the nodes instead ("refined": as many P1 unknowns as P_k ones, MueLu below). Reports the optimal value, main iterations, Newton systems, CG
 iterations, assembly and solve times and peak memory.
 
     /usr/bin/python3 bench/gmsh_pk.py [--ranks 2]
@@ -24,7 +25,8 @@ CASES = [("half-disk-2d", 2, 0.3), ("half-disk-2d", 3, 0.5), ("half-ball-3d", 2,
          ("half-ball-3d", 3, 1.0)]
 PATHS = {"algebraic": ["Problem/stiffness: operator=assembled", "Solver/Preconditioner/hierarchy=algebraic"],
          "assembled": ["Problem/stiffness: operator=assembled"],
-         "matrix-free": ["Problem/stiffness: operator=matrix-free"]}
+         "matrix-free": ["Problem/stiffness: operator=matrix-free"],
+         "refined": ["Problem/stiffness: operator=matrix-free", "Problem/stiffness: P1 grid=refined at nodes"]}
 
 
 def run(case, path, ranks, workdir):

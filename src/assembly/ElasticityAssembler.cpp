@@ -471,32 +471,40 @@ RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const std::shared_ptr<cons
 
 RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDefinition& problem,
                                      const GeometricGrid& grid) {
-  const SimplexMesh& mesh = ds.mesh();
+  const LagrangeSpace& space = ds.space();
   const int dim = ds.dim(), n = dim * (dim + 1);
   const std::vector<char> fixed = dirichletData(ds, problem).fixed;
-  // Space nodes below numVertices() are the mesh's vertices, in the same order.
-  std::vector<long long> gridVertex(mesh.numVertices());
-  for (long long v = 0; v < mesh.numVertices(); ++v) {
-    gridVertex[v] = grid.vertexAt(&ds.space().nodeCoordinates()[dim * v]);
-    if (gridVertex[v] < 0) throw Error("assembleGridStiffness: a mesh vertex is not a vertex of " + grid.description());
+  // The grid's cells in each mesh cell, as local nodes: the cell itself, or its split at the
+  // nodes. Their nodes are the grid's vertices.
+  const LagrangeBasis linear(dim, 1);
+  const std::vector<std::array<int, 4>> pieces =
+      grid.refinesFineCells() ? space.basis().subSimplices() : linear.subSimplices();
+  const long long numVertexNodes = grid.refinesFineCells() ? space.numNodes() : ds.mesh().numVertices();
+  std::vector<long long> gridVertex(numVertexNodes);
+  for (long long v = 0; v < numVertexNodes; ++v) {
+    gridVertex[v] = grid.vertexAt(&space.nodeCoordinates()[dim * v]);
+    if (gridVertex[v] < 0) throw Error("assembleGridStiffness: a mesh node is not a vertex of " + grid.description());
   }
-  std::vector<GlobalOrdinal> rowIds(dim * mesh.numVertices());
+  std::vector<GlobalOrdinal> rowIds(dim * numVertexNodes);
   for (std::size_t i = 0; i < rowIds.size(); ++i) rowIds[i] = dim * gridVertex[i / dim] + i % dim;
   SummedRows rows(std::move(rowIds));
-  const LagrangeBasis linear(dim, 1);
   std::vector<double> vertexCoords((dim + 1) * dim), Ke;
-  for (long long cell = 0; cell < mesh.numCells(); ++cell) {
-    mesh.cellVertexCoordinates(cell, vertexCoords.data());
-    elasticityStiffness(linear, vertexCoords.data(), problem.material, Ke);
-    const long long* vertices = ds.space().cellNodes(cell);
-    const auto dof = [&](int a) { return dim * vertices[a / dim] + a % dim; };
-    for (int a = 0; a < n; ++a) {
-      if (fixed[dof(a)]) continue;
-      for (int b = 0; b < n; ++b)
-        if (!fixed[dof(b)]) rows.add(dof(a), dim * gridVertex[vertices[b / dim]] + b % dim, Ke[a * n + b]);
+  long long vertices[4];
+  const auto dof = [&](int a) { return dim * vertices[a / dim] + a % dim; };
+  for (long long cell = 0; cell < ds.mesh().numCells(); ++cell)
+    for (const auto& piece : pieces) {
+      for (int v = 0; v <= dim; ++v) {
+        vertices[v] = space.cellNodes(cell)[piece[v]];
+        std::copy_n(&space.nodeCoordinates()[dim * vertices[v]], dim, &vertexCoords[dim * v]);
+      }
+      elasticityStiffness(linear, vertexCoords.data(), problem.material, Ke);
+      for (int a = 0; a < n; ++a) {
+        if (fixed[dof(a)]) continue;
+        for (int b = 0; b < n; ++b)
+          if (!fixed[dof(b)]) rows.add(dof(a), dim * gridVertex[vertices[b / dim]] + b % dim, Ke[a * n + b]);
+      }
     }
-  }
-  for (long long v = 0; v < mesh.numVertices(); ++v)
+  for (long long v = 0; v < numVertexNodes; ++v)
     for (int c = 0; c < dim; ++c)
       if (ds.ownsNode(v) && fixed[dim * v + c]) rows.add(dim * v + c, dim * gridVertex[v] + c, 1.0);
   return rows.onOwners(ds.comm());

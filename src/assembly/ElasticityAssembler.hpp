@@ -19,11 +19,13 @@ namespace signorini {
 ContactQP assembleContactQP(const DistributedSpace& space, const ProblemDefinition& problem,
                             bool assembleStiffness = true);
 
-// The P1 stiffness of the space's mesh on the vertices of `grid`, the mesh's own P1 grid: DOF
-// dim * (grid vertex) + component, prescribed DOFs (those of the P_k space at the vertices)
-// eliminated to unit rows. It is P^T Q P for Q of assembleContactQP and P the P1
-// interpolation from the grid that the geometric multigrid uses (ContactQP::gridStiffness).
-// Rows on a one-to-one map of the vertices of each rank's cells. Collective.
+// The P1 stiffness of `grid`, the space's mesh (a MeshVertexGrid or a BoxGrid of the same
+// cells) or, if grid.refinesFineCells(), that mesh split at the nodes (LagrangeBasis::
+// subSimplices): DOF dim * (grid vertex) + component, prescribed DOFs (those of the P_k space
+// at the vertices) eliminated to unit rows (ContactQP::gridStiffness). On the mesh's own
+// grid it is P^T Q P for Q of assembleContactQP and P the P1 interpolation from the grid that
+// the geometric multigrid uses. Rows on a one-to-one map of the vertices of each rank's
+// cells. Collective.
 RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& space, const ProblemDefinition& problem,
                                      const GeometricGrid& grid);
 

@@ -12,14 +12,39 @@
 
 namespace signorini {
 
-MeshVertexGrid::MeshVertexGrid(std::shared_ptr<const DistributedSpace> space) : space_(std::move(space)) {
+MeshVertexGrid::MeshVertexGrid(std::shared_ptr<const DistributedSpace> space, Refinement refinement)
+    : space_(std::move(space)), refinement_(refinement) {
   const DistributedSpace& ds = *space_;
   const LagrangeSpace& lspace = ds.space();
   const int dim = ds.dim();
-  const long long numLocalVertices = ds.mesh().numVertices(), numNodes = lspace.numNodes();
+  const long long numNodes = lspace.numNodes();
+  if (refinement_ == Refinement::atNodes) {
+    numVertices_ = ds.numGlobalNodes();
+    vertexId_.resize(numNodes);
+    for (long long node = 0; node < numNodes; ++node) vertexId_[node] = ds.globalNode(node);
+  } else {
+    numberMeshVertices();
+    cellOfNode_.assign(numNodes, -1);
+    for (long long c = 0; c < ds.mesh().numCells(); ++c)
+      for (int a = 0; a < lspace.nodesPerCell(); ++a) cellOfNode_[lspace.cellNodes(c)[a]] = c;
+  }
 
-  // Global vertex ids: each owner numbers its vertices in the order of their node ids, after
-  // the vertices of the ranks before it; the ghosts learn theirs through the node maps.
+  const double* xyz = lspace.nodeCoordinates().data();
+  nodesByPlace_.resize(numNodes);
+  std::iota(nodesByPlace_.begin(), nodesByPlace_.end(), 0LL);
+  std::sort(nodesByPlace_.begin(), nodesByPlace_.end(), [&](long long a, long long b) {
+    return std::lexicographical_compare(xyz + dim * a, xyz + dim * (a + 1), xyz + dim * b, xyz + dim * (b + 1));
+  });
+  vertexById_.resize(vertexId_.size());
+  std::iota(vertexById_.begin(), vertexById_.end(), 0LL);
+  std::sort(vertexById_.begin(), vertexById_.end(), [&](long long a, long long b) { return vertexId_[a] < vertexId_[b]; });
+}
+
+// Each owner numbers its vertices in the order of their node ids, after the vertices of the
+// ranks before it; the ghosts learn theirs through the node maps.
+void MeshVertexGrid::numberMeshVertices() {
+  const DistributedSpace& ds = *space_;
+  const long long numLocalVertices = ds.mesh().numVertices();
   std::vector<long long> owned;
   for (long long v = 0; v < numLocalVertices; ++v)
     if (ds.ownsNode(v)) owned.push_back(v);
@@ -37,28 +62,12 @@ MeshVertexGrid::MeshVertexGrid(std::shared_ptr<const DistributedSpace> space) : 
   overlapIds.doImport(ownedIds, Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>(ds.ownedNodeMap(), ds.overlapNodeMap()),
                       Tpetra::INSERT);
   vertexId_.assign(numLocalVertices, -1);
-  {
-    auto data = overlapIds.getData();
-    const auto& spaceNodes = ds.overlapSpaceNodes();
-    for (std::size_t i = 0; i < spaceNodes.size(); ++i)
-      if (spaceNodes[i] < numLocalVertices) vertexId_[spaceNodes[i]] = static_cast<long long>(data[i]) - 1;
-  }
+  auto data = overlapIds.getData();
+  const auto& spaceNodes = ds.overlapSpaceNodes();
+  for (std::size_t i = 0; i < spaceNodes.size(); ++i)
+    if (spaceNodes[i] < numLocalVertices) vertexId_[spaceNodes[i]] = static_cast<long long>(data[i]) - 1;
   if (std::find(vertexId_.begin(), vertexId_.end(), -1) != vertexId_.end())
     throw Error("MeshVertexGrid: a vertex of the local cells has no owner's id");
-
-  cellOfNode_.assign(numNodes, -1);
-  for (long long c = 0; c < ds.mesh().numCells(); ++c)
-    for (int a = 0; a < lspace.nodesPerCell(); ++a) cellOfNode_[lspace.cellNodes(c)[a]] = c;
-
-  const double* xyz = lspace.nodeCoordinates().data();
-  nodesByPlace_.resize(numNodes);
-  std::iota(nodesByPlace_.begin(), nodesByPlace_.end(), 0LL);
-  std::sort(nodesByPlace_.begin(), nodesByPlace_.end(), [&](long long a, long long b) {
-    return std::lexicographical_compare(xyz + dim * a, xyz + dim * (a + 1), xyz + dim * b, xyz + dim * (b + 1));
-  });
-  vertexById_.resize(numLocalVertices);
-  std::iota(vertexById_.begin(), vertexById_.end(), 0LL);
-  std::sort(vertexById_.begin(), vertexById_.end(), [&](long long a, long long b) { return vertexId_[a] < vertexId_[b]; });
 }
 
 long long MeshVertexGrid::nodeAt(const double* x) const {
@@ -89,6 +98,12 @@ void MeshVertexGrid::interpolation(const double* x, long long* vertices, double*
   const long long node = nodeAt(x);
   if (node < 0) throw Error("MeshVertexGrid: interpolation at a point that is not a node of this rank's part");
   const int dim = dimension();
+  if (refinement_ == Refinement::atNodes) {  // every node is a vertex
+    std::fill_n(vertices, dim + 1, vertexId_[node]);
+    std::fill_n(weights, dim + 1, 0.0);
+    weights[0] = 1.0;
+    return;
+  }
   const long long cell = cellOfNode_[node];
   double coords[12], Jinv[9];
   space_->mesh().cellVertexCoordinates(cell, coords);
@@ -109,6 +124,8 @@ void MeshVertexGrid::interpolation(const double* x, long long* vertices, double*
 }
 
 std::string MeshVertexGrid::description() const {
+  if (refinement_ == Refinement::atNodes)
+    return "P1 grid of the mesh refined at its " + std::to_string(numVertices_) + " nodes";
   return "P1 grid of the mesh's " + std::to_string(numVertices_) + " vertices";
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// The P1 grid of a distributed P_k space's own mesh (k > 1): its vertices, numbered globally,
-// and for each node of the space the cell that holds it and its P1 weights there. What the
-// geometric multigrid needs for its P_k -> P1 step on a mesh with no coarser grids (a Gmsh
-// mesh): below the P1 level it hands over to MueLu or a direct solve.
+// The P1 grid of a distributed P_k space's own mesh (k > 1), or of that mesh refined at the
+// nodes (each cell split into k^dim simplices on its nodes, every node a vertex): its
+// vertices, numbered globally, and for each node of the space the cell that holds it and its
+// P1 weights there. What the geometric multigrid needs for its P_k -> P1 step on a mesh with
+// no coarser grids (a Gmsh mesh): below the P1 level it hands over to MueLu or a direct solve.
 //
 // A rank answers for the points of its own part: vertexAt() and interpolation() for the
 // nodes of its cells (the multigrid asks about its owned nodes), vertexCoordinates() for the
@@ -18,9 +19,12 @@ namespace signorini {
 
 class MeshVertexGrid : public GeometricGrid {
  public:
+  enum class Refinement { none, atNodes };
+
   // Collective. Vertices are numbered in the order of their nodes' global ids, the owners'
-  // ranges one after the other. The grid shares the space.
-  explicit MeshVertexGrid(std::shared_ptr<const DistributedSpace> space);
+  // ranges one after the other (refined at the nodes: a vertex's id is its node's). The grid
+  // shares the space.
+  explicit MeshVertexGrid(std::shared_ptr<const DistributedSpace> space, Refinement refinement = Refinement::none);
 
   int dimension() const override { return space_->dim(); }
   long long numVertices() const override { return numVertices_; }
@@ -29,16 +33,22 @@ class MeshVertexGrid : public GeometricGrid {
   // x must be a node of this rank's part (else Error): its cell's vertices and weights.
   void interpolation(const double* x, long long* vertices, double* weights) const override;
   std::shared_ptr<const GeometricGrid> coarser() const override { return nullptr; }
+  bool refinesFineCells() const override { return refinement_ == Refinement::atNodes; }
   std::string description() const override;
 
  private:
   // The local space node at x, or -1.
   long long nodeAt(const double* x) const;
 
+  // vertexId_ for the mesh's own vertices, and numVertices_.
+  void numberMeshVertices();
+
   std::shared_ptr<const DistributedSpace> space_;
+  Refinement refinement_;
   long long numVertices_ = 0;
-  std::vector<long long> vertexId_;       // per local mesh vertex (= space node below numVertices())
-  std::vector<long long> cellOfNode_;     // per local space node: a local cell that holds it
+  std::vector<long long> vertexId_;       // per local vertex: mesh vertex (= space node below
+                                          // mesh().numVertices()), or space node when refined
+  std::vector<long long> cellOfNode_;     // per local space node: a local cell that holds it (not refined)
   std::vector<long long> nodesByPlace_;   // local space nodes sorted by coordinates
   std::vector<long long> vertexById_;     // local vertices sorted by global id
 };

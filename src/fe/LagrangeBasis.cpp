@@ -101,4 +101,42 @@ std::vector<int> LagrangeBasis::facetNodes(int facet) const {
   return nodes;
 }
 
+// In the coordinates y_i = a_i + .. + a_dim the lattice fills k >= y_1 >= .. >= y_dim >= 0,
+// a scaled Kuhn simplex: the Kuhn simplices of the unit cubes inside it (corner p, then
+// one step along each axis in the order of a permutation) split it into k^dim congruent
+// pieces, with vertices on the lattice.
+std::vector<std::array<int, 4>> LagrangeBasis::subSimplices() const {
+  const int k = degree_;
+  const auto nodeAt = [&](const std::array<int, 3>& y) {
+    std::array<int, 4> a = {k - y[0], 0, 0, 0};
+    for (int i = 0; i < dim_; ++i) a[i + 1] = y[i] - (i + 1 < dim_ ? y[i + 1] : 0);
+    return static_cast<int>(std::find(lattice_.begin(), lattice_.end(), a) - lattice_.begin());
+  };
+  const auto inside = [&](const std::array<int, 3>& y) {
+    for (int i = 0; i < dim_; ++i)
+      if (y[i] < (i + 1 < dim_ ? y[i + 1] : 0) || y[i] > (i > 0 ? y[i - 1] : k)) return false;
+    return true;
+  };
+  std::vector<std::array<int, 4>> simplices;
+  std::array<int, 3> corner = {0, 0, 0};
+  for (corner[0] = 0; corner[0] < k; ++corner[0])
+    for (corner[1] = 0; corner[1] < k; ++corner[1])
+      for (corner[2] = 0; corner[2] < (dim_ == 3 ? k : 1); ++corner[2]) {
+        std::array<int, 3> axes = {0, 1, 2};
+        do {
+          std::array<int, 4> simplex = {-1, -1, -1, -1};
+          std::array<int, 3> y = corner;
+          bool keep = inside(y);
+          simplex[0] = nodeAt(y);
+          for (int s = 0; s < dim_ && keep; ++s) {
+            ++y[axes[s]];
+            keep = inside(y);
+            simplex[s + 1] = nodeAt(y);
+          }
+          if (keep) simplices.push_back(simplex);
+        } while (std::next_permutation(axes.begin(), axes.begin() + dim_));
+      }
+  return simplices;
+}
+
 }  // namespace signorini

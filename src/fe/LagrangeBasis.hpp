@@ -27,6 +27,10 @@ class LagrangeBasis {
   // The local nodes on the facet opposite vertex `facet` (lattice weight 0 there), ascending.
   std::vector<int> facetNodes(int facet) const;
 
+  // The cell split at its nodes into degree^dim simplices (Freudenthal's subdivision of the
+  // lattice), each as its dim + 1 local nodes (entries past dim are -1). Degree 1: the cell.
+  std::vector<std::array<int, 4>> subSimplices() const;
+
   // Reference coordinates of a local node (entries past dim are 0).
   std::array<double, 3> referencePoint(int node) const;
 

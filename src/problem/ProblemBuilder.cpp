@@ -103,12 +103,16 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       result.qp.Qassembled = result.qp.Qmatrix();
       result.qp.Q = matrixFreeStiffness(result.space, def);
     }
-    // The grids of the geometric multigrid: a box's nested ones, or a P_k space's own mesh.
-    if (box)
+    // The grids of the geometric multigrid: a box's nested ones, a P_k space's own mesh, or
+    // that mesh refined at the nodes, whose stiffness is no Galerkin product of Q's.
+    if (def.gridRefinedAtNodes)
+      result.qp.grid = std::make_shared<MeshVertexGrid>(result.space, MeshVertexGrid::Refinement::atNodes);
+    else if (box)
       result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
     else if (def.degree > 1)
       result.qp.grid = std::make_shared<MeshVertexGrid>(result.space);
-    if (onlyGridStiffness) result.qp.gridStiffness = assembleGridStiffness(*result.space, def, *result.qp.grid);
+    if (onlyGridStiffness || def.gridRefinedAtNodes)
+      result.qp.gridStiffness = assembleGridStiffness(*result.space, def, *result.qp.grid);
     assembly.stop();
   }
   result.setupSeconds = maxOverRanks(*comm, setup.totalElapsedTime());

@@ -81,6 +81,12 @@ ParameterList validProblemParameters() {
         "assembles Q for the preconditioner. \"auto\": matrix-free of degree 2 or 3 (less memory, as fast end "
         "to end), else assembled",
         choices({"auto", "assembled", "matrix-free"}));
+  p.set("stiffness: P1 grid", "mesh",
+        "Of degree 2 or 3, the P1 grid the geometric multigrid goes to first, whose stiffness is assembled: "
+        "\"mesh\": the mesh's own cells (a box mesh's coarser grids follow); \"refined at nodes\": each cell "
+        "split at its nodes into degree^dim cells, every node a vertex, with MueLu below (as many unknowns as "
+        "the P_k space, a sparser matrix; slower and larger than \"mesh\" on the meshes of doc/benchmarks.md)",
+        choices({"mesh", "refined at nodes"}));
 
   ParameterList& dirichlet = p.sublist("Dirichlet", false,
                                        "One sublist per clamped boundary, named after it");
@@ -165,6 +171,7 @@ ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) 
   const std::string stiffness = p.get<std::string>("stiffness: operator");
   def.matrixFreeStiffness =
       stiffness == "matrix-free" || (stiffness == "auto" && def.degree > 1);
+  def.gridRefinedAtNodes = def.degree > 1 && p.get<std::string>("stiffness: P1 grid") == "refined at nodes";
 
   def.dirichlet = boundaryFields(p, "Dirichlet", "displacement: ", dim);
   def.traction = boundaryFields(p, "Traction", "traction: ", dim);

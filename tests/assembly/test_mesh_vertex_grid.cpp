@@ -1,6 +1,7 @@
 // The P1 grid of a P_k space's own mesh, on a general (METIS-partitioned) mesh whose
 // vertices were moved off any box grid: every vertex numbered once, every node of a rank's
-// part located in a cell of it with weights that reproduce linear functions.
+// part located in a cell of it with weights that reproduce linear functions. Refined at the
+// nodes, every node is a vertex with its own global id.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -101,6 +102,35 @@ TEST(MeshVertexGrid, WeightsReproduceLinearFunctionsAtEveryNode) {
     long long vertices[4];
     double weights[4];
     EXPECT_THROW(grid.interpolation(nowhere, vertices, weights), Error) << name(k);
+  }
+}
+
+TEST(MeshVertexGrid, RefinedAtNodesEveryNodeIsItsOwnVertex) {
+  for (const Case k : {Case{2, 2}, Case{3, 3}}) {
+    const auto ds = space(k);
+    const MeshVertexGrid grid(ds, MeshVertexGrid::Refinement::atNodes);
+    const int dim = k.dim;
+    EXPECT_TRUE(grid.refinesFineCells()) << name(k);
+    EXPECT_FALSE(MeshVertexGrid(ds).refinesFineCells()) << name(k);
+    EXPECT_EQ(grid.numVertices(), ds->numGlobalNodes()) << name(k);
+    for (long long node = 0; node < ds->space().numNodes(); ++node) {
+      const double* x = &ds->space().nodeCoordinates()[dim * node];
+      ASSERT_EQ(grid.vertexAt(x), ds->globalNode(node)) << name(k);
+      double back[3];
+      grid.vertexCoordinates(ds->globalNode(node), back);
+      for (int c = 0; c < dim; ++c) EXPECT_EQ(back[c], x[c]) << name(k);
+      long long vertices[4];
+      double weights[4], sum = 0;
+      grid.interpolation(x, vertices, weights);
+      for (int v = 0; v <= dim; ++v) {
+        EXPECT_EQ(vertices[v], ds->globalNode(node)) << name(k);
+        sum += weights[v];
+      }
+      EXPECT_EQ(weights[0], 1.0) << name(k);
+      EXPECT_EQ(sum, 1.0) << name(k);
+    }
+    const double nowhere[3] = {0.123456, 0.654321, 0.5};
+    EXPECT_EQ(grid.vertexAt(nowhere), -1) << name(k);
   }
 }
 

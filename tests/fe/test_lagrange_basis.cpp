@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "signorini/core/Error.hpp"
@@ -52,6 +53,42 @@ TEST(LagrangeBasis, SizesAndLocalOrder) {
   EXPECT_EQ(p3[15], (std::array<int, 4>{0, 0, 1, 2}));
   EXPECT_EQ(p3[16], (std::array<int, 4>{1, 1, 1, 0}));
   EXPECT_EQ(p3[19], (std::array<int, 4>{0, 1, 1, 1}));
+}
+
+// The split at the nodes tiles the cell: degree^dim simplices of equal volume on the nodes,
+// together using every node.
+TEST(LagrangeBasis, SubSimplicesTileTheCell) {
+  for (int dim = 2; dim <= 3; ++dim)
+    for (int k = 1; k <= 3; ++k) {
+      const LagrangeBasis basis(dim, k);
+      const auto simplices = basis.subSimplices();
+      int count = 1;
+      for (int i = 0; i < dim; ++i) count *= k;
+      ASSERT_EQ(static_cast<int>(simplices.size()), count) << dim << "D P" << k;
+      const double cellVolume = dim == 2 ? 0.5 : 1.0 / 6.0;
+      std::vector<int> uses(basis.size(), 0);
+      for (const auto& s : simplices) {
+        std::array<std::array<double, 3>, 4> x;
+        for (int v = 0; v <= dim; ++v) {
+          ASSERT_GE(s[v], 0);
+          ASSERT_LT(s[v], basis.size());
+          x[v] = basis.referencePoint(s[v]);
+          ++uses[s[v]];
+        }
+        if (dim == 2) {
+          EXPECT_EQ(s[3], -1);
+        }
+        double e[3][3];
+        for (int v = 0; v < dim; ++v)
+          for (int c = 0; c < 3; ++c) e[v][c] = x[v + 1][c] - x[0][c];
+        const double det = dim == 2 ? e[0][0] * e[1][1] - e[0][1] * e[1][0]
+                                    : e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
+                                          e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+                                          e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
+        EXPECT_NEAR(std::fabs(det) / (dim == 2 ? 2.0 : 6.0), cellVolume / count, 1e-14) << dim << "D P" << k;
+      }
+      for (int node = 0; node < basis.size(); ++node) EXPECT_GT(uses[node], 0) << dim << "D P" << k << " node " << node;
+    }
 }
 
 TEST(LagrangeBasis, KroneckerAtNodes) {

@@ -40,9 +40,11 @@ struct ProblemDefinition {
   IsotropicMaterial material;
   std::vector<Expression> bodyForce;  ///< dim components
   int loadQuadratureDegree = 5;
-  /// Q applied cell by cell (assembled as well for P1 and Gmsh meshes); by default on box
-  /// meshes of degree 2 and 3
+  /// Q applied cell by cell (assembled as well for P1); by default of degree 2 and 3
   bool matrixFreeStiffness = false;
+  /// Of degree 2 and 3, the geometric multigrid's P1 grid is the mesh split at the nodes
+  /// (MeshVertexGrid::Refinement::atNodes) instead of the mesh's own cells
+  bool gridRefinedAtNodes = false;
   std::vector<BoundaryField> dirichlet, traction;
   std::string contactBoundary;
   std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body

@@ -26,14 +26,15 @@ struct ContactQP {
   RCP<const MultiVector> nullspace;
   RCP<const MultiVector> coordinates;  ///< optional: node coordinates on a node map (for MueLu)
   int blockSize = 1;                   ///< unknowns per node (dof = blockSize * node + component)
-  std::shared_ptr<const GeometricGrid> grid;  ///< optional: the mesh's P1 grid (geometric multigrid)
+  std::shared_ptr<const GeometricGrid> grid;  ///< optional: a P1 grid of the mesh (geometric multigrid)
   /// optional: Q assembled, when Q is an operator of its own (matrix-free): the
   /// preconditioners and scale estimates use it, every application of Q uses Q.
   RCP<const CrsMatrix> Qassembled;
-  /// optional: P^T Q P for P the P1 interpolation from the vertices of `grid` to Q's DOFs,
-  /// DOF blockSize * vertex + component, any one-to-one row map, prescribed DOFs as unit rows
-  /// (for a Lagrange P_k space, k > 1, the P1 stiffness of its mesh). With a StiffnessOperator
-  /// Q on such a space, the geometric multigrid starts from it and Q is never assembled.
+  /// optional: the P1 stiffness of `grid`, DOF blockSize * vertex + component, any one-to-one
+  /// row map, prescribed DOFs as unit rows: for a Lagrange P_k space, k > 1, that of its mesh
+  /// (P^T Q P for P the P1 interpolation from the grid's vertices to Q's DOFs) or of its mesh
+  /// refined at the nodes. The geometric multigrid's first coarse level starts from it; with
+  /// a StiffnessOperator Q, Q is never assembled.
   RCP<const CrsMatrix> gridStiffness;
 
   /// Q as an assembled matrix: Qassembled if given, else Q if it is a CrsMatrix, else null.

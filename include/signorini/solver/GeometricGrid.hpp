@@ -3,8 +3,8 @@
 /// What the geometric multigrid needs of a mesh: a P1 simplex grid whose vertices are nodes
 /// of the fine space, which simplex holds a point and its P1 weights there, and the next
 /// coarser grid. The problem layer fills it in (a box mesh's nested grids, or the vertices of
-/// a P_k space's own mesh with no coarser grid); the solver sees no mesh. Library users whose
-/// meshes are nested refinements can implement it.
+/// a P_k space's own mesh, or of that mesh refined at the nodes, with no coarser grid); the
+/// solver sees no mesh. Library users whose meshes are nested refinements can implement it.
 #include <memory>
 #include <string>
 
@@ -25,6 +25,10 @@ class GeometricGrid {
   virtual void interpolation(const double* x, long long* vertices, double* weights) const = 0;
   /// The next coarser grid, whose vertices are vertices of this one, or null.
   virtual std::shared_ptr<const GeometricGrid> coarser() const = 0;
+  /// Whether the grid splits the cells of a P_k fine space (k > 1) at its nodes (a
+  /// low-order-refined mesh): its vertices are then all the fine nodes, and its P1 space is a
+  /// level of its own below the fine one rather than the fine space itself.
+  virtual bool refinesFineCells() const { return false; }
   /// For messages, e.g. "32 x 32 box grid".
   virtual std::string description() const = 0;
 };

@@ -170,10 +170,10 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
       geometric_ = geometric.get();
       filteredH_ = rcp(new BarrierHessianOperator(qp.Q, qp.A, qp.Qmatrix()));
       diagonalOfQ_ = stiffness.diagonal();
-      if (assembled)
-        geometric_->setFineStiffness(qp.Qmatrix());
-      else
+      if (!qp.gridStiffness.is_null())
         geometric_->setGridStiffness(*qp.gridStiffness);
+      else
+        geometric_->setFineStiffness(qp.Qmatrix());
     }
     // A single grid factored exactly is H's inverse: a contact correction would add nothing,
     // and the weights need no cap, which only serves such a correction.

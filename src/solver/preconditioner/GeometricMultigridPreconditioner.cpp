@@ -268,8 +268,10 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
   fine->dirichlet = prescribed;
   levels_.push_back(fine);
 
-  // A P_k space (more nodes than the grid's vertices) goes to P1 on its own mesh first.
-  isP1_ = dofMap->getGlobalNumElements() == static_cast<Tpetra::global_size_t>(blockSize * grid.numVertices());
+  // A P_k space (more nodes than the grid's vertices, or a grid that refines its cells) goes
+  // to P1 on that grid first.
+  isP1_ = !grid.refinesFineCells() &&
+          dofMap->getGlobalNumElements() == static_cast<Tpetra::global_size_t>(blockSize * grid.numVertices());
   std::shared_ptr<const GeometricGrid> owner;  // keeps `next` alive
   const GeometricGrid* next = isP1_ ? (owner = grid.coarser()).get() : &grid;
   // A coarse grid the direct solver takes is the last: its exact solve is the best coarse

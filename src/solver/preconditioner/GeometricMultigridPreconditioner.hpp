@@ -2,8 +2,10 @@
 // Geometric multigrid: below the fine space lies the sequence of grids a GeometricGrid gives
 // (for a box mesh, grids with every other vertex line of the one above, and its last, so half
 // the boxes per direction, one more for an odd count; a P_k space, k > 1, first
-// goes to P1 on its own mesh's grid), each a P1 space, joined by P1 interpolation P. The
-// coarse matrices are Galerkin products P^T A P, the smoother is Ifpack2's Chebyshev (on a
+// goes to P1 on its own mesh's grid, or on that mesh refined at its nodes, where P is the
+// identity), each a P1 space, joined by P1 interpolation P. The
+// coarse matrices are Galerkin products P^T A P (the first one, below a P_k space, may be
+// given as the grid's P1 stiffness instead, see setGridStiffness()), the smoother is Ifpack2's Chebyshev (on a
 // fine level given as an operator, computeForSum(), a ChebyshevSmoother of it). The
 // levels end at the first coarse grid with at most "direct solve size" unknowns, solved exactly
 // (gathered to rank 0 and factored), or at a grid whose coarser one would have fewer than
@@ -58,9 +60,10 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   void update(const RCP<CrsMatrix>& A, const CrsMatrix& change, bool reuse = false) override;
 
   // What computeForSum() takes for Q: the fine matrix itself (its Galerkin product P^T Q P
-  // is formed when needed; Q must stay valid), or, for a P_k fine space (k > 1), P^T Q P given
-  // as the grid's P1 stiffness (ContactQP::gridStiffness: DOF blockSize * vertex + component
-  // of the constructor's grid, any one-to-one row map; copied), so that Q need not be assembled.
+  // is formed when needed; Q must stay valid), or, for a P_k fine space (k > 1), the grid's
+  // P1 stiffness (ContactQP::gridStiffness: DOF blockSize * vertex + component of the
+  // constructor's grid, any one-to-one row map; copied) in place of P^T Q P, which it equals
+  // on the mesh's own grid, so that Q need not be assembled.
   void setFineStiffness(const RCP<const CrsMatrix>& Q);
   void setGridStiffness(const CrsMatrix& gridStiffness);
 
