@@ -174,6 +174,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
         geometric_->setGridStiffness(*qp.gridStiffness);
       else
         geometric_->setFineStiffness(qp.Qmatrix());
+      geometric_->setFineStiffnessOperator(qp.Q, *diagonalOfQ_);
     }
     // A single grid factored exactly is H's inverse: a contact correction would add nothing,
     // and the weights need no cap, which only serves such a correction.

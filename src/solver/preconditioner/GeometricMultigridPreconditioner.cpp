@@ -480,7 +480,7 @@ void GeometricMultigridPreconditioner::computeForSum(const RCP<const Operator>& 
     p.degree = smoother_.get<int>("chebyshev: degree");
     p.eigenvalueRatio = smoother_.get<double>("chebyshev: ratio eigenvalue");
     p.boostFactor = smoother_.get<double>("chebyshev: boost factor");
-    p.maxEigenvalue = maxEigenvalue(fine, change);
+    p.maxEigenvalue = maxEigenvalueOfSum(fine, *C, change);
     fine.smoother = rcp(new ChebyshevSmoother(H, fine.eigenvalue.inverseDiagonal(), p));
   }
   buildFrom(1, coarseChange, reuse);
@@ -515,6 +515,48 @@ double GeometricMultigridPreconditioner::maxEigenvalue(Level& level, const RCP<c
     level.eigenvalue.startFresh();
   }
   return smoother_.get<double>("chebyshev: boost factor") * level.eigenvalue.estimate(*level.op, steps);
+}
+
+void GeometricMultigridPreconditioner::setFineStiffnessOperator(const RCP<const Operator>& Q,
+                                                                const Vector& diagonalOfQ) {
+  fineOperator_ = Q;
+  fineOperatorDiagonal_ = rcp(new Vector(diagonalOfQ, Teuchos::Copy));
+  fineOperatorEigenvalue_ = 0.0;
+}
+
+namespace {
+
+// max over rows of sum_j |C_ij| / C_ii: a bound on the eigenvalues of diag(C)^-1 C for a
+// positive semidefinite C (Gershgorin's, for the matrix similar to it), rows of zeros skipped.
+double jacobiGershgorinBound(const CrsMatrix& C) {
+  const auto local = C.getLocalMatrixHost();
+  const auto& rowMap = *C.getRowMap();
+  const auto& colMap = *C.getColMap();
+  double bound = 0.0;
+  for (LocalOrdinal row = 0; row < static_cast<LocalOrdinal>(local.numRows()); ++row) {
+    double diagonal = 0.0, sum = 0.0;
+    for (auto e = local.graph.row_map(row); e < local.graph.row_map(row + 1); ++e) {
+      sum += std::fabs(local.values(e));
+      if (colMap.getGlobalElement(local.graph.entries(e)) == rowMap.getGlobalElement(row)) diagonal = local.values(e);
+    }
+    if (diagonal > 0.0) bound = std::max(bound, sum / diagonal);
+  }
+  return maxOverRanks(*C.getComm(), bound);
+}
+
+}  // namespace
+
+double GeometricMultigridPreconditioner::maxEigenvalueOfSum(Level& fine, const CrsMatrix& C,
+                                                            const RCP<const CrsMatrix>& change) {
+  if (fineOperator_.is_null() || smoother_.isParameter("chebyshev: max eigenvalue"))
+    return maxEigenvalue(fine, change);
+  if (fineOperatorEigenvalue_ == 0.0) {
+    JacobiEigenvalueEstimate ofQ;
+    ofQ.setDiagonal(*fineOperatorDiagonal_);
+    fineOperatorEigenvalue_ = ofQ.estimate(*fineOperator_, smoother_.get<int>("chebyshev: eigenvalue max iterations"));
+  }
+  if (jacobiGershgorinBound(C) > fineOperatorEigenvalue_) return maxEigenvalue(fine, change);
+  return smoother_.get<double>("chebyshev: boost factor") * fineOperatorEigenvalue_;
 }
 
 void GeometricMultigridPreconditioner::buildFrom(std::size_t top, RCP<const CrsMatrix> change, bool reuse) {

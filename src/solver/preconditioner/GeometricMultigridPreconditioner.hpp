@@ -66,6 +66,13 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // on the mesh's own grid, so that Q need not be assembled.
   void setFineStiffness(const RCP<const CrsMatrix>& Q);
   void setGridStiffness(const CrsMatrix& gridStiffness);
+  // Q as an operator with its diagonal (positive; copied), for the fine smoother of
+  // computeForSum(): the largest eigenvalue lambda_Q of D_Q^-1 Q is estimated once, and
+  // every H = Q + C then has max(lambda_Q, gamma_C) as a bound on its own, gamma_C the
+  // Gershgorin bound of diag(C)^-1 C (1 for a diagonal C): no Lanczos steps on H at each
+  // build. (The Rayleigh quotient of H over its diagonal is a mediant of Q's and C's.) When
+  // gamma_C exceeds lambda_Q, H's own estimate is taken. Q must stay valid.
+  void setFineStiffnessOperator(const RCP<const Operator>& Q, const Vector& diagonalOfQ);
 
   // The hierarchy for H = Q + C with the fine level left an operator: `H` applies it and
   // `diagonal` is its diagonal; Q is set as above and C, on the fine DOF map, is nonzero on
@@ -102,6 +109,9 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   RCP<Operator> cycle_;
   bool isP1_ = false;  // the fine space is P1 on the grid's vertices
   RCP<const CrsMatrix> fineStiffness_, firstCoarseStiffness_;  // see setFineStiffness()
+  RCP<const Operator> fineOperator_;  // see setFineStiffnessOperator()
+  RCP<Vector> fineOperatorDiagonal_;
+  double fineOperatorEigenvalue_ = 0.0;  // lambda_Q once estimated
   // The C of the last computeForSum(): its graph and values (null after a compute()).
   RCP<const CrsMatrix::crs_graph_type> lastTerm_;
   std::vector<double> lastTermValues_;
@@ -116,6 +126,8 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // The smoother's max eigenvalue for the level's operator: the smoother list's, or the
   // boosted Lanczos estimate, updated from the last Ritz vector after a `change`.
   double maxEigenvalue(Level& level, const RCP<const CrsMatrix>& change);
+  // The fine smoother's max eigenvalue for H = Q + C (see setFineStiffnessOperator()).
+  double maxEigenvalueOfSum(Level& fine, const CrsMatrix& C, const RCP<const CrsMatrix>& change);
   RCP<const CrsMatrix> changeOfTerm(const CrsMatrix& C) const;
   void rememberTerm(const RCP<const CrsMatrix>& C);
   // P^T Q P (a matrix of its own), and P^T (Q + C) P.
