@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <limits>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <sstream>
 
 #include <Kokkos_DualView.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Distributor.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_FECrsGraph.hpp>
 #include <Tpetra_FECrsMatrix.hpp>
@@ -55,13 +57,19 @@ DirichletData dirichletData(const DistributedSpace& ds, const ProblemDefinition&
   return data;
 }
 
-// The FE graph of the local cells: for each overlap node, its neighbours through the local
-// cells; every component row of the node gets all components of the neighbours. The lists
-// are built in CSR form (a count pass and a fill pass, with a marker per node): a vector per
-// node would leave the heap fragmented for the rest of the run.
-RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
+// Lists in CSR form: list i is items[start[i] .. start[i + 1]).
+template <class T>
+struct Lists {
+  std::vector<std::size_t> start;
+  std::vector<T> items;
+};
+
+// For each overlap node, its neighbours through the local cells (itself included), as
+// overlap indices. Built in CSR form (a count pass and a fill pass, with a marker per node):
+// a vector per node would leave the heap fragmented for the rest of the run.
+Lists<int> localNeighbours(const DistributedSpace& ds) {
   const LagrangeSpace& space = ds.space();
-  const int dim = ds.dim(), npc = space.nodesPerCell();
+  const int npc = space.nodesPerCell();
   const auto& overlap = ds.overlapSpaceNodes();
   const std::size_t numOverlap = overlap.size();
   std::vector<int> localIndex(space.numNodes(), -1);
@@ -80,7 +88,7 @@ RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
       for (int i = 0; i < npc; ++i) cellsOfNode[next[localIndex[space.cellNodes(c)[i]]]++] = c;
   }
 
-  // node -> neighbour nodes (overlap indices); `visit` calls f once per neighbour of node i.
+  // `visit` calls f once per neighbour of node i.
   std::vector<std::size_t> lastSeenBy(numOverlap, numOverlap);
   const auto visit = [&](std::size_t i, auto&& f) {
     for (std::size_t k = cellStart[i]; k < cellStart[i + 1]; ++k) {
@@ -94,34 +102,131 @@ RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
       }
     }
   };
-  std::vector<std::size_t> neighbourStart(numOverlap + 1, 0);
-  for (std::size_t i = 0; i < numOverlap; ++i) visit(i, [&](int) { ++neighbourStart[i + 1]; });
-  for (std::size_t i = 0; i < numOverlap; ++i) neighbourStart[i + 1] += neighbourStart[i];
-  std::vector<int> neighbours(neighbourStart.back());
+  Lists<int> neighbours{std::vector<std::size_t>(numOverlap + 1, 0), {}};
+  for (std::size_t i = 0; i < numOverlap; ++i) visit(i, [&](int) { ++neighbours.start[i + 1]; });
+  for (std::size_t i = 0; i < numOverlap; ++i) neighbours.start[i + 1] += neighbours.start[i];
+  neighbours.items.resize(neighbours.start.back());
   std::fill(lastSeenBy.begin(), lastSeenBy.end(), numOverlap);
   for (std::size_t i = 0; i < numOverlap; ++i) {
-    std::size_t next = neighbourStart[i];
-    visit(i, [&](int n) { neighbours[next++] = n; });
+    std::size_t next = neighbours.start[i];
+    visit(i, [&](int n) { neighbours.items[next++] = n; });
   }
+  return neighbours;
+}
+
+// For each owned node (overlap index below the owned count), its neighbours through other
+// ranks' cells, as global node ids: every rank sends the local neighbour lists of its ghost
+// nodes to their owners. Collective.
+Lists<GlobalOrdinal> remoteNeighbours(const DistributedSpace& ds, const Lists<int>& local) {
+  const auto& overlap = ds.overlapSpaceNodes();
+  const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
+  // The ghosts follow the owned nodes sorted by global id, so grouped by owner: one message
+  // per owner, [node, its neighbours...] per ghost.
+  std::vector<int> owners;
+  std::vector<std::size_t> counts;
+  std::vector<GlobalOrdinal> exports;
+  for (std::size_t g = numOwned; g < overlap.size(); ++g) {
+    owners.push_back(ds.nodeOwner(overlap[g]));
+    counts.push_back(1 + local.start[g + 1] - local.start[g]);
+    exports.push_back(ds.globalNode(overlap[g]));
+    for (std::size_t k = local.start[g]; k < local.start[g + 1]; ++k)
+      exports.push_back(ds.globalNode(overlap[local.items[k]]));
+  }
+  Tpetra::Distributor distributor(ds.comm());
+  std::vector<std::size_t> importCounts(distributor.createFromSends(Teuchos::ArrayView<const int>(owners)));
+  distributor.doPostsAndWaits(Teuchos::ArrayView<const std::size_t>(counts), 1,
+                              Teuchos::ArrayView<std::size_t>(importCounts));
+  std::vector<GlobalOrdinal> imports(std::accumulate(importCounts.begin(), importCounts.end(), std::size_t(0)));
+  distributor.doPostsAndWaits(Teuchos::ArrayView<const GlobalOrdinal>(exports),
+                              Teuchos::ArrayView<const std::size_t>(counts), Teuchos::ArrayView<GlobalOrdinal>(imports),
+                              Teuchos::ArrayView<const std::size_t>(importCounts));
+
+  const Map& owned = *ds.ownedNodeMap();
+  const auto ownedIndex = [&](std::size_t at) {
+    const LocalOrdinal i = owned.getLocalElement(imports[at]);
+    if (i == Teuchos::OrdinalTraits<LocalOrdinal>::invalid())
+      throw Error("assembly: a rank sent the neighbours of a node it does not own to the wrong owner");
+    return static_cast<std::size_t>(i);
+  };
+  Lists<GlobalOrdinal> remote{std::vector<std::size_t>(numOwned + 1, 0), {}};
+  for (std::size_t m = 0, at = 0; m < importCounts.size(); at += importCounts[m++])
+    remote.start[ownedIndex(at) + 1] += importCounts[m] - 1;
+  for (std::size_t i = 0; i < numOwned; ++i) remote.start[i + 1] += remote.start[i];
+  remote.items.resize(remote.start.back());
+  std::vector<std::size_t> next(remote.start.begin(), remote.start.end() - 1);
+  for (std::size_t m = 0, at = 0; m < importCounts.size(); at += importCounts[m++])
+    for (std::size_t k = 1; k < importCounts[m]; ++k) remote.items[next[ownedIndex(at)]++] = imports[at + k];
+  return remote;
+}
+
+// The FE graph of the local cells, in local indices from the start: every component row of
+// a node gets all components of its neighbours. The column map holds the owned nodes, in
+// their order, then every other column node by global id. An owned row also gets the
+// neighbours its node has through other ranks' cells, so that the ghost rows the assembly
+// sends to the owners find their columns there. Collective.
+RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
+  const int dim = ds.dim();
+  const auto& overlap = ds.overlapSpaceNodes();
+  const std::size_t numOverlap = overlap.size(), numOwned = ds.ownedNodeMap()->getNodeNumElements();
+  const Lists<int> local = localNeighbours(ds);
+  const Lists<GlobalOrdinal> remote = remoteNeighbours(ds, local);
+
+  const Map& owned = *ds.ownedNodeMap();
+  std::vector<GlobalOrdinal> others;  // column nodes not owned, sorted
+  for (std::size_t g = numOwned; g < numOverlap; ++g) others.push_back(ds.globalNode(overlap[g]));
+  for (GlobalOrdinal n : remote.items)
+    if (!owned.isNodeGlobalElement(n)) others.push_back(n);
+  std::sort(others.begin(), others.end());
+  others.erase(std::unique(others.begin(), others.end()), others.end());
+  const auto columnOf = [&](GlobalOrdinal n) {
+    const LocalOrdinal i = owned.getLocalElement(n);
+    if (i != Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) return i;
+    return static_cast<LocalOrdinal>(numOwned + (std::lower_bound(others.begin(), others.end(), n) - others.begin()));
+  };
+  std::vector<LocalOrdinal> overlapColumn(numOverlap);
+  for (std::size_t i = 0; i < numOverlap; ++i)
+    overlapColumn[i] = i < numOwned ? static_cast<LocalOrdinal>(i) : columnOf(ds.globalNode(overlap[i]));
+
+  // Each overlap node's column nodes; owned rows with remote neighbours merged and deduplicated.
+  Lists<LocalOrdinal> columns{std::vector<std::size_t>(numOverlap + 1, 0), {}};
+  columns.items.reserve(local.items.size() + remote.items.size());
+  for (std::size_t i = 0; i < numOverlap; ++i) {
+    const auto first = columns.items.size();
+    for (std::size_t k = local.start[i]; k < local.start[i + 1]; ++k) columns.items.push_back(overlapColumn[local.items[k]]);
+    if (i < numOwned && remote.start[i + 1] > remote.start[i]) {
+      for (std::size_t k = remote.start[i]; k < remote.start[i + 1]; ++k) columns.items.push_back(columnOf(remote.items[k]));
+      std::sort(columns.items.begin() + first, columns.items.end());
+      columns.items.erase(std::unique(columns.items.begin() + first, columns.items.end()), columns.items.end());
+    }
+    columns.start[i + 1] = columns.items.size();
+  }
+
+  std::vector<GlobalOrdinal> columnDofs;
+  columnDofs.reserve(dim * (numOwned + others.size()));
+  const auto addDofs = [&](GlobalOrdinal node) {
+    for (int c = 0; c < dim; ++c) columnDofs.push_back(dim * node + c);
+  };
+  for (std::size_t i = 0; i < numOwned; ++i) addDofs(ds.globalNode(overlap[i]));
+  for (GlobalOrdinal n : others) addDofs(n);
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  const auto columnMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(columnDofs), 0, ds.comm()));
 
   Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("entries per row", dim * numOverlap);
   auto hostCounts = counts.view_host();
   for (std::size_t i = 0; i < numOverlap; ++i)
-    for (int c = 0; c < dim; ++c) hostCounts(dim * i + c) = dim * (neighbourStart[i + 1] - neighbourStart[i]);
+    for (int c = 0; c < dim; ++c) hostCounts(dim * i + c) = dim * (columns.start[i + 1] - columns.start[i]);
   counts.modify_host();
   counts.sync_device();
 
-  auto graph = rcp(new FEGraph(ds.ownedDofMap(), ds.overlapDofMap(), counts));
+  auto graph = rcp(new FEGraph(ds.ownedDofMap(), ds.overlapDofMap(), columnMap, counts));
   graph->beginAssembly();
-  std::vector<GlobalOrdinal> cols;
+  std::vector<LocalOrdinal> cols;
   for (std::size_t i = 0; i < numOverlap; ++i) {
     cols.clear();
-    for (std::size_t k = neighbourStart[i]; k < neighbourStart[i + 1]; ++k) {
-      const GlobalOrdinal n = ds.globalNode(overlap[neighbours[k]]);
-      for (int c = 0; c < dim; ++c) cols.push_back(dim * n + c);
-    }
-    const GlobalOrdinal node = ds.globalNode(overlap[i]);
-    for (int c = 0; c < dim; ++c) graph->insertGlobalIndices(dim * node + c, cols.size(), cols.data());
+    for (std::size_t k = columns.start[i]; k < columns.start[i + 1]; ++k)
+      for (int c = 0; c < dim; ++c) cols.push_back(dim * columns.items[k] + c);
+    for (int c = 0; c < dim; ++c)
+      graph->insertLocalIndices(static_cast<LocalOrdinal>(dim * i + c), Teuchos::ArrayView<const LocalOrdinal>(cols));
   }
   graph->endAssembly();
   return graph;
