@@ -192,9 +192,11 @@ RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
   columns.items.reserve(local.items.size() + remote.items.size());
   for (std::size_t i = 0; i < numOverlap; ++i) {
     const auto first = columns.items.size();
-    for (std::size_t k = local.start[i]; k < local.start[i + 1]; ++k) columns.items.push_back(overlapColumn[local.items[k]]);
+    for (std::size_t k = local.start[i]; k < local.start[i + 1]; ++k)
+      columns.items.push_back(overlapColumn[local.items[k]]);
     if (i < numOwned && remote.start[i + 1] > remote.start[i]) {
-      for (std::size_t k = remote.start[i]; k < remote.start[i + 1]; ++k) columns.items.push_back(columnOf(remote.items[k]));
+      for (std::size_t k = remote.start[i]; k < remote.start[i + 1]; ++k)
+        columns.items.push_back(columnOf(remote.items[k]));
       std::sort(columns.items.begin() + first, columns.items.end());
       columns.items.erase(std::unique(columns.items.begin() + first, columns.items.end()), columns.items.end());
     }

@@ -1,15 +1,15 @@
 #pragma once
 // Geometric multigrid: below the fine space lies the sequence of grids a GeometricGrid gives
 // (for a box mesh, grids with every other vertex line of the one above, and its last, so half
-// the boxes per direction, one more for an odd count; a P_k space, k > 1, first
-// goes to P1 on its own mesh's grid, or on that mesh refined at its nodes, where P is the
-// identity), each a P1 space, joined by P1 interpolation P. The
-// coarse matrices are Galerkin products P^T A P (the first one, below a P_k space, may be
-// given as the grid's P1 stiffness instead, see setGridStiffness()), the smoother is Ifpack2's Chebyshev (on a
-// fine level given as an operator, computeForSum(), a ChebyshevSmoother of it). The
-// levels end at the first coarse grid with at most "direct solve size" unknowns, solved exactly
-// (gathered to rank 0 and factored), or at a grid whose coarser one would have fewer than
-// "coarsest size" unknowns or which has none; MueLu's algebraic multigrid, with the grid's
+// the boxes per direction, one more for an odd count; a P_k space, k > 1, first goes to P1 on
+// its own mesh's grid, or on that mesh refined at its nodes, where P is the identity), each a
+// P1 space, joined by P1 interpolation P. The coarse matrices are Galerkin products P^T A P
+// (the first one below a P_k space may be given as the grid's P1 stiffness instead, see
+// setGridStiffness()), the smoother is Ifpack2's Chebyshev (on a fine level given as an
+// operator, computeForSum(), a ChebyshevSmoother of it). The levels end at the first coarse
+// grid with at most "direct solve size" unknowns, solved exactly (gathered to rank 0 and
+// factored), or at a grid whose coarser one would have fewer than "coarsest size" unknowns
+// or which has none; MueLu's algebraic multigrid, with the grid's
 // rigid body modes, takes over below a coarsest grid too large to factor.
 // The cycle is a V-cycle, symmetric positive definite for CG.
 //
