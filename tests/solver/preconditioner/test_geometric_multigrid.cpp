@@ -87,6 +87,19 @@ struct ContactBox {
     }
     return D;
   }
+  // What computeForSum() takes at a step: H's weights set, C = A^T D A and diag(Q) + diag(C).
+  struct Sum {
+    RCP<const CrsMatrix> C;
+    Vector diagonal;
+  };
+  Sum sum(int step, const Vector& diagonalOfQ) {
+    const Vector D = weights(step);
+    H.setWeights(D);
+    Sum s{H.contactTerm(D), Vector(diagonalOfQ.getMap())};
+    s.C->getLocalDiagCopy(s.diagonal);
+    s.diagonal.update(1.0, diagonalOfQ, 1.0);
+    return s;
+  }
   AssembledProblem problem;
   BarrierHessianOperator H;
 };
@@ -297,13 +310,8 @@ TEST(GeometricMultigrid, FineOperatorGivesTheHierarchyOfTheAssembledSum) {
     RCP<const CrsMatrix> firstCoarse;
     for (int step : {0, 2, 7}) {
       const std::string label = std::to_string(dim) + "D step " + std::to_string(step);
-      const Vector D = box.weights(step);
-      box.H.setWeights(D);
-      const RCP<const CrsMatrix> C = box.H.contactTerm(D);
-      Vector diagonal(diagonalOfQ.getMap());
-      C->getLocalDiagCopy(diagonal);
-      diagonal.update(1.0, diagonalOfQ, 1.0);
-      sum.computeForSum(Teuchos::rcpFromRef(box.H), diagonal, C);
+      const ContactBox::Sum terms = box.sum(step, diagonalOfQ);
+      sum.computeForSum(Teuchos::rcpFromRef(box.H), terms.diagonal, terms.C);
       if (firstCoarse.is_null()) firstCoarse = sum.levelMatrix(1);
       EXPECT_EQ(sum.levelMatrix(1).get(), firstCoarse.get()) << label << ": not updated in place";
       GeometricMultigridPreconditioner assembled = multigrid(qp, 50, 0);
@@ -372,19 +380,14 @@ TEST(GeometricMultigrid, StiffnessEigenvalueBoundsEverySum) {
     bounded.setFineStiffnessOperator(qp.Q, diagonalOfQ);
     for (int step = 0; step <= 12; ++step) {
       const std::string label = std::to_string(dim) + "D step " + std::to_string(step);
-      const Vector D = box.weights(step);
-      box.H.setWeights(D);
-      const RCP<const CrsMatrix> C = box.H.contactTerm(D);
-      Vector diagonal(diagonalOfQ.getMap());
-      C->getLocalDiagCopy(diagonal);
-      diagonal.update(1.0, diagonalOfQ, 1.0);
-      auto b = rcp(new Vector(diagonal.getMap()));
+      const ContactBox::Sum terms = box.sum(step, diagonalOfQ);
+      auto b = rcp(new Vector(terms.diagonal.getMap()));
       b->randomize();
       int iterations[2];
       for (int k = 0; k < 2; ++k) {
         GeometricMultigridPreconditioner& m = k == 0 ? bounded : fresh;
-        m.computeForSum(Teuchos::rcpFromRef(box.H), diagonal, C);
-        auto x = rcp(new Vector(diagonal.getMap()));
+        m.computeForSum(Teuchos::rcpFromRef(box.H), terms.diagonal, terms.C);
+        auto x = rcp(new Vector(terms.diagonal.getMap()));
         const KrylovResult r = KrylovSolver().solve(Teuchos::rcpFromRef(box.H), m.getOperator(), b, x, 1e-8, 200);
         ASSERT_TRUE(r.converged) << label;
         iterations[k] = r.iterations;
