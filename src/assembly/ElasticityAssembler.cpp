@@ -3,14 +3,12 @@
 #include <algorithm>
 #include <limits>
 #include <map>
-#include <numeric>
 #include <optional>
 #include <sstream>
 
 #include <Kokkos_DualView.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
-#include <Tpetra_Distributor.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_FECrsGraph.hpp>
 #include <Tpetra_FECrsMatrix.hpp>
@@ -18,6 +16,7 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "assembly/OverlapStiffness.hpp"
 #include "assembly/SummedRows.hpp"
 #include "core/Collectives.hpp"
 #include "fe/ElasticityElement.hpp"
@@ -57,248 +56,26 @@ DirichletData dirichletData(const DistributedSpace& ds, const ProblemDefinition&
   return data;
 }
 
-// Lists in CSR form: list i is items[start[i] .. start[i + 1]).
-template <class T>
-struct Lists {
-  std::vector<std::size_t> start;
-  std::vector<T> items;
-};
-
-// For each overlap node, its neighbours through the local cells (itself included), as
-// overlap indices. Built in CSR form (a count pass and a fill pass, with a marker per node):
-// a vector per node would leave the heap fragmented for the rest of the run.
-Lists<int> localNeighbours(const DistributedSpace& ds) {
-  const LagrangeSpace& space = ds.space();
-  const int npc = space.nodesPerCell();
-  const auto& overlap = ds.overlapSpaceNodes();
-  const std::size_t numOverlap = overlap.size();
-  std::vector<int> localIndex(space.numNodes(), -1);
-  for (std::size_t i = 0; i < numOverlap; ++i) localIndex[overlap[i]] = static_cast<int>(i);
-
-  // node -> local cells
-  const long long numCells = ds.mesh().numCells();
-  std::vector<std::size_t> cellStart(numOverlap + 1, 0);
-  for (long long c = 0; c < numCells; ++c)
-    for (int i = 0; i < npc; ++i) ++cellStart[localIndex[space.cellNodes(c)[i]] + 1];
-  for (std::size_t i = 0; i < numOverlap; ++i) cellStart[i + 1] += cellStart[i];
-  std::vector<long long> cellsOfNode(cellStart.back());
-  {
-    std::vector<std::size_t> next(cellStart.begin(), cellStart.end() - 1);
-    for (long long c = 0; c < numCells; ++c)
-      for (int i = 0; i < npc; ++i) cellsOfNode[next[localIndex[space.cellNodes(c)[i]]]++] = c;
-  }
-
-  // `visit` calls f once per neighbour of node i.
-  std::vector<std::size_t> lastSeenBy(numOverlap, numOverlap);
-  const auto visit = [&](std::size_t i, auto&& f) {
-    for (std::size_t k = cellStart[i]; k < cellStart[i + 1]; ++k) {
-      const long long* nodes = space.cellNodes(cellsOfNode[k]);
-      for (int j = 0; j < npc; ++j) {
-        const int n = localIndex[nodes[j]];
-        if (lastSeenBy[n] != i) {
-          lastSeenBy[n] = i;
-          f(n);
-        }
-      }
-    }
-  };
-  Lists<int> neighbours{std::vector<std::size_t>(numOverlap + 1, 0), {}};
-  for (std::size_t i = 0; i < numOverlap; ++i) visit(i, [&](int) { ++neighbours.start[i + 1]; });
-  for (std::size_t i = 0; i < numOverlap; ++i) neighbours.start[i + 1] += neighbours.start[i];
-  neighbours.items.resize(neighbours.start.back());
-  std::fill(lastSeenBy.begin(), lastSeenBy.end(), numOverlap);
-  for (std::size_t i = 0; i < numOverlap; ++i) {
-    std::size_t next = neighbours.start[i];
-    visit(i, [&](int n) { neighbours.items[next++] = n; });
-  }
-  return neighbours;
-}
-
-// For each owned node (overlap index below the owned count), its neighbours through other
-// ranks' cells, as global node ids: every rank sends the local neighbour lists of its ghost
-// nodes to their owners. Collective.
-Lists<GlobalOrdinal> remoteNeighbours(const DistributedSpace& ds, const Lists<int>& local) {
-  const auto& overlap = ds.overlapSpaceNodes();
-  const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
-  // The ghosts follow the owned nodes sorted by global id, so grouped by owner: one message
-  // per owner, [node, its neighbours...] per ghost.
-  std::vector<int> owners;
-  std::vector<std::size_t> counts;
-  std::vector<GlobalOrdinal> exports;
-  for (std::size_t g = numOwned; g < overlap.size(); ++g) {
-    owners.push_back(ds.nodeOwner(overlap[g]));
-    counts.push_back(1 + local.start[g + 1] - local.start[g]);
-    exports.push_back(ds.globalNode(overlap[g]));
-    for (std::size_t k = local.start[g]; k < local.start[g + 1]; ++k)
-      exports.push_back(ds.globalNode(overlap[local.items[k]]));
-  }
-  Tpetra::Distributor distributor(ds.comm());
-  std::vector<std::size_t> importCounts(distributor.createFromSends(Teuchos::ArrayView<const int>(owners)));
-  distributor.doPostsAndWaits(Teuchos::ArrayView<const std::size_t>(counts), 1,
-                              Teuchos::ArrayView<std::size_t>(importCounts));
-  std::vector<GlobalOrdinal> imports(std::accumulate(importCounts.begin(), importCounts.end(), std::size_t(0)));
-  distributor.doPostsAndWaits(Teuchos::ArrayView<const GlobalOrdinal>(exports),
-                              Teuchos::ArrayView<const std::size_t>(counts), Teuchos::ArrayView<GlobalOrdinal>(imports),
-                              Teuchos::ArrayView<const std::size_t>(importCounts));
-
-  const Map& owned = *ds.ownedNodeMap();
-  const auto ownedIndex = [&](std::size_t at) {
-    const LocalOrdinal i = owned.getLocalElement(imports[at]);
-    if (i == Teuchos::OrdinalTraits<LocalOrdinal>::invalid())
-      throw Error("assembly: a rank sent the neighbours of a node it does not own to the wrong owner");
-    return static_cast<std::size_t>(i);
-  };
-  Lists<GlobalOrdinal> remote{std::vector<std::size_t>(numOwned + 1, 0), {}};
-  for (std::size_t m = 0, at = 0; m < importCounts.size(); at += importCounts[m++])
-    remote.start[ownedIndex(at) + 1] += importCounts[m] - 1;
-  for (std::size_t i = 0; i < numOwned; ++i) remote.start[i + 1] += remote.start[i];
-  remote.items.resize(remote.start.back());
-  std::vector<std::size_t> next(remote.start.begin(), remote.start.end() - 1);
-  for (std::size_t m = 0, at = 0; m < importCounts.size(); at += importCounts[m++])
-    for (std::size_t k = 1; k < importCounts[m]; ++k) remote.items[next[ownedIndex(at)]++] = imports[at + k];
-  return remote;
-}
-
-// The FE graph of the local cells, in local indices from the start: every component row of
-// a node gets all components of its neighbours. The column map holds the owned nodes, in
-// their order, then every other column node by global id. An owned row also gets the
-// neighbours its node has through other ranks' cells, so that the ghost rows the assembly
-// sends to the owners find their columns there. Collective.
-RCP<FEGraph> elasticityGraph(const DistributedSpace& ds) {
-  const int dim = ds.dim();
-  const auto& overlap = ds.overlapSpaceNodes();
-  const std::size_t numOverlap = overlap.size(), numOwned = ds.ownedNodeMap()->getNodeNumElements();
-  const Lists<int> local = localNeighbours(ds);
-  const Lists<GlobalOrdinal> remote = remoteNeighbours(ds, local);
-
-  const Map& owned = *ds.ownedNodeMap();
-  std::vector<GlobalOrdinal> others;  // column nodes not owned, sorted
-  for (std::size_t g = numOwned; g < numOverlap; ++g) others.push_back(ds.globalNode(overlap[g]));
-  for (GlobalOrdinal n : remote.items)
-    if (!owned.isNodeGlobalElement(n)) others.push_back(n);
-  std::sort(others.begin(), others.end());
-  others.erase(std::unique(others.begin(), others.end()), others.end());
-  const auto columnOf = [&](GlobalOrdinal n) {
-    const LocalOrdinal i = owned.getLocalElement(n);
-    if (i != Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) return i;
-    return static_cast<LocalOrdinal>(numOwned + (std::lower_bound(others.begin(), others.end(), n) - others.begin()));
-  };
-  std::vector<LocalOrdinal> overlapColumn(numOverlap);
-  for (std::size_t i = 0; i < numOverlap; ++i)
-    overlapColumn[i] = i < numOwned ? static_cast<LocalOrdinal>(i) : columnOf(ds.globalNode(overlap[i]));
-
-  // Each overlap node's column nodes; owned rows with remote neighbours merged and deduplicated.
-  Lists<LocalOrdinal> columns{std::vector<std::size_t>(numOverlap + 1, 0), {}};
-  columns.items.reserve(local.items.size() + remote.items.size());
-  for (std::size_t i = 0; i < numOverlap; ++i) {
-    const auto first = columns.items.size();
-    for (std::size_t k = local.start[i]; k < local.start[i + 1]; ++k)
-      columns.items.push_back(overlapColumn[local.items[k]]);
-    if (i < numOwned && remote.start[i + 1] > remote.start[i]) {
-      for (std::size_t k = remote.start[i]; k < remote.start[i + 1]; ++k)
-        columns.items.push_back(columnOf(remote.items[k]));
-      std::sort(columns.items.begin() + first, columns.items.end());
-      columns.items.erase(std::unique(columns.items.begin() + first, columns.items.end()), columns.items.end());
-    }
-    columns.start[i + 1] = columns.items.size();
-  }
-
-  std::vector<GlobalOrdinal> columnDofs;
-  columnDofs.reserve(dim * (numOwned + others.size()));
-  const auto addDofs = [&](GlobalOrdinal node) {
-    for (int c = 0; c < dim; ++c) columnDofs.push_back(dim * node + c);
-  };
-  for (std::size_t i = 0; i < numOwned; ++i) addDofs(ds.globalNode(overlap[i]));
-  for (GlobalOrdinal n : others) addDofs(n);
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  const auto columnMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(columnDofs), 0, ds.comm()));
-
-  Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("entries per row", dim * numOverlap);
-  auto hostCounts = counts.view_host();
-  for (std::size_t i = 0; i < numOverlap; ++i)
-    for (int c = 0; c < dim; ++c) hostCounts(dim * i + c) = dim * (columns.start[i + 1] - columns.start[i]);
-  counts.modify_host();
-  counts.sync_device();
-
-  auto graph = rcp(new FEGraph(ds.ownedDofMap(), ds.overlapDofMap(), columnMap, counts));
-  graph->beginAssembly();
-  std::vector<LocalOrdinal> cols;
-  for (std::size_t i = 0; i < numOverlap; ++i) {
-    cols.clear();
-    for (std::size_t k = columns.start[i]; k < columns.start[i + 1]; ++k)
-      for (int c = 0; c < dim; ++c) cols.push_back(dim * columns.items[k] + c);
-    for (int c = 0; c < dim; ++c)
-      graph->insertLocalIndices(static_cast<LocalOrdinal>(dim * i + c), Teuchos::ArrayView<const LocalOrdinal>(cols));
-  }
-  graph->endAssembly();
-  return graph;
-}
-
-// Local indices of each space DOF (dim * space node + component) in the overlap matrix's row
-// and column maps and in the overlap vector's map.
+// Local indices of each space DOF (dim * space node + component) in the stiffness matrix's
+// rows and columns and in the overlap vector's map.
 struct LocalIndices {
   std::vector<LocalOrdinal> row, column, entry;
 };
 // Without a matrix (K null), the vector's alone.
-LocalIndices localIndices(const DistributedSpace& ds, const FEMatrix* K, const Vector& overlapVector) {
+LocalIndices localIndices(const DistributedSpace& ds, const OverlapStiffness* K, const Vector& overlapVector) {
   const int dim = ds.dim();
   const std::size_t numDofs = dim * ds.space().numNodes();
   LocalIndices local{std::vector<LocalOrdinal>(K ? numDofs : 0), std::vector<LocalOrdinal>(K ? numDofs : 0),
                      std::vector<LocalOrdinal>(numDofs)};
   const Map& entries = *overlapVector.getMap();
   for (std::size_t i = 0; i < numDofs; ++i) {
-    const GlobalOrdinal dof = dim * ds.globalNode(i / dim) + i % dim;
-    local.entry[i] = entries.getLocalElement(dof);
+    local.entry[i] = entries.getLocalElement(dim * ds.globalNode(i / dim) + i % dim);
     if (!K) continue;
-    local.row[i] = K->getRowMap()->getLocalElement(dof);
-    local.column[i] = K->getColMap()->getLocalElement(dof);
+    local.row[i] = K->row(i);
+    local.column[i] = K->column(i);
   }
   return local;
 }
-
-// Adds element matrices straight into the local CSR arrays of the overlap matrix (valid
-// between beginAssembly and endAssembly). The dim rows of a node share one column pattern, in
-// which a neighbour's dim components are adjacent columns: one search per pair of element
-// nodes finds all dim * dim entries of the pair, each still checked against its column.
-class ElementMatrixFill {
- public:
-  explicit ElementMatrixFill(const FEMatrix& K) : local_(K.getLocalMatrixHost()) {}
-
-  // Ke is the (dim * npc)^2 element matrix in row-major order, rows and cols its local
-  // row and column indices.
-  void add(int dim, int npc, const LocalOrdinal* rows, const LocalOrdinal* cols, const double* Ke) const {
-    const int n = dim * npc;
-    for (int i = 0; i < npc; ++i) {
-      const LocalOrdinal* row = rows + dim * i;
-      for (int j = 0; j < npc; ++j) {
-        const LocalOrdinal* col = cols + dim * j;
-        const std::size_t offset = find(row[0], col[0]) - local_.graph.row_map(row[0]);
-        for (int a = 0; a < dim; ++a) {
-          const std::size_t begin = local_.graph.row_map(row[a]), end = local_.graph.row_map(row[a] + 1);
-          for (int e = 0; e < dim; ++e) {
-            std::size_t k = begin + offset + e;
-            if (k >= end || local_.graph.entries(k) != col[e]) k = find(row[a], col[e]);
-            local_.values(k) += Ke[(dim * i + a) * n + dim * j + e];
-          }
-        }
-      }
-    }
-  }
-
- private:
-  // The position of (row, col) in the CSR arrays; rows are sorted by Tpetra's fillComplete.
-  std::size_t find(LocalOrdinal row, LocalOrdinal col) const {
-    const auto& entries = local_.graph.entries;
-    const LocalOrdinal* begin = entries.data() + local_.graph.row_map(row);
-    const LocalOrdinal* end = entries.data() + local_.graph.row_map(row + 1);
-    const LocalOrdinal* at = std::lower_bound(begin, end, col);
-    if (at == end || *at != col) at = std::find(begin, end, col);
-    if (at == end) throw Error("assembly: an element entry lies outside the matrix graph");
-    return at - entries.data();
-  }
-
-  FEMatrix::local_matrix_host_type local_;
-};
 
 // Symmetric elimination of prescribed DOFs inside one element: their known values move to
 // the right-hand side of the free DOFs, their rows and columns are zeroed. The unit
@@ -625,13 +402,13 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   if (problem.bodyForce.size() != static_cast<std::size_t>(dim))
     throw InputError("Problem: the body force needs " + std::to_string(dim) + " components");
 
-  const RCP<FEMatrix> K = assembleStiffness ? rcp(new FEMatrix(elasticityGraph(ds))) : Teuchos::null;
+  std::optional<OverlapStiffness> K;
+  if (assembleStiffness) K.emplace(ds);
   Vector bOverlap(ds.overlapDofMap());
 
-  if (K) K->beginAssembly();
   // Local rows and columns of the overlap matrix, and local entries of bOverlap, per space
   // DOF: looked up once here, not for each of the (dim * npc)^2 entries of every cell.
-  const LocalIndices local = localIndices(ds, K.get(), bOverlap);
+  const LocalIndices local = localIndices(ds, K ? &*K : nullptr, bOverlap);
   std::vector<double> vertexCoords((dim + 1) * dim), Ke, Fe, value(n);
   std::vector<char> fixed(n);
   std::vector<LocalOrdinal> rows(n), cols(n), entries(n);
@@ -658,17 +435,13 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   };
 
   auto bData = bOverlap.getDataNonConst();
-  {
-    std::optional<ElementMatrixFill> fill;
-    if (K) fill.emplace(*K);
-    for (long long cell = 0; cell < mesh.numCells(); ++cell) {
-      gatherCell(cell);
-      elasticityStiffness(space.basis(), vertexCoords.data(), problem.material, Ke);
-      bodyForceLoad(space.basis(), vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
-      eliminatePrescribed(fixed, value, n, Ke, Fe);
-      if (fill) fill->add(dim, npc, rows.data(), cols.data(), Ke.data());
-      for (int i = 0; i < n; ++i) bData[entries[i]] += Fe[i];
-    }
+  for (long long cell = 0; cell < mesh.numCells(); ++cell) {
+    gatherCell(cell);
+    elasticityStiffness(space.basis(), vertexCoords.data(), problem.material, Ke);
+    bodyForceLoad(space.basis(), vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
+    eliminatePrescribed(fixed, value, n, Ke, Fe);
+    if (K) K->addElementMatrix(dim, npc, rows.data(), cols.data(), Ke.data());
+    for (int i = 0; i < n; ++i) bData[entries[i]] += Fe[i];
   }
   for (const BoundaryField& bc : problem.traction) {
     const auto traction = [&](const double* x, double* t) {
@@ -686,15 +459,14 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   // Owners put the unit diagonal of prescribed DOFs.
   const auto& overlap = ds.overlapSpaceNodes();
   const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
-  const double one = 1.0;
+  RCP<CrsMatrix> Q;
   if (K) {
     for (std::size_t i = 0; i < numOwned; ++i)
-      for (int c = 0; c < dim; ++c)
-        if (dirichlet.fixed[dim * overlap[i] + c]) {
-          const GlobalOrdinal dof = dim * ds.globalNode(overlap[i]) + c;
-          K->sumIntoGlobalValues(dof, 1, &one, &dof);
-        }
-    K->endAssembly();
+      for (int c = 0; c < dim; ++c) {
+        const long long spaceDof = dim * overlap[i] + c;
+        if (dirichlet.fixed[spaceDof]) K->add(K->row(spaceDof), K->column(spaceDof), 1.0);
+      }
+    Q = K->sumOnOwners();
   }
 
   auto b = rcp(new Vector(ds.ownedDofMap()));
@@ -723,7 +495,7 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   }
 
   ContactQP qp;
-  if (K) qp.Q = K;
+  qp.Q = Q;
   qp.b = b;
   qp.A = constraints.A;
   qp.d = constraints.d;

@@ -1,6 +1,6 @@
 #pragma once
 // Parallel assembly of the contact QP of linear elasticity on a distributed P_k space: the
-// stiffness Q (Tpetra::FECrsMatrix, Dirichlet conditions by symmetric elimination keeping
+// stiffness Q (OverlapStiffness, Dirichlet conditions by symmetric elimination keeping
 // the DOFs), loads b, contact constraints A v <= d (ProblemDefinition's ContactFormulation:
 // one row per contact node: -n_o . u(p) <= g(p), or its weighted gap, see
 // ContactMultiplierBasis), rigid body modes and node coordinates.
