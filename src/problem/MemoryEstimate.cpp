@@ -57,9 +57,10 @@ std::string bytesText(double bytes) {
 
 }  // namespace
 
-double minimumSolveBytes(double unknowns, int dim, int degree, bool assembledStiffness) {
+double minimumSolveBytes(double unknowns, int dim, int degree, bool assembledStiffness, bool refinedGrid) {
   const auto& perUnknown = assembledStiffness ? kAssembledBytesPerUnknown : kMatrixFreeBytesPerUnknown;
-  return unknowns * perUnknown[dim - 2][degree - 1];
+  const double gridLevel = refinedGrid && degree > 1 ? kAssembledBytesPerUnknown[dim - 2][0] : 0.0;
+  return unknowns * (perUnknown[dim - 2][degree - 1] + gridLevel);
 }
 
 double boxMeshUnknowns(int dim, const std::array<long long, 3>& cells, int degree) {
@@ -68,8 +69,9 @@ double boxMeshUnknowns(int dim, const std::array<long long, 3>& cells, int degre
   return dim * nodes;
 }
 
-void checkMemoryFits(double unknowns, int dim, int degree, bool assembledStiffness, const Comm& comm) {
-  const double needed = minimumSolveBytes(unknowns, dim, degree, assembledStiffness);
+void checkMemoryFits(double unknowns, int dim, int degree, bool assembledStiffness, bool refinedGrid,
+                     const Comm& comm) {
+  const double needed = minimumSolveBytes(unknowns, dim, degree, assembledStiffness, refinedGrid);
   const int ranks = ranksOnThisMachine(comm);
   const double available = availableBytes();
   const double local = available > 0 ? needed / comm.getSize() * ranks / available : 0.0;
@@ -82,7 +84,9 @@ void checkMemoryFits(double unknowns, int dim, int degree, bool assembledStiffne
                    bytesText(needed / comm.getSize()) + " on each of the " + std::to_string(comm.getSize()) +
                    " rank(s), more than the " + bytesText(needed / comm.getSize() * ranks / worst) +
                    " a machine has available for its " + std::to_string(ranks) +
-                   " rank(s); use fewer cells (Problem/mesh: cells or mesh: size factor) or more machines");
+                   " rank(s); use fewer cells (Problem/mesh: cells or mesh: size factor)" +
+                   (refinedGrid && degree > 1 ? ", the mesh as the P1 grid (Problem/stiffness: P1 grid)" : "") +
+                   " or more machines");
 }
 
 }  // namespace signorini

@@ -12,8 +12,10 @@ namespace signorini {
 // least, with the stiffness assembled or not (`assembledStiffness` false: a matrix-free P2/P3
 // stiffness on a box mesh, of which no matrix is stored): about four fifths of what whole
 // solves of the benchmark family keep per unknown beyond the ranks' fixed memory
-// (bench/results/reference-solve.json, matrix-free-solve.json).
-double minimumSolveBytes(double unknowns, int dim, int degree, bool assembledStiffness);
+// (bench/results/reference-solve.json, matrix-free-solve.json). With `refinedGrid` (P2/P3,
+// Problem/stiffness: P1 grid = refined at nodes) the multigrid's P1 level has as many
+// unknowns again, its stiffness and hierarchy at least what a P1 solve keeps.
+double minimumSolveBytes(double unknowns, int dim, int degree, bool assembledStiffness, bool refinedGrid = false);
 
 // The unknowns of the P_degree space on a box mesh with these cells per direction (an upper
 // bound in 3D for P2/P3, whose cube centres carry no node), as a double: it may not fit an
@@ -23,6 +25,7 @@ double boxMeshUnknowns(int dim, const std::array<long long, 3>& cells, int degre
 // Throws an InputError on every rank if minimumSolveBytes, shared evenly by the ranks, is
 // more than some machine has available for the ranks it runs (MemAvailable in
 // /proc/meminfo); does nothing where that is unknown. Collective.
-void checkMemoryFits(double unknowns, int dim, int degree, bool assembledStiffness, const Comm& comm);
+void checkMemoryFits(double unknowns, int dim, int degree, bool assembledStiffness, bool refinedGrid,
+                     const Comm& comm);
 
 }  // namespace signorini

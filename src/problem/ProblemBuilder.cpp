@@ -68,7 +68,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     if (gmsh.file.empty()) {
       ProblemDefinition def = readProblemDefinition(problem);
       checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree,
-                      !storesNoStiffness(def), *comm);
+                      !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
       result.space = std::make_shared<const DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
       result.definition = std::move(def);
     } else {
@@ -83,7 +83,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       result.definition = readProblemDefinition(problem, dim);
       result.space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), result.definition.degree);
       checkMemoryFits(static_cast<double>(result.definition.dim) * result.space->numGlobalNodes(),
-                      result.definition.dim, result.definition.degree, !storesNoStiffness(result.definition), *comm);
+                      result.definition.dim, result.definition.degree, !storesNoStiffness(result.definition),
+                      result.definition.gridRefinedAtNodes, *comm);
     }
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);

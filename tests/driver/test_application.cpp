@@ -2,17 +2,20 @@
 // --set works, outputs match the solver's counters.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <algorithm>
 #include <vector>
 
+#include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
 #include "core/ParameterValidation.hpp"
 #include "driver/Application.hpp"
+#include "problem/MemoryEstimate.hpp"
 #include "signorini/core/Error.hpp"
 #include "support/TestProblems.hpp"
 
@@ -364,5 +367,35 @@ TEST(Application, ProblemThatCannotFitIsRefusedBeforeTheMesh) {
   const std::string message = inputErrorOf([&] { runApplication(cl, comm, log); });
   EXPECT_NE(message.find("Problem: 8e+10 unknowns (P1, 2D) need at least"), std::string::npos) << message;
   EXPECT_NE(message.find("use fewer cells"), std::string::npos) << message;
+  EXPECT_EQ(log.str(), "");
+}
+
+// The P1 grid refined at the nodes has as many unknowns as the P2 space: its stiffness and
+// hierarchy count in the bound. A 3D P2 box sized for this machine's available memory fits
+// matrix-free, and is refused with the refined grid, before its mesh is made.
+TEST(Application, RefinedGridCountsInTheMemoryBound) {
+  auto comm = Tpetra::getDefaultComm();
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key, unit;
+  double kib = 0, available = 0;
+  while (meminfo >> key >> kib >> unit)
+    if (key == "MemAvailable:") available = kib * 1024.0;
+  if (available <= 0) GTEST_SKIP() << "no MemAvailable in /proc/meminfo";
+  Teuchos::broadcast(*comm, 0, 1, &available);
+  // Unknowns of the size where the matrix-free bound is about two thirds of the memory.
+  const int nx = static_cast<int>(std::lround((std::cbrt(available / 1000.0 / 3.0) - 1.0) / 2.0));
+  const double unknowns = signorini::boxMeshUnknowns(3, {nx, nx, nx}, 2);
+  ASSERT_LT(signorini::minimumSolveBytes(unknowns, 3, 2, false), 0.8 * available);
+  ASSERT_GT(signorini::minimumSolveBytes(unknowns, 3, 2, false, true), 1.3 * available);
+
+  CommandLine cl;
+  cl.input = sourceDir() + "/xml/family/3d-p2-nx32.xml";
+  cl.output = std::string(std::getenv("SIGNORINI_BINARY_DIR") ? std::getenv("SIGNORINI_BINARY_DIR") : "/tmp") +
+              "/app-refined-too-large-np" + std::to_string(comm->getSize());
+  cl.overrides = {"Problem/mesh: cells={" + std::to_string(nx) + "}", "Problem/stiffness: P1 grid=refined at nodes"};
+  std::ostringstream log;
+  const std::string message = inputErrorOf([&] { runApplication(cl, comm, log); });
+  EXPECT_NE(message.find("(P2, 3D) need at least"), std::string::npos) << message;
+  EXPECT_NE(message.find("the mesh as the P1 grid (Problem/stiffness: P1 grid)"), std::string::npos) << message;
   EXPECT_EQ(log.str(), "");
 }
