@@ -116,17 +116,19 @@ Lists<GlobalOrdinal> remoteNeighbours(const DistributedSpace& ds, const Lists<in
   return remote;
 }
 
-// The column nodes of each overlap node, as column-map node indices, sorted: its local
-// neighbours and, for an owned node, its remote ones. Owned nodes are the first columns, in
-// their order, then every other column node by global id (`others`).
+// Column-map node indices: the owned nodes first, in their order, then every other column
+// node by global id (`others`). `overlapColumn`: that of each overlap node; `columns`: each
+// overlap node's column nodes, sorted, its local neighbours and, for an owned node, its
+// remote ones.
 struct ColumnNodes {
   std::vector<GlobalOrdinal> others;
+  std::vector<LocalOrdinal> overlapColumn;
   Lists<LocalOrdinal> columns;
 };
 ColumnNodes columnNodes(const DistributedSpace& ds) {
   const auto& overlap = ds.overlapSpaceNodes();
   const std::size_t numOverlap = overlap.size(), numOwned = ds.ownedNodeMap()->getNodeNumElements();
-  Lists<int> local = localNeighbours(ds);
+  const Lists<int> local = localNeighbours(ds);
   const Lists<GlobalOrdinal> remote = remoteNeighbours(ds, local);
 
   const Map& owned = *ds.ownedNodeMap();
@@ -142,11 +144,11 @@ ColumnNodes columnNodes(const DistributedSpace& ds) {
     if (i != Teuchos::OrdinalTraits<LocalOrdinal>::invalid()) return i;
     return static_cast<LocalOrdinal>(numOwned + (std::lower_bound(others.begin(), others.end(), n) - others.begin()));
   };
-  std::vector<LocalOrdinal> overlapColumn(numOverlap);
+  std::vector<LocalOrdinal>& overlapColumn = result.overlapColumn;
+  overlapColumn.resize(numOverlap);
   for (std::size_t i = 0; i < numOverlap; ++i)
     overlapColumn[i] = i < numOwned ? static_cast<LocalOrdinal>(i) : columnOf(ds.globalNode(overlap[i]));
 
-  // In place where a node has no remote neighbours (most nodes): the local list, renamed.
   Lists<LocalOrdinal>& columns = result.columns;
   columns.start.assign(numOverlap + 1, 0);
   columns.items.reserve(local.items.size() + remote.items.size());
@@ -199,17 +201,11 @@ OverlapStiffness::OverlapStiffness(const DistributedSpace& ds) : space_(ds) {
 
   row_.resize(dim * ds.space().numNodes());
   column_.resize(row_.size());
-  const Map& ownedNodes = *ds.ownedNodeMap();
-  for (std::size_t i = 0; i < numOverlap; ++i) {
-    const LocalOrdinal owned = ownedNodes.getLocalElement(ds.globalNode(overlap[i]));
-    const LocalOrdinal node = i < numOwned ? owned
-        : static_cast<LocalOrdinal>(numOwned + (std::lower_bound(nodes.others.begin(), nodes.others.end(),
-                                                                  ds.globalNode(overlap[i])) - nodes.others.begin()));
+  for (std::size_t i = 0; i < numOverlap; ++i)
     for (int c = 0; c < dim; ++c) {
       row_[dim * overlap[i] + c] = static_cast<LocalOrdinal>(dim * i + c);
-      column_[dim * overlap[i] + c] = dim * node + c;
+      column_[dim * overlap[i] + c] = dim * nodes.overlapColumn[i] + c;
     }
-  }
 }
 
 // The dim rows of a node share one column pattern, in which a neighbour's dim components are

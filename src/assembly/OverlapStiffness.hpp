@@ -17,7 +17,7 @@ namespace signorini {
 
 class OverlapStiffness {
  public:
-  // The graph of the local cells, entries zero. Collective.
+  // The graph of the local cells, entries zero; `space` must outlive this. Collective.
   explicit OverlapStiffness(const DistributedSpace& space);
 
   // Local row and column of space DOF dim * (space node) + component.
