@@ -167,7 +167,8 @@ ColumnNodes columnNodes(const DistributedSpace& ds) {
 
 }  // namespace
 
-OverlapStiffness::OverlapStiffness(const DistributedSpace& ds) : space_(ds) {
+OverlapStiffness::OverlapStiffness(const DistributedSpace& ds)
+    : ownedDofs_(ds.ownedDofMap()), overlapDofs_(ds.overlapDofMap()) {
   const int dim = ds.dim();
   const auto& overlap = ds.overlapSpaceNodes();
   const std::size_t numOverlap = overlap.size(), numOwned = ds.ownedNodeMap()->getNodeNumElements();
@@ -241,14 +242,14 @@ std::size_t OverlapStiffness::find(LocalOrdinal row, LocalOrdinal column) const 
 
 RCP<CrsMatrix> OverlapStiffness::sumOnOwners() {
   using Graph = Tpetra::CrsGraph<LocalOrdinal, GlobalOrdinal, Node>;
-  const RCP<const Map>& owned = space_.ownedDofMap();
-  const Map& overlap = *space_.overlapDofMap();
+  const RCP<const Map>& owned = ownedDofs_;
+  const Map& overlap = *overlapDofs_;
   const std::size_t ownedRows = owned->getNodeNumElements(), rows = overlap.getNodeNumElements();
   const std::size_t ownedEntries = offsets_(ownedRows), entries = columns_.extent(0);
   const auto prefix = Kokkos::make_pair(std::size_t(0), ownedEntries), suffix = Kokkos::make_pair(ownedEntries, entries);
 
-  auto ownedGraph = rcp(new Graph(owned, columnMap_, Kokkos::subview(offsets_, Kokkos::make_pair(std::size_t(0), ownedRows + 1)),
-                                  Kokkos::subview(columns_, prefix)));
+  const auto ownedOffsets = Kokkos::subview(offsets_, Kokkos::make_pair(std::size_t(0), ownedRows + 1));
+  auto ownedGraph = rcp(new Graph(owned, columnMap_, ownedOffsets, Kokkos::subview(columns_, prefix)));
   ownedGraph->expertStaticFillComplete(owned, owned);
   auto Q = rcp(new CrsMatrix(ownedGraph, Kokkos::subview(values_, prefix)));
 
@@ -258,7 +259,7 @@ RCP<CrsMatrix> OverlapStiffness::sumOnOwners() {
   std::vector<GlobalOrdinal> ghostDofs(rows - ownedRows);
   for (std::size_t i = 0; i < ghostDofs.size(); ++i) ghostDofs[i] = overlap.getGlobalElement(ownedRows + i);
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  auto ghostMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ghostDofs), 0, space_.comm()));
+  auto ghostMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ghostDofs), 0, owned->getComm()));
   auto ghostGraph = rcp(new Graph(ghostMap, columnMap_, ghostOffsets, Kokkos::subview(columns_, suffix)));
   ghostGraph->expertStaticFillComplete(owned, ghostMap, ownedGraph->getImporter());
   CrsMatrix ghosts(ghostGraph, Kokkos::subview(values_, suffix));

@@ -17,7 +17,7 @@ namespace signorini {
 
 class OverlapStiffness {
  public:
-  // The graph of the local cells, entries zero; `space` must outlive this. Collective.
+  // The graph of the local cells, entries zero. Collective.
   explicit OverlapStiffness(const DistributedSpace& space);
 
   // Local row and column of space DOF dim * (space node) + component.
@@ -41,8 +41,7 @@ class OverlapStiffness {
   // Position of (row, column) in the CSR arrays; rows are sorted.
   std::size_t find(LocalOrdinal row, LocalOrdinal column) const;
 
-  const DistributedSpace& space_;
-  RCP<const Map> columnMap_;
+  RCP<const Map> ownedDofs_, overlapDofs_, columnMap_;
   std::vector<LocalOrdinal> row_, column_;
   RowOffsets offsets_;
   Columns columns_;
