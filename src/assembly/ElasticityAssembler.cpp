@@ -415,8 +415,9 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   // Expressions are evaluated at every quadrature point of every cell: skip the zero ones.
   std::vector<char> zeroForce(dim);
   for (int c = 0; c < dim; ++c) zeroForce[c] = problem.bodyForce[c].isConstantZero();
-  const auto force = [&](const double* x, double* f) {
-    for (int c = 0; c < dim; ++c) f[c] = zeroForce[c] ? 0.0 : problem.bodyForce[c](x, dim);
+  const auto force = [&](int count, const double* x, double* f) {
+    for (int c = 0; c < dim; ++c)
+      if (!zeroForce[c]) problem.bodyForce[c].evaluate(count, x, dim, f + c * count);
   };
   const auto gatherCell = [&](long long cell) {
     mesh.cellVertexCoordinates(cell, vertexCoords.data());
@@ -444,8 +445,9 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
     for (int i = 0; i < n; ++i) bData[entries[i]] += Fe[i];
   }
   for (const BoundaryField& bc : problem.traction) {
-    const auto traction = [&](const double* x, double* t) {
-      for (int c = 0; c < dim; ++c) t[c] = bc.components[c] ? (*bc.components[c])(x, dim) : 0.0;
+    const auto traction = [&](int count, const double* x, double* t) {
+      for (int c = 0; c < dim; ++c)
+        if (bc.components[c]) bc.components[c]->evaluate(count, x, dim, t + c * count);
     };
     for (const auto& [cell, facet] : space.boundaryFacets(mesh.tag(bc.boundary))) {
       gatherCell(cell);

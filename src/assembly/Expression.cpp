@@ -5,6 +5,7 @@
 
 #include <muParser.h>
 
+#include "assembly/BatchedExpression.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
@@ -13,6 +14,7 @@ namespace signorini {
 struct Expression::Parser {
   mu::Parser parser;
   double x[3] = {0.0, 0.0, 0.0};
+  std::unique_ptr<detail::BatchedExpression> batched;  // null: evaluated point by point
 };
 
 Expression::Expression(const std::string& text, const std::string& what)
@@ -23,6 +25,7 @@ Expression::Expression(const std::string& text, const std::string& what)
     parser_->parser.DefineVar("z", &parser_->x[2]);
     parser_->parser.SetExpr(text.empty() ? "0" : text);
     parser_->parser.Eval();  // reports syntax errors now, not in the middle of assembly
+    parser_->batched = detail::BatchedExpression::translate(parser_->parser, parser_->x);
   } catch (const mu::Parser::exception_type& e) {
     throw InputError(what + ": cannot evaluate expression \"" + text + "\": " + e.GetMsg());
   }
@@ -40,28 +43,39 @@ Expression& Expression::operator=(const Expression& other) {
 
 Expression::~Expression() = default;
 
-double Expression::evaluate(const double* x, int dim) const {
+double Expression::uncheckedValue(const double* x, int dim) const {
   for (int i = 0; i < 3; ++i) parser_->x[i] = i < dim ? x[i] : 0.0;
   return parser_->parser.Eval();
 }
 
 double Expression::operator()(const double* x, int dim) const {
-  const double value = evaluate(x, dim);
-  if (!std::isfinite(value)) {
-    std::ostringstream point;
-    point << "(" << x[0];
-    for (int i = 1; i < dim; ++i) point << ", " << x[i];
-    point << ")";
-    throw InputError(what_ + ": the expression \"" + text_ + "\" is " + (std::isnan(value) ? "not a number" : "infinite") +
-                     " at " + point.str() + "; give one that is finite on the whole boundary or domain");
-  }
+  const double value = uncheckedValue(x, dim);
+  requireFinite(value, x, dim);
   return value;
+}
+
+void Expression::evaluate(int count, const double* points, int dim, double* values) const {
+  if (parser_->batched)
+    parser_->batched->evaluate(count, points, dim, values);
+  else
+    for (int i = 0; i < count; ++i) values[i] = uncheckedValue(points + static_cast<std::ptrdiff_t>(dim) * i, dim);
+  for (int i = 0; i < count; ++i) requireFinite(values[i], points + static_cast<std::ptrdiff_t>(dim) * i, dim);
+}
+
+void Expression::requireFinite(double value, const double* x, int dim) const {
+  if (std::isfinite(value)) return;
+  std::ostringstream point;
+  point << "(" << x[0];
+  for (int i = 1; i < dim; ++i) point << ", " << x[i];
+  point << ")";
+  throw InputError(what_ + ": the expression \"" + text_ + "\" is " + (std::isnan(value) ? "not a number" : "infinite") +
+                   " at " + point.str() + "; give one that is finite on the whole boundary or domain");
 }
 
 bool Expression::isConstantZero() const {
   // Probes that need not lie in the domain: evaluated without the finiteness check.
   const double origin[3] = {0.0, 0.0, 0.0}, probe[3] = {0.37, 0.71, 0.53};
-  return evaluate(origin, 3) == 0.0 && evaluate(probe, 3) == 0.0 && parser_->parser.GetUsedVar().empty();
+  return uncheckedValue(origin, 3) == 0.0 && uncheckedValue(probe, 3) == 0.0 && parser_->parser.GetUsedVar().empty();
 }
 
 }  // namespace signorini

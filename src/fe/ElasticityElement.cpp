@@ -191,19 +191,22 @@ const LoadTabulation& loadTabulation(const LagrangeBasis& basis, int quadratureD
   return it->second;
 }
 
-// Fe_(dim a + c) = scale * sum_q w_q f_c(x_q) phi_a(xi_q).
+// Fe_(dim a + c) = scale * sum_q w_q f_c(x_q) phi_a(xi_q), with f evaluated at all points of
+// the rule in one call.
 void integrateLoad(const LagrangeBasis& basis, const AffineMap& map, const LoadTabulation& tab, double scale,
-                   const std::function<void(const double*, double*)>& f, std::vector<double>& Fe) {
-  const int d = basis.dim(), n = basis.size();
+                   const PointLoad& f, std::vector<double>& Fe) {
+  const int d = basis.dim(), n = basis.size(), count = tab.size();
+  thread_local std::vector<double> x, value;  // no allocation per cell
+  x.resize(static_cast<std::size_t>(count) * d);
+  value.assign(static_cast<std::size_t>(count) * d, 0.0);
+  for (int q = 0; q < count; ++q) map.map(&tab.points[q * d], &x[q * d]);
+  f(count, x.data(), value.data());
   Fe.assign(d * n, 0.0);
-  for (int q = 0; q < tab.size(); ++q) {
-    double x[3], value[3] = {0, 0, 0};
-    map.map(&tab.points[q * d], x);
-    f(x, value);
+  for (int q = 0; q < count; ++q) {
     const double weight = scale * tab.weights[q];
     for (int a = 0; a < n; ++a) {
       const double wphi = weight * tab.phi[q * n + a];
-      for (int c = 0; c < d; ++c) Fe[d * a + c] += wphi * value[c];
+      for (int c = 0; c < d; ++c) Fe[d * a + c] += wphi * value[c * count + q];
     }
   }
 }
@@ -273,8 +276,7 @@ void elasticityStiffness(const LagrangeBasis& basis, const double* vertexCoords,
     stiffnessFromGradientProducts<3>(basis.size(), gradientProducts(basis).data(), map.inverse, lambda, mu, Ke.data());
 }
 
-void bodyForceLoad(const LagrangeBasis& basis, const double* vertexCoords,
-                   const std::function<void(const double* x, double* f)>& force, int quadratureDegree,
+void bodyForceLoad(const LagrangeBasis& basis, const double* vertexCoords, const PointLoad& force, int quadratureDegree,
                    std::vector<double>& Fe) {
   requireElasticityDim(basis);
   const AffineMap map(basis.dim(), vertexCoords);
@@ -282,7 +284,7 @@ void bodyForceLoad(const LagrangeBasis& basis, const double* vertexCoords,
 }
 
 void facetTractionLoad(const LagrangeBasis& basis, const double* vertexCoords, int localFacet,
-                       const std::function<void(const double* x, double* t)>& traction, int quadratureDegree,
+                       const PointLoad& traction, int quadratureDegree,
                        std::vector<double>& Fe) {
   requireElasticityDim(basis);
   const int d = basis.dim();

@@ -20,18 +20,21 @@ void elasticityStiffness(const LagrangeBasis& basis, const double* vertexCoords,
 // (inverse[s * dim + c] = d xi_s / d x_c), and |det J|. Throws Error for a degenerate cell.
 double inverseJacobian(int dim, const double* vertexCoords, double* inverse);
 
+// A load density at the points of a quadrature rule: load(count, x, f) gets count points of
+// dim coordinates each, one after the other, and writes component c at point q into
+// f[c * count + q] (component by component, so that each can be evaluated in bulk).
+using PointLoad = std::function<void(int count, const double* x, double* f)>;
+
 // Fe_(dim a + c) = integral over the cell of f_c phi_a, with a rule exact for total degree
-// quadratureDegree; force(x, f) writes dim components at point x.
-void bodyForceLoad(const LagrangeBasis& basis, const double* vertexCoords,
-                   const std::function<void(const double* x, double* f)>& force, int quadratureDegree,
+// quadratureDegree.
+void bodyForceLoad(const LagrangeBasis& basis, const double* vertexCoords, const PointLoad& force, int quadratureDegree,
                    std::vector<double>& Fe);
 
 // Fe_(dim a + c) = integral over local facet localFacet (opposite local vertex localFacet)
-// of t_c phi_a, with the facet's true surface measure; traction(x, t) writes dim components.
-// Fe has the size of the whole cell's vector; nodes off the facet get 0.
+// of t_c phi_a, with the facet's true surface measure. Fe has the size of the whole cell's
+// vector; nodes off the facet get 0.
 void facetTractionLoad(const LagrangeBasis& basis, const double* vertexCoords, int localFacet,
-                       const std::function<void(const double* x, double* t)>& traction, int quadratureDegree,
-                       std::vector<double>& Fe);
+                       const PointLoad& traction, int quadratureDegree, std::vector<double>& Fe);
 
 // Cauchy stress sigma = lambda tr(eps) I + 2 mu eps at reference point xi, from the cell's local
 // displacement dofs: the full symmetric dim x dim tensor, row-major (in-plane part in 2D).

@@ -219,6 +219,18 @@ TEST(ElasticityElement, PatchTestStrainEnergy) {
       }
 }
 
+// A load given point by point (f(x, value) writes dim components) as the element routines
+// take it: all points at once, component by component.
+PointLoad pointwise(int dim, std::function<void(const double* x, double* value)> f) {
+  return [dim, f](int count, const double* x, double* values) {
+    for (int q = 0; q < count; ++q) {
+      double value[3];
+      f(x + dim * q, value);
+      for (int c = 0; c < dim; ++c) values[c * count + q] = value[c];
+    }
+  };
+}
+
 TEST(ElasticityElement, BodyForceLoad) {
   for (int dim = 2; dim <= 3; ++dim)
     for (int k = 1; k <= 3; ++k) {
@@ -228,7 +240,7 @@ TEST(ElasticityElement, BodyForceLoad) {
         std::vector<double> Fe;
         // Constant f: the loads add up to f * volume.
         const double f0[3] = {1.5, -2.0, 0.5};
-        bodyForceLoad(basis, x.data(), [&](const double*, double* f) { std::copy(f0, f0 + 3, f); }, k, Fe);
+        bodyForceLoad(basis, x.data(), pointwise(dim, [&](const double*, double* f) { std::copy(f0, f0 + 3, f); }), k, Fe);
         ASSERT_EQ(static_cast<int>(Fe.size()), dim * basis.size());
         for (int c = 0; c < dim; ++c) {
           double sum = 0;
@@ -237,7 +249,8 @@ TEST(ElasticityElement, BodyForceLoad) {
         }
         // f = x_0 e_c: the loads add up to volume * centroid_0, and against the nodal x_1 they
         // give the integral of x_0 x_1 (x_1 lies in P_k), which the vertex formula knows.
-        bodyForceLoad(basis, x.data(), [&](const double* p, double* f) { std::fill(f, f + dim, p[0]); }, k + 1, Fe);
+        bodyForceLoad(basis, x.data(), pointwise(dim, [&](const double* p, double* f) { std::fill(f, f + dim, p[0]); }), k + 1,
+                      Fe);
         const std::vector<double> nodes = nodePositions(basis, x);
         double centroid0 = 0, sumXX = 0, sum = 0, moment = 0;
         for (int i = 0; i <= dim; ++i) centroid0 += x[i * dim] / (dim + 1);
@@ -279,7 +292,8 @@ TEST(ElasticityElement, FacetTractionLoad) {
           }
           std::vector<double> Fe;
           const double t0[3] = {-0.5, 2.0, 1.25};
-          facetTractionLoad(basis, x.data(), facet, [&](const double*, double* t) { std::copy(t0, t0 + 3, t); }, k, Fe);
+          facetTractionLoad(basis, x.data(), facet, pointwise(dim, [&](const double*, double* t) { std::copy(t0, t0 + 3, t); }),
+                            k, Fe);
           ASSERT_EQ(static_cast<int>(Fe.size()), dim * basis.size());
           for (int c = 0; c < dim; ++c) {
             double sum = 0;
@@ -293,15 +307,16 @@ TEST(ElasticityElement, FacetTractionLoad) {
           }
           // A linear traction sums to area * its value at the facet centroid.
           auto linear = [&](const double* p) { return 1.0 + 2.0 * p[0] - p[1] + (dim == 3 ? 0.5 * p[2] : 0.0); };
-          facetTractionLoad(basis, x.data(), facet, [&](const double* p, double* t) { std::fill(t, t + dim, linear(p)); },
-                            k + 1, Fe);
+          facetTractionLoad(basis, x.data(), facet,
+                            pointwise(dim, [&](const double* p, double* t) { std::fill(t, t + dim, linear(p)); }), k + 1,
+                            Fe);
           double sum = 0;
           for (int a = 0; a < basis.size(); ++a) sum += Fe[dim * a + dim - 1];
           EXPECT_NEAR(sum, area * linear(centroid), 1e-13);
         }
       std::vector<double> Fe;
       EXPECT_THROW(facetTractionLoad(basis, cellsOfDim(dim)[0].data(), dim + 1,
-                                     [](const double*, double* t) { t[0] = t[1] = t[2] = 0; }, 1, Fe),
+                                     pointwise(dim, [](const double*, double* t) { t[0] = t[1] = t[2] = 0; }), 1, Fe),
                    Error);
     }
 }

@@ -19,11 +19,16 @@ class Expression {
   /// The value at x (dim coordinates). Throws InputError naming `what`, the expression and
   /// the point if it is not finite (sqrt of a negative number, division by zero...).
   double operator()(const double* x, int dim) const;
+  /// values[i] = the value at points[dim * i ...] for i < count: the same values as operator()
+  /// point by point (up to rounding where a power has a small integer exponent), at a
+  /// fraction of the cost for many points. Throws as operator() does.
+  void evaluate(int count, const double* points, int dim, double* values) const;
   const std::string& text() const { return text_; }
   bool isConstantZero() const;
 
  private:
-  double evaluate(const double* x, int dim) const;  ///< unchecked
+  double uncheckedValue(const double* x, int dim) const;
+  void requireFinite(double value, const double* x, int dim) const;
 
   struct Parser;
   std::string text_, what_;
