@@ -71,8 +71,9 @@ ParameterList validProblemParameters() {
   for (const char* axis : kAxes)
     p.set(std::string("body force: ") + axis, "0",
           std::string("Body force component ") + axis +
-              ", an expression of x, y, z evaluated at every quadrature point (muparser: x^4 costs "
-              "multiplications, (2*x-1)^4 a call of pow)");
+              ", an expression of x, y, z (muparser syntax) evaluated at every quadrature point, a "
+              "cell's points at once; a power with an integer exponent from 2 to 16 is computed by "
+              "multiplications");
   p.set("load: quadrature degree", -1,
         "Expert: Quadrature degree for body forces and tractions; -1: element degree + 4 (exact for "
         "the benchmark family)",
