@@ -59,7 +59,8 @@ void Expression::evaluate(int count, const double* points, int dim, double* valu
     parser_->batched->evaluate(count, points, dim, values);
   else
     for (int i = 0; i < count; ++i) values[i] = uncheckedValue(points + static_cast<std::ptrdiff_t>(dim) * i, dim);
-  for (int i = 0; i < count; ++i) requireFinite(values[i], points + static_cast<std::ptrdiff_t>(dim) * i, dim);
+  for (int i = 0; i < count; ++i)
+    if (!std::isfinite(values[i])) requireFinite(values[i], points + static_cast<std::ptrdiff_t>(dim) * i, dim);
 }
 
 void Expression::requireFinite(double value, const double* x, int dim) const {
