@@ -30,6 +30,9 @@ double integerPower(double base, int exponent) {
 
 std::unique_ptr<BatchedExpression> BatchedExpression::translate(const mu::ParserBase& parser,
                                                                 const double* variables) {
+  // Several results (a, b): muparser returns the stack entry its parser counted, which a
+  // malformed text (a comma before a ?) can make differ from the last value computed.
+  if (parser.GetNumResults() != 1) return nullptr;
   std::unique_ptr<BatchedExpression> batched(new BatchedExpression);
   std::vector<Instruction>& program = batched->program_;
   int depth = 0, conditions = 0;
@@ -100,7 +103,7 @@ std::unique_ptr<BatchedExpression> BatchedExpression::translate(const mu::Parser
     }
     if (depth < 0 || conditions < 0) return nullptr;
   }
-  if (depth != 1 || conditions != 0) return nullptr;  // several results: muparser keeps the last
+  if (depth != 1 || conditions != 0) return nullptr;
   batched->stack_.resize(static_cast<std::size_t>(batched->stackDepth_) * blockSize);
   batched->conditions_.resize(static_cast<std::size_t>(batched->conditionDepth_) * blockSize);
   batched->coordinates_.resize(3 * blockSize);
