@@ -41,7 +41,11 @@ std::unique_ptr<BatchedExpression> BatchedExpression::translate(const mu::Parser
     depth += pushed;
     batched->stackDepth_ = std::max(batched->stackDepth_, depth);
   };
-  const auto coordinate = [&](const mu::SToken& token) { return static_cast<int>(token.Val.ptr - variables); };
+  const auto coordinate = [&](const mu::SToken& token) {
+    for (int k = 0; k < 3; ++k)
+      if (token.Val.ptr == variables + k) return k;
+    return -1;  // a variable other than x, y, z
+  };
   const auto binary = [&](Op op) { emit({op}, -1); };
 
   for (const mu::SToken* token = parser.GetByteCode().GetBase(); token->Cmd != mu::cmEND; ++token) {
@@ -53,7 +57,7 @@ std::unique_ptr<BatchedExpression> BatchedExpression::translate(const mu::Parser
       case mu::cmVARPOW3:
       case mu::cmVARPOW4: {
         const int k = coordinate(*token);
-        if (k < 0 || k > 2) return nullptr;
+        if (k < 0) return nullptr;
         if (token->Cmd == mu::cmVAR) emit({Op::Coordinate, k}, 1);
         else if (token->Cmd == mu::cmVARMUL) emit({Op::ScaledCoordinate, k, 0, token->Val.data, token->Val.data2}, 1);
         else emit({Op::CoordinatePower, k, 2 + (token->Cmd - mu::cmVARPOW2)}, 1);
