@@ -98,7 +98,7 @@ std::unique_ptr<BatchedExpression> BatchedExpression::translate(const mu::Parser
         emit({Op::If}, -1);
         batched->conditionDepth_ = std::max(batched->conditionDepth_, ++conditions);
         break;
-      case mu::cmELSE: emit({Op::Else}, 0); break;
+      case mu::cmELSE: break;  // the else branch is evaluated too, above the then branch's value
       case mu::cmENDIF:
         emit({Op::EndIf}, -1);
         --conditions;
@@ -158,7 +158,6 @@ void BatchedExpression::run(int count, const double* points, int dim, double* va
       case Op::If:
         std::copy_n(level(top--), count, &conditions_[static_cast<std::size_t>(++condition) * blockSize]);
         break;
-      case Op::Else: break;  // the else branch is evaluated too, above the then branch's value
       case Op::EndIf: {
         const double* chosen = &conditions_[static_cast<std::size_t>(condition--) * blockSize];
         double* then = level(top - 1);

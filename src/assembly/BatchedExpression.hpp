@@ -28,7 +28,7 @@ class BatchedExpression {
   enum class Op {
     Constant, Coordinate, ScaledCoordinate, CoordinatePower, IntegerPower,
     Add, Subtract, Multiply, Divide, Power, Less, LessEqual, Greater, GreaterEqual, Equal, NotEqual, And, Or,
-    Function, MultiArgumentFunction, If, Else, EndIf
+    Function, MultiArgumentFunction, If, EndIf
   };
   struct Instruction {
     Op op;
