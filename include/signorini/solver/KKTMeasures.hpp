@@ -40,6 +40,12 @@ class ActiveSetCriterion {
     const double r = rowNorm_[i];
     return std::abs(lambda * r) * displacementScale_ > std::abs(slack / r) * forceScale_;
   }
+  /// The weight (force per displacement, in constraint i's units) at which a force of the
+  /// force scale makes a displacement of `fraction` times the displacement scale.
+  double weight(LocalOrdinal i, double fraction) const {
+    const double r = rowNorm_[i];
+    return forceScale_ / (fraction * displacementScale_ * r * r);
+  }
 
  private:
   std::vector<double> rowNorm_;  ///< per local constraint, 1 for an empty row

@@ -44,6 +44,8 @@ struct SolveResult {
   long long krylovIterations = 0;
   int maxKrylovPerNewton = 0;
   int preconditionerSetups = 0;  ///< AMG hierarchies built
+  int activeSetFinishAttempts = 0;  ///< primal-dual: active-set finishes tried (Solver/primal-dual: active-set finish)
+  bool finishedOnActiveSet = false;  ///< the last step was an accepted active-set finish
   std::vector<int> innerIterations;  ///< per main iteration (the paper's Figure 2)
   std::vector<NewtonStepRecord> history;
   double seconds = 0;

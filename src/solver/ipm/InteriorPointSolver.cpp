@@ -71,6 +71,11 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
         "Expert: Mehrotra: start the corrector's Krylov solve from the predictor's step instead of zero (the "
         "right-hand sides differ by the centering and second-order terms only)");
   p.set("primal-dual: fraction to boundary", 0.995, "Step kept this fraction inside s > 0, y > 0", range(0.5, 0.99999));
+  p.set("primal-dual: active-set finish", true,
+        "Once the active-set estimate has stayed the same over two long steps and every KKT measure is "
+        "within the square root of the tolerance, try one Newton step of the equality-constrained problem "
+        "on that set (its constraints held with a penalty far below the tolerance, the others released) and "
+        "stop there if it meets every KKT tolerance (see doc/algorithms.md)");
   p.set("primal-dual: armijo", 0.01, "Expert: Fixed centering: Armijo constant of the merit backtracking", range(1e-8, 0.5));
 
   p.set("primal: mu0", -1.0,

@@ -45,6 +45,9 @@ void IterationLog::onFinish(const SolveResult& r) {
                 r.seconds, r.objective, r.activeConstraints, r.kkt.stationarity, r.kkt.complementarity,
                 r.kkt.primalFeasibility, r.kkt.dualFeasibility);
   out_ << line;
+  if (r.activeSetFinishAttempts > 0)
+    out_ << "  active-set finish: " << r.activeSetFinishAttempts << " tried, "
+         << (r.finishedOnActiveSet ? "the last step" : "none accepted") << "\n";
   if (!r.converged()) out_ << "  " << r.message << "\n";
   out_ << std::flush;
 }

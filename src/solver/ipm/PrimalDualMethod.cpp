@@ -5,6 +5,7 @@
 // ds = -r_p - A dv and dy = (-r_c - y.ds)/s computed exactly, so the truncation error of the
 // Krylov solve only enters the dual residual, and the forcing rule controls it.
 #include <cmath>
+#include <memory>
 
 #include <Teuchos_Time.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -12,6 +13,7 @@
 
 #include "core/Collectives.hpp"
 #include "core/ParameterValidation.hpp"
+#include "solver/ipm/ActiveSetFinish.hpp"
 #include "solver/ipm/InteriorPointMethods.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
 
@@ -28,7 +30,8 @@ void forEach(Vector& out, F f) {
 // One primal-dual solve over the iterate (v, s, y): each main iteration evaluates the
 // residuals, tests for the end, computes a direction (Mehrotra's predictor and corrector, or
 // one step towards a fixed fraction of mu) and takes a step, backtracking on the merit
-// function 1/2 ||F||^2 with fixed centering.
+// function 1/2 ||F||^2 with fixed centering. Once the active set has settled, an active-set
+// finish may end the solve (ActiveSetFinish).
 class PrimalDualMethod {
  public:
   PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0, bool freeWithoutContact);
@@ -39,13 +42,14 @@ class PrimalDualMethod {
   KKTMeasures evaluate(int k);
   void tightenStalledForcing();
   bool continues(int k, const KKTMeasures& kkt);
+  bool finishOnActiveSet(int k, const KKTMeasures& kkt);
   bool computeDirection();
   void predictorCorrector();
   void takeDirection(const Vector& rc, bool fromCurrentStep);
   double merit(double alpha);
   double meritSlope() const;
   bool backtrackOnMerit(double& alpha);
-  void takeStep(int k, double alpha);
+  void takeStep(int k, double alpha, bool move = true);
   void report(const KKTMeasures& kkt, IterationObserver& observer, Teuchos::Time& timer);
 
   const ContactQP& qp_;
@@ -59,6 +63,7 @@ class PrimalDualMethod {
   const double bnorm_;
   ForcingRule forcing_;
   NewtonSystemSolver newton_;
+  std::unique_ptr<ActiveSetFinish> finish_;  // null: "primal-dual: active-set finish" is off
   SolveResult result_;
 
   RCP<Vector> v_;
@@ -71,6 +76,7 @@ class PrimalDualMethod {
   double previousRdNorm_ = -1.0, previousAlpha_ = 0.0;
   int stalls_ = 0;  // main iterations in a row in which r_d stalled
   int krylovThisStep_ = 0;
+  int rejectedFinishKrylov_ = 0;  // counted with the next step
   bool krylovFailed_ = false;
   NewtonStepRecord pending_;  // the last step, reported once the next iterate's KKT measures are known
   bool havePending_ = false;
@@ -91,6 +97,9 @@ PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::Parameter
       bnorm_(qp.b->norm2()),
       forcing_(forcingRule(p, 0.1 * stop_.tolerance * bnorm_)),
       newton_(qp, p),
+      finish_(p.get<bool>("primal-dual: active-set finish") && m_ > 0
+                  ? std::make_unique<ActiveSetFinish>(qp, newton_, stop_.tolerance)
+                  : nullptr),
       v_(initialDisplacement(qp, v0)),
       s_(qp.A->getRangeMap()), y_(s_.getMap()), D_(s_.getMap()),
       Qv_(qp.Q->getDomainMap()), rd_(Qv_.getMap()), rhs_(Qv_.getMap()), dv_(Qv_.getMap()), t_(Qv_.getMap()),
@@ -120,7 +129,9 @@ SolveResult PrimalDualMethod::run(IterationObserver& observer, Teuchos::Time& ti
     const KKTMeasures kkt = evaluate(k);
     if (havePending_) report(kkt, observer, timer);
     result_.outerIterations = k;
-    if (!continues(k, kkt) || !computeDirection()) break;
+    if (!continues(k, kkt)) break;
+    if (finishOnActiveSet(k, kkt)) continue;  // the finished point is evaluated and tested as any other
+    if (!computeDirection()) break;
     double alpha =
         std::min(1.0, fractionToBoundary_ * std::min(maxStepToBoundary(s_, ds_), maxStepToBoundary(y_, dy_)));
     if (centering_ == Centering::Fixed && !backtrackOnMerit(alpha)) break;
@@ -187,6 +198,31 @@ bool PrimalDualMethod::continues(int k, const KKTMeasures& kkt) {
                     "the barrier parameter vanished before the KKT target was met: the Newton systems are "
                     "solved too loosely; tighten Solver/forcing: eta");
   return !stop_.outOfIterations(k, result_);
+}
+
+// Tries the active-set finish where it is due; true if it was accepted, the iterate then
+// its point (v, s = d - A v, y = -lambda).
+bool PrimalDualMethod::finishOnActiveSet(int k, const KKTMeasures& kkt) {
+  if (!finish_) return false;
+  const PrimalDualIterate x{*v_, s_, y_, rd_, rp_};
+  if (!finish_->settled(x, kkt, previousAlpha_)) return false;
+  const ActiveSetFinish::Outcome outcome = finish_->attempt(x);
+  countKrylovSolve(result_, outcome.krylovIterations, outcome.krylovIterations);
+  ++result_.newtonSteps;
+  ++result_.activeSetFinishAttempts;
+  result_.finishedOnActiveSet = outcome.accepted;
+  if (!outcome.accepted) {
+    rejectedFinishKrylov_ += outcome.krylovIterations;
+    return false;
+  }
+  v_->assign(finish_->v());
+  y_.update(-1.0, finish_->lambda(), 0.0);
+  qp_.A->apply(*v_, Av_);
+  s_.update(1.0, *qp_.d, -1.0, Av_, 0.0);
+  krylovThisStep_ = outcome.krylovIterations;
+  muTarget_ = 0.0;
+  takeStep(k, 1.0, false);
+  return true;
 }
 
 // (dv, ds, dy) for the current iterate; false if a Krylov solve made no progress.
@@ -321,16 +357,20 @@ bool PrimalDualMethod::backtrackOnMerit(double& alpha) {
                   "Solver/forcing: eta or use Solver/primal-dual: centering = mehrotra");
 }
 
-void PrimalDualMethod::takeStep(int k, double alpha) {
-  v_->update(alpha, dv_, 1.0);
-  s_.update(alpha, ds_, 1.0);
-  y_.update(alpha, dy_, 1.0);
+// Records the step; with `move`, first takes it along (dv, ds, dy).
+void PrimalDualMethod::takeStep(int k, double alpha, bool move) {
+  if (move) {
+    v_->update(alpha, dv_, 1.0);
+    s_.update(alpha, ds_, 1.0);
+    y_.update(alpha, dy_, 1.0);
+  }
   previousAlpha_ = alpha;
   pending_ = NewtonStepRecord();
   pending_.outer = k + 1;
   pending_.mu = muTarget_;
   pending_.step = alpha;
-  pending_.krylovIterations = krylovThisStep_;
+  pending_.krylovIterations = krylovThisStep_ + rejectedFinishKrylov_;
+  rejectedFinishKrylov_ = 0;
   havePending_ = true;
   result_.innerIterations.push_back(1);
 }

@@ -1,0 +1,68 @@
+// The primal-dual method's active-set finish: where the active set settles, the finish ends
+// the solve at a point that meets every KKT tolerance and is the optimum the barrier
+// iterations reach without it, in no more main iterations.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "support/TestProblems.hpp"
+
+namespace {
+
+using namespace signorini;
+using namespace signorini::testing;
+
+SolveResult solve(const ContactQP& qp, bool finish) {
+  Teuchos::ParameterList params;
+  params.set("primal-dual: active-set finish", finish);
+  return InteriorPointSolver(params).solve(qp);
+}
+
+// A 2D and a 3D problem whose last iterations are the barrier's linear tail.
+TEST(ActiveSetFinish, EndsTheSolveAtTheOptimumOfTheBarrierIterations) {
+  for (const char* name : {"K", "L"}) {
+    const ContactQP qp = buildProblem(shippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm()).qp;
+    const SolveResult with = solve(qp, true), without = solve(qp, false);
+    ASSERT_TRUE(with.converged() && without.converged()) << name << ": " << with.message << " / " << without.message;
+    EXPECT_TRUE(with.finishedOnActiveSet) << name;
+    EXPECT_GE(with.activeSetFinishAttempts, 1) << name;
+    EXPECT_EQ(without.activeSetFinishAttempts, 0) << name;
+    ASSERT_FALSE(with.history.empty());
+    EXPECT_EQ(with.history.back().mu, 0.0) << name;
+    EXPECT_EQ(with.history.back().step, 1.0) << name;
+    EXPECT_LE(with.kkt.worst(), 1e-8) << name;
+    EXPECT_LE(with.outerIterations, without.outerIterations) << name;
+    EXPECT_EQ(with.activeConstraints, without.activeConstraints) << name;
+    // Both objectives are within the duality gap the tolerance allows, 1e-8 of the energy.
+    EXPECT_LT(std::abs(with.objective - without.objective), 2e-8 * std::abs(without.objective)) << name;
+    Vector dv(*with.v, Teuchos::Copy);
+    dv.update(-1.0, *without.v, 1.0);
+    EXPECT_LT(dv.normInf(), 1e-4 * without.v->normInf()) << name;
+  }
+}
+
+// The finished point's multipliers are the contact forces: none of the wrong sign, none on a
+// constraint with a gap.
+TEST(ActiveSetFinish, MultipliersAreCompressiveAndComplementary) {
+  const ContactQP qp = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm()).qp;
+  const SolveResult r = solve(qp, true);
+  ASSERT_TRUE(r.finishedOnActiveSet);
+  Vector c(qp.A->getRangeMap());
+  qp.A->apply(*r.v, c);
+  c.update(-1.0, *qp.d, 1.0);
+  const double lambdaMax = r.lambda->normInf();  // collective: not inside the loop over local entries
+  const double scale = lambdaMax * std::max(r.v->normInf(), qp.d->normInf());
+  auto l = r.lambda->getData();
+  auto cd = c.getData();
+  for (std::size_t i = 0; i < c.getLocalLength(); ++i) {
+    EXPECT_LE(l[i], 1e-8 * lambdaMax) << i;
+    EXPECT_LE(std::abs(l[i] * cd[i]), 1e-10 * scale) << i;
+  }
+}
+
+}  // namespace
