@@ -44,15 +44,13 @@ bool ActiveSetFinish::differs(const Vector& a, const Vector& b) const {
 }
 
 bool ActiveSetFinish::settled(const PrimalDualIterate& x, const KKTMeasures& kkt, double lastStep) {
+  criterion_.emplace(qp_, x.v, x.lambda);
   {
-    Vector lambda(x.y.getMap());
-    lambda.update(-1.0, x.y, 0.0);
-    const ActiveSetCriterion criterion(qp_, x.v, lambda);
-    auto l = lambda.getData();
+    auto l = x.lambda.getData();
     auto s = x.s.getData();
     auto a = active_.getDataNonConst();
     for (std::size_t i = 0; i < active_.getLocalLength(); ++i)
-      a[i] = criterion.isActive(static_cast<LocalOrdinal>(i), l[i], s[i]) ? 1.0 : 0.0;
+      a[i] = criterion_->isActive(static_cast<LocalOrdinal>(i), l[i], s[i]) ? 1.0 : 0.0;
   }
   const bool unchanged = unchangedSteps_ >= 0 && lastStep >= kLongStep && !differs(active_, previous_);
   unchangedSteps_ = unchanged ? unchangedSteps_ + 1 : 0;
@@ -103,12 +101,10 @@ bool ActiveSetFinish::correctSet() {
   return sumOverEntries(*active_.getMap()->getComm(), 1, [&](std::size_t) { return changes; }) > 0;
 }
 
-// W in the Newton solver's weights and the right-hand side -r_d - A^T u.
+// W in the Newton solver's weights and the right-hand side -r_d - A^T u, for the iterate
+// settled() last saw.
 void ActiveSetFinish::setSystem(const PrimalDualIterate& x) {
   {
-    Vector lambda(x.y.getMap());
-    lambda.update(-1.0, x.y, 0.0);
-    const ActiveSetCriterion criterion(qp_, x.v, lambda);
     auto a = active_.getData();
     auto y = x.y.getData();
     auto s = x.s.getData();
@@ -117,7 +113,7 @@ void ActiveSetFinish::setSystem(const PrimalDualIterate& x) {
     auto u = u_.getDataNonConst();
     for (std::size_t i = 0; i < active_.getLocalLength(); ++i) {
       const bool held = a[i] > 0;
-      W[i] = held ? std::max(y[i] / s[i], criterion.weight(static_cast<LocalOrdinal>(i), kViolation * tolerance_)) : 0.0;
+      W[i] = held ? std::max(y[i] / s[i], criterion_->weight(static_cast<LocalOrdinal>(i), kViolation * tolerance_)) : 0.0;
       u[i] = held ? W[i] * (rp[i] - s[i]) : -y[i];
     }
   }

@@ -13,17 +13,21 @@
 // dy_i = W_i (A_i dv + r_p,i - s_i) on the held set and dy_i = -y_i elsewhere, the step is
 //   (Q + A^T W A) dv = -r_d - A^T u,   u_i = W_i (r_p,i - s_i) held, -y_i released,
 // one truncated Krylov solve with the Newton systems' solver and preconditioner.
+#include <optional>
+
 #include "signorini/solver/ContactQP.hpp"
 #include "signorini/solver/KKTMeasures.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
 
 namespace signorini::detail {
 
-// The primal-dual iterate (v, s, y) and its residuals r_d = Q v - b + A^T y, r_p = A v + s - d.
+// The primal-dual iterate (v, s, y), lambda = -y, and its residuals r_d = Q v - b + A^T y,
+// r_p = A v + s - d.
 struct PrimalDualIterate {
   const Vector& v;
   const Vector& s;
   const Vector& y;
+  const Vector& lambda;
   const Vector& rd;
   const Vector& rp;
 };
@@ -60,6 +64,7 @@ class ActiveSetFinish {
   Vector active_, previous_, tried_;  // 1 on the constraints held, 0 elsewhere
   int unchangedSteps_ = -1;           // steps in a row that kept the estimate (-1: none yet)
   bool haveTried_ = false;
+  std::optional<ActiveSetCriterion> criterion_;  // of the iterate settled() last saw
   Vector W_, u_, Adv_, lambdaTrial_;  // on the constraints
   Vector rhs_, dv_, vTrial_;          // on the displacements
 

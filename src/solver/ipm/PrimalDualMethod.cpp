@@ -204,7 +204,7 @@ bool PrimalDualMethod::continues(int k, const KKTMeasures& kkt) {
 // its point (v, s = d - A v, y = -lambda).
 bool PrimalDualMethod::finishOnActiveSet(int k, const KKTMeasures& kkt) {
   if (!finish_) return false;
-  const PrimalDualIterate x{*v_, s_, y_, rd_, rp_};
+  const PrimalDualIterate x{*v_, s_, y_, lambda_, rd_, rp_};  // lambda_ = -y_ since evaluate()
   if (!finish_->settled(x, kkt, previousAlpha_)) return false;
   const ActiveSetFinish::Outcome outcome = finish_->attempt(x);
   countKrylovSolve(result_, outcome.krylovIterations, outcome.krylovIterations);
