@@ -67,6 +67,9 @@ CONFIGS = {
     "algebraic default": A,
     # MueLu's smoothed aggregation with the AMG built for Q alone (no contact weights), set up once.
     "algebraic amg of Q": {**A, P + "type": "amg of Q"},
+    # The default without the primal-dual method's active-set finish: the barrier steps go on
+    # until the KKT tolerance is met.
+    "without active-set finish": {"Solver/primal-dual: active-set finish": "false"},
 }
 # Configurations that change the starting vectors, not the preconditioner: not run with the
 # fixed forcing "relative" (a relative residual to reach from another start is not the same
@@ -192,7 +195,8 @@ def main():
             for r in records:
                 if r["sequence"] == name and r["config"] == config:
                     style = {"reduction": "o-", "adaptive": "^:"}.get(r["forcing"], "s--")
-                    ax.loglog([h["mu"] for h in r["history"]], [max(h["krylov"], 1) for h in r["history"]], style,
+                    steps = [h for h in r["history"] if h["mu"] > 0]  # not the active-set finish (mu 0)
+                    ax.loglog([h["mu"] for h in steps], [max(h["krylov"], 1) for h in steps], style,
                               ms=3, label=f"nx = {r['nx']}, {r['forcing']}")
             ax.invert_xaxis()
             ax.set_xlabel("mu (target of the Newton step)")
