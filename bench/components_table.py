@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""The table of doc/benchmarks.md that takes one component out of the default preconditioner
-and start at a time, from bench/results/preconditioners-components.json:
+"""The table of doc/benchmarks.md that takes one component out of the default preconditioner,
+start and method at a time, from bench/results/preconditioners-components.json:
 
-    /usr/bin/python3 bench/preconditioners.py --forcing reduction,relative \\
-        --configs "default,without contact-corrected start,from zero,algebraic,algebraic amg of Q" \\
+    /usr/bin/python3 bench/preconditioners.py --forcing reduction,relative --configs \\
+        "default,without contact-corrected start,from zero,without active-set finish,algebraic,algebraic amg of Q" \\
         --name preconditioners-components
     /usr/bin/python3 bench/components_table.py
 
@@ -14,7 +14,8 @@ alone.
 """
 from preconditioners_table import load
 
-CONFIGS = ["default", "without contact-corrected start", "from zero", "algebraic", "algebraic amg of Q"]
+CONFIGS = ["default", "without contact-corrected start", "from zero", "without active-set finish", "algebraic",
+           "algebraic amg of Q"]
 SEQUENCES = ["2d", "3d", "2d-p2", "2d-p3", "3d-p2"]
 
 

@@ -71,10 +71,11 @@ CONFIGS = {
     # until the KKT tolerance is met.
     "without active-set finish": {"Solver/primal-dual: active-set finish": "false"},
 }
-# Configurations that change the starting vectors, not the preconditioner: not run with the
-# fixed forcing "relative" (a relative residual to reach from another start is not the same
-# linear problem). Every configuration runs with the solver's defaults for what it does not set.
-STARTS_ONLY = {"without contact-corrected start", "from zero"}
+# Configurations that change the starting vectors or the method's last step, not the
+# preconditioner: not run with the fixed forcing "relative", which measures the preconditioner
+# alone (and a relative residual to reach from another start is not the same linear problem).
+# Every configuration runs with the solver's defaults for what it does not set.
+NOT_THE_PRECONDITIONER = {"without contact-corrected start", "from zero", "without active-set finish"}
 FORCING = {
     "reduction": {},  # the default: each solve reduces its start's residual by 0.1
     "adaptive": {"Solver/forcing: type": "adaptive"},
@@ -144,7 +145,7 @@ def main():
                 if limited and config not in full:
                     continue
                 for forcing in forcings:
-                    if forcing not in ("reduction", "adaptive") and config in STARTS_ONLY:
+                    if forcing not in ("reduction", "adaptive") and config in NOT_THE_PRECONDITIONER:
                         continue
                     out = os.path.join(args.workdir, "-".join([xml.replace("/", "-"), config.replace(" ", "-"), forcing]))
                     summary, history = run(xml, {**CONFIGS[config], **FORCING[forcing]}, args.ranks, out, args.reuse)
@@ -172,7 +173,7 @@ def main():
     for name in names:
         for config in configs:
             for forcing in forcings:
-                if forcing not in ("reduction", "adaptive") and config in STARTS_ONLY:
+                if forcing not in ("reduction", "adaptive") and config in NOT_THE_PRECONDITIONER:
                     continue
                 group = [r for r in records if r["sequence"] == name and r["config"] == config and r["forcing"] == forcing]
                 # Over the members every configuration ran, then over all of this one's.
