@@ -81,7 +81,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     << "  \"max_krylov_per_newton\": " << r.maxKrylovPerNewton << ",\n"
     << "  \"preconditioner_setups\": " << r.preconditionerSetups << ",\n"
     << "  \"active_set_finish\": {\"attempts\": " << r.activeSetFinishAttempts
-    << ", \"accepted\": " << (r.finishedOnActiveSet ? "true" : "false") << "},\n"
+    << ", \"accepted\": " << (r.finishedOnActiveSet ? "true" : "false")
+    << ", \"krylov_iterations\": " << r.activeSetFinishKrylov << "},\n"
     << "  \"objective\": " << number(r.objective) << ",\n"
     << "  \"active_constraints\": " << r.activeConstraints << ",\n"
     << "  \"kkt\": " << kktJson(r.kkt.stationarity, r.kkt.complementarity, r.kkt.primalFeasibility,

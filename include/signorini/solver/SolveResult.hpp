@@ -41,11 +41,12 @@ struct SolveResult {
   int newtonSteps = 0;           ///< Newton systems solved
   int gradientEvaluations = 0;   ///< the paper's "ngr"
   int functionEvaluations = 0;   ///< the paper's "nfc"
-  long long krylovIterations = 0;
-  int maxKrylovPerNewton = 0;
+  long long krylovIterations = 0;  ///< CG iterations of the whole solve, the active-set finish's included
+  int maxKrylovPerNewton = 0;      ///< largest CG count of one Newton system of the barrier steps
   int preconditionerSetups = 0;  ///< AMG hierarchies built
   int activeSetFinishAttempts = 0;  ///< primal-dual: active-set finishes tried (Solver/primal-dual: active-set finish)
   bool finishedOnActiveSet = false;  ///< the last step was an accepted active-set finish
+  long long activeSetFinishKrylov = 0;  ///< CG iterations of the finish attempts (solved to the KKT tolerance)
   std::vector<int> innerIterations;  ///< per main iteration (the paper's Figure 2)
   std::vector<NewtonStepRecord> history;
   double seconds = 0;

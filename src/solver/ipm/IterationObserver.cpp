@@ -47,7 +47,8 @@ void IterationLog::onFinish(const SolveResult& r) {
   out_ << line;
   if (r.activeSetFinishAttempts > 0)
     out_ << "  active-set finish: " << r.activeSetFinishAttempts << " tried, "
-         << (r.finishedOnActiveSet ? "the last step" : "none accepted") << "\n";
+         << (r.finishedOnActiveSet ? "the last step" : "none accepted") << ", " << r.activeSetFinishKrylov
+         << " Krylov iterations\n";
   if (!r.converged()) out_ << "  " << r.message << "\n";
   out_ << std::flush;
 }

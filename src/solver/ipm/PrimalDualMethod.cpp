@@ -207,7 +207,8 @@ bool PrimalDualMethod::finishOnActiveSet(int k, const KKTMeasures& kkt) {
   const PrimalDualIterate x{*v_, s_, y_, lambda_, rd_, rp_};  // lambda_ = -y_ since evaluate()
   if (!finish_->settled(x, kkt, previousAlpha_)) return false;
   const ActiveSetFinish::Outcome outcome = finish_->attempt(x);
-  countKrylovSolve(result_, outcome.krylovIterations, outcome.krylovIterations);
+  result_.krylovIterations += outcome.krylovIterations;  // not a barrier step's system: not in the maximum
+  result_.activeSetFinishKrylov += outcome.krylovIterations;
   ++result_.newtonSteps;
   ++result_.activeSetFinishAttempts;
   result_.finishedOnActiveSet = outcome.accepted;

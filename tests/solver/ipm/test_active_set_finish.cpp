@@ -3,6 +3,7 @@
 // iterations reach without it, in no more main iterations.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include <Tpetra_Core.hpp>
@@ -35,6 +36,15 @@ TEST(ActiveSetFinish, EndsTheSolveAtTheOptimumOfTheBarrierIterations) {
     ASSERT_FALSE(with.history.empty());
     EXPECT_EQ(with.history.back().mu, 0.0) << name;
     EXPECT_EQ(with.history.back().step, 1.0) << name;
+    // The finish's CG iterations are counted in the total, not in the barrier systems' maximum.
+    EXPECT_GE(with.activeSetFinishKrylov, with.history.back().krylovIterations) << name;
+    EXPECT_GT(with.history.back().krylovIterations, 0) << name;
+    EXPECT_EQ(without.activeSetFinishKrylov, 0) << name;
+    EXPECT_LT(with.activeSetFinishKrylov, with.krylovIterations) << name;
+    int largestBarrierStep = 0;
+    for (std::size_t k = 0; k + 1 < with.history.size(); ++k)
+      largestBarrierStep = std::max(largestBarrierStep, with.history[k].krylovIterations);
+    EXPECT_LE(with.maxKrylovPerNewton, largestBarrierStep) << name;
     EXPECT_LE(with.kkt.worst(), 1e-8) << name;
     EXPECT_LE(with.outerIterations, without.outerIterations) << name;
     EXPECT_EQ(with.activeConstraints, without.activeConstraints) << name;
