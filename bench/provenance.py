@@ -1,7 +1,9 @@
 """Where and with what a benchmark's results were made, for the "provenance" entry of its
-JSON: the command, the git commit of the tree (git describe --always --dirty), the date, the
-host, its cores, the MPI ranks, and the build's compiler, Signorini and Trilinos versions (as
-build/bin/signorini --version reports them)."""
+JSON: the command, the git commit of the tree (git describe --always, with "-dirty" if a
+tracked file outside bench/results differs from it: results that earlier benchmarks of the same
+sitting rewrote do not change what is measured), the date, the host, its cores, the MPI ranks,
+and the build's compiler, Signorini and Trilinos versions (as build/bin/signorini --version
+reports them)."""
 import datetime
 import glob
 import os
@@ -25,8 +27,11 @@ def compiler(build):
 
 
 def provenance(ranks, build=os.path.join(ROOT, "build")):
-    commit = subprocess.run(["git", "describe", "--always", "--dirty"], cwd=ROOT, capture_output=True,
-                            text=True).stdout.strip()
+    commit = subprocess.run(["git", "describe", "--always"], cwd=ROOT, capture_output=True, text=True).stdout.strip()
+    changed = subprocess.run(["git", "status", "--porcelain", "--untracked-files=no", "--", ".",
+                              ":(exclude)bench/results"], cwd=ROOT, capture_output=True, text=True).stdout.strip()
+    if commit and changed:
+        commit += "-dirty"
     version = subprocess.run([os.path.join(build, "bin", "signorini"), "--version"], capture_output=True,
                              text=True).stdout.strip()
     return {"command": " ".join([os.path.relpath(sys.argv[0], ROOT)] + sys.argv[1:]),
