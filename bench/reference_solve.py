@@ -15,7 +15,8 @@ Writes bench/results/reference-solve.{json,md}: per case and run the phase times
 space, assembly, solve and within it AMG setup with its parts, Krylov, initial guesses,
 preconditioner construction, assembly of H; output; of the fastest run, with the solve
 times of every run in `solve_seconds_per_run`), main
-iterations, Newton systems, CG iterations, AMG setups, peak memory per unknown, and the
+iterations, Newton systems, CG iterations, AMG setups, the active-set finish (attempts,
+accepted, CG iterations), peak memory per unknown, and the
 ratios contact / reference of solve time and CG iterations.
 """
 import argparse
@@ -60,7 +61,8 @@ def run(xml, ranks, out, reference):
     seconds["solve"] = s["time"]["solve"]  # the maximum over ranks
     return {"status": s["status"], "n": s["n"], "m": s["m"], "main_iterations": s["outer_iterations"],
             "newton_systems": s["newton_steps"], "cg_iterations": s["krylov_iterations"],
-            "amg_setups": s["preconditioner_setups"], "objective": s["objective"], "seconds": seconds,
+            "amg_setups": s["preconditioner_setups"], "active_set_finish": s.get("active_set_finish"),
+            "objective": s["objective"], "seconds": seconds,
             "peak_bytes_per_unknown": s["memory_mib"]["all_ranks"] * 2**20 / s["n"]}
 
 
