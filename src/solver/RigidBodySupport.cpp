@@ -182,20 +182,20 @@ RCP<Vector> motionTheLoadPullsFree(const ContactQP& qp, const MultiVector& F) {
 
 }  // namespace
 
-int checkRigidBodyMotionsHeld(const ContactQP& qp) {
+RCP<const MultiVector> checkRigidBodyMotionsHeld(const ContactQP& qp) {
   const RCP<const MultiVector> modes = qp.nearNullspace();
-  if (modes.is_null() || modes->getNumVectors() == 0) return 0;
+  if (modes.is_null() || modes->getNumVectors() == 0) return Teuchos::null;
   const MultiVector& R = *modes;
   const int k = static_cast<int>(R.getNumVectors());
   MultiVector QR(qp.Q->getRangeMap(), k);
   qp.Q->apply(R, QR);
   // theta = rᵀQr / rᵀr: ~0 for the motions no prescribed displacement removes.
   const Eigen energy = symmetricEigen(innerProducts(R, QR), innerProducts(R, R), k);
-  if (energy.values.empty()) return 0;  // dependent modes: nothing to conclude from them
+  if (energy.values.empty()) return Teuchos::null;  // dependent modes: nothing to conclude from them
   const double scale = stiffnessScale(qp);
   int free = 0;
   while (free < k && energy.values[free] <= kFree * scale) ++free;
-  if (free == 0) return 0;
+  if (free == 0) return Teuchos::null;
   const RCP<const MultiVector> F = combine(R, energy.vectors, free);  // orthonormal columns
 
   if (const RCP<Vector> r = motionNoConstraintStops(qp, *F))
@@ -209,7 +209,7 @@ int checkRigidBodyMotionsHeld(const ContactQP& qp) {
                      ", which no prescribed displacement removes and no contact constraint resists: the "
                      "problem has no equilibrium; prescribe a displacement that holds the body "
                      "(Problem/Dirichlet) or check the direction of the load");
-  return free;
+  return F;
 }
 
 }  // namespace signorini

@@ -10,9 +10,10 @@
 namespace signorini {
 
 // Throws an InputError (on every rank) naming the first rigid body motion that nothing
-// holds or that the load pulls free. Returns the number of independent rigid body motions
-// no prescribed displacement removes (those the contact holds); 0 without rigid body modes
-// (qp.nearNullspace()). Collective; costs one application of Q and of A to the modes.
-int checkRigidBodyMotionsHeld(const ContactQP& qp);
+// holds or that the load pulls free. Returns the rigid body motions no prescribed
+// displacement removes (those the contact alone holds), orthonormal columns on Q's domain
+// map; null if there are none or the QP has no rigid body modes (qp.nearNullspace()).
+// Collective; costs one application of Q and of A to the modes.
+RCP<const MultiVector> checkRigidBodyMotionsHeld(const ContactQP& qp);
 
 }  // namespace signorini

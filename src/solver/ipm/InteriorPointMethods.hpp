@@ -19,12 +19,12 @@ enum class Centering { Mehrotra, Fixed };
 enum class ForcingType { Reduction, Adaptive, Constant, EisenstatWalker, Relative };
 enum class StartingPoint { Shift, Relaxed };
 
-// `freeWithoutContact`: some rigid body motion is not removed by a prescribed displacement, so
-// that Q is singular (checkRigidBodyMotionsHeld tells).
+// `freeMotions`: the rigid body motions no prescribed displacement removes, along which Q is
+// singular and only the contact holds the body (checkRigidBodyMotionsHeld); null if none.
 SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
-                            IterationObserver& observer, bool freeWithoutContact);
+                            IterationObserver& observer, const RCP<const MultiVector>& freeMotions);
 SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
-                               IterationObserver& observer, bool freeWithoutContact);
+                               IterationObserver& observer, const RCP<const MultiVector>& freeMotions);
 // No constraints (m = 0): one Krylov solve of Q v = b to the KKT tolerance, whichever method.
 SolveResult solveUnconstrained(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
                                IterationObserver& observer);

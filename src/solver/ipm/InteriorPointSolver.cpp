@@ -142,12 +142,12 @@ SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initia
   IterationObserver silent;
   IterationObserver& obs = observer ? *observer : silent;
   checkRepresentableScale(qp);
-  const bool freeWithoutContact = checkRigidBodyMotionsHeld(qp) > 0;
+  const RCP<const MultiVector> freeMotions = checkRigidBodyMotionsHeld(qp);
   if (qp.A->getRangeMap()->getGlobalNumElements() == 0)
     return detail::solveUnconstrained(qp, params_, initialGuess, obs);
   if (choice<Method>(params_, "method") == Method::Primal)
-    return detail::solvePrimalBarrier(qp, params_, initialGuess, obs, freeWithoutContact);
-  return detail::solvePrimalDual(qp, params_, initialGuess, obs, freeWithoutContact);
+    return detail::solvePrimalBarrier(qp, params_, initialGuess, obs, freeMotions);
+  return detail::solvePrimalDual(qp, params_, initialGuess, obs, freeMotions);
 }
 
 namespace detail {

@@ -120,7 +120,8 @@ struct GammaRule {
 // solved by inner damped Newton steps to ||grad psi|| < zeta_k.
 class PrimalBarrierMethod {
  public:
-  PrimalBarrierMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0, bool freeWithoutContact);
+  PrimalBarrierMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+                      const RCP<const MultiVector>& freeMotions);
   SolveResult run(IterationObserver& observer, Teuchos::Time& timer);
 
  private:
@@ -161,10 +162,10 @@ class PrimalBarrierMethod {
 };
 
 PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
-                                   bool freeWithoutContact)
+                                   const RCP<const MultiVector>& freeMotions)
     : qp_(qp),
       p_(p),
-      freeWithoutContact_(freeWithoutContact),
+      freeWithoutContact_(!freeMotions.is_null()),
       m_(qp.A->getRangeMap()->getGlobalNumElements()),
       stop_(p),
       maxInner_(p.get<int>("primal: maximum inner iterations")),
@@ -176,7 +177,7 @@ PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const Teuchos::Par
       extrapolate_(p.get<bool>("primal: extrapolation")),
       gammaRule_(p),
       forcing_(forcingRule(p, 0.1 * stop_.tolerance * bnorm_)),
-      newton_(qp, p),
+      newton_(qp, p, freeMotions),
       v_(initialDisplacement(qp, v0)),
       s_(qp.A->getRangeMap()), y_(s_.getMap()), lambda_(s_.getMap()), D_(s_.getMap()), Adv_(s_.getMap()),
       minusAdv_(s_.getMap()),
@@ -400,12 +401,12 @@ void PrimalBarrierMethod::extrapolate(double previousMu, double dvarsigma) {
 }  // namespace
 
 SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
-                               IterationObserver& observer, bool freeWithoutContact) {
+                               IterationObserver& observer, const RCP<const MultiVector>& freeMotions) {
   Teuchos::Time timer("primal");
   timer.start(true);
   observer.onStart("primal (Algorithm 3.1)", qp.Q->getDomainMap()->getGlobalNumElements(),
                    qp.A->getRangeMap()->getGlobalNumElements());
-  PrimalBarrierMethod method(qp, p, v0, freeWithoutContact);
+  PrimalBarrierMethod method(qp, p, v0, freeMotions);
   return method.run(observer, timer);
 }
 

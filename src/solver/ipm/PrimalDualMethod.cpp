@@ -14,6 +14,7 @@
 #include "core/Collectives.hpp"
 #include "core/ParameterValidation.hpp"
 #include "solver/ipm/ActiveSetFinish.hpp"
+#include "solver/ipm/FreeMotionBalance.hpp"
 #include "solver/ipm/InteriorPointMethods.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
 
@@ -34,7 +35,8 @@ void forEach(Vector& out, F f) {
 // finish may end the solve (ActiveSetFinish).
 class PrimalDualMethod {
  public:
-  PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0, bool freeWithoutContact);
+  PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+                   const RCP<const MultiVector>& freeMotions);
   SolveResult run(IterationObserver& observer, Teuchos::Time& timer);
 
  private:
@@ -54,7 +56,7 @@ class PrimalDualMethod {
 
   const ContactQP& qp_;
   const Teuchos::ParameterList& p_;
-  const bool freeWithoutContact_;
+  const RCP<const MultiVector> freeMotions_;  // null: Q holds every rigid body motion
   const long long m_;
   const Centering centering_;
   const bool correctorFromPredictor_;
@@ -83,10 +85,10 @@ class PrimalDualMethod {
 };
 
 PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
-                                   bool freeWithoutContact)
+                                   const RCP<const MultiVector>& freeMotions)
     : qp_(qp),
       p_(p),
-      freeWithoutContact_(freeWithoutContact),
+      freeMotions_(freeMotions),
       m_(qp.A->getRangeMap()->getGlobalNumElements()),
       centering_(choice<Centering>(p, "primal-dual: centering")),
       correctorFromPredictor_(p.get<bool>("primal-dual: corrector from predictor")),
@@ -96,7 +98,7 @@ PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::Parameter
       stop_(p),
       bnorm_(qp.b->norm2()),
       forcing_(forcingRule(p, 0.1 * stop_.tolerance * bnorm_)),
-      newton_(qp, p),
+      newton_(qp, p, freeMotions),
       finish_(p.get<bool>("primal-dual: active-set finish") && m_ > 0
                   ? std::make_unique<ActiveSetFinish>(qp, newton_, stop_.tolerance)
                   : nullptr),
@@ -107,10 +109,11 @@ PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::Parameter
       Av_(s_.getMap()), lambda_(s_.getMap()), rp_(s_.getMap()), rc_(s_.getMap()), u_(s_.getMap()),
       Adv_(s_.getMap()), ds_(s_.getMap()), dy_(s_.getMap()), sAffine_(s_.getMap()), yAffine_(s_.getMap()) {}
 
-// s = max(d - A v, displacement scale), s^T y = theta * energy scale, y = mu0 / s.
+// s = max(d - A v, displacement scale), s^T y = theta * energy scale, y = mu0 / s; where only
+// the contact holds the body, y rescaled to balance the load along the free motions.
 void PrimalDualMethod::start() {
   newton_.setWeights(D_);
-  const ProblemScales scales = problemScales(qp_, newton_, *v_, freeWithoutContact_);
+  const ProblemScales scales = problemScales(qp_, newton_, *v_, !freeMotions_.is_null());
   result_.krylovIterations += scales.krylovIterations;
   qp_.A->apply(*v_, Av_);
   {
@@ -119,8 +122,11 @@ void PrimalDualMethod::start() {
     forEach(s_, [&](std::size_t i) { return std::max(dd[i] - ad[i], scales.displacement); });
   }
   mu0_ = m_ > 0 ? p_.get<double>("starting point: complementarity") * scales.energy / m_ : 0.0;
-  auto sd = s_.getData();
-  forEach(y_, [&](std::size_t i) { return mu0_ / sd[i]; });
+  {
+    auto sd = s_.getData();
+    forEach(y_, [&](std::size_t i) { return mu0_ / sd[i]; });
+  }
+  if (!freeMotions_.is_null() && balanceLoadAlongFreeMotions(*qp_.A, *qp_.b, *freeMotions_, y_)) mu0_ = s_.dot(y_) / m_;
 }
 
 SolveResult PrimalDualMethod::run(IterationObserver& observer, Teuchos::Time& timer) {
@@ -387,12 +393,12 @@ void PrimalDualMethod::report(const KKTMeasures& kkt, IterationObserver& observe
 }  // namespace
 
 SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
-                            IterationObserver& observer, bool freeWithoutContact) {
+                            IterationObserver& observer, const RCP<const MultiVector>& freeMotions) {
   Teuchos::Time timer("primal-dual");
   timer.start(true);
   observer.onStart("primal-dual (" + p.get<std::string>("primal-dual: centering") + " centering)",
                    qp.Q->getDomainMap()->getGlobalNumElements(), qp.A->getRangeMap()->getGlobalNumElements());
-  PrimalDualMethod method(qp, p, v0, freeWithoutContact);
+  PrimalDualMethod method(qp, p, v0, freeMotions);
   return method.run(observer, timer);
 }
 

@@ -128,7 +128,8 @@ Teuchos::ParameterList newtonParameters(const Teuchos::ParameterList& solver) {
 
 }  // namespace
 
-NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params)
+NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params,
+                                       RCP<const MultiVector> freeMotions)
     : params_(newtonParameters(params)),
       H_(rcp(new BarrierHessianOperator(qp.Q, qp.A, qp.Qmatrix()))),
       krylov_(params_.sublist("Krylov")),
@@ -203,6 +204,8 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   if (correction_ != ContactCorrection::None) weightCap_ = prec.get<double>("amg of H: weight cap");
   if (strategy_ == PreconditionerType::AmgOfH)
     constraintStiffness_ = constraintStiffness(diagonalOfQ_.is_null() ? *stiffness.diagonal() : *diagonalOfQ_, *qp.A);
+  if (!freeMotions.is_null() && freeMotions->getNumVectors() > 0)
+    freeMotionCorrection_ = rcp(new FreeMotionCorrection(H_, freeMotions));
   reuseHierarchy_ = muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none";
   if (strategy_ == PreconditionerType::AmgOfQ) {
     amg_->compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
@@ -213,6 +216,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
 void NewtonSystemSolver::setWeights(const Vector& D) {
   const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::preconditionerSetup);
   H_->setWeights(D);
+  if (!freeMotionCorrection_.is_null()) freeMotionCorrection_->refresh();
   if (!contactColumns_.is_null()) contactColumns_->setWeights(D);
   if (!subspace_.is_null()) {
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: contact subspace setup"));
@@ -299,6 +303,10 @@ KrylovResult NewtonSystemSolver::solve(const Vector& r, Vector& x, double absolu
   }
   RCP<const Operator> M = amg_ ? amg_->getOperator() : Teuchos::null;
   if (!subspace_.is_null()) M = rcp(new SubspaceCorrectedPreconditioner(H_, M, subspace_, correction_, contactColumns_));
+  if (!freeMotionCorrection_.is_null()) {
+    freeMotionCorrection_->setInner(M);
+    M = freeMotionCorrection_;
+  }
   auto rhs = Teuchos::rcpFromRef(r);
   auto sol = Teuchos::rcpFromRef(x);
   KrylovResult result;

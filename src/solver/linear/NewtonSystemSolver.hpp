@@ -29,6 +29,7 @@
 #include "solver/linear/InitialGuessProjection.hpp"
 #include "solver/linear/KrylovSolver.hpp"
 #include "solver/preconditioner/ContactSubspaceSolver.hpp"
+#include "solver/preconditioner/FreeMotionCorrection.hpp"
 #include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
 #include "solver/preconditioner/MultilevelPreconditioner.hpp"
 #include "solver/preconditioner/SubspaceCorrectedPreconditioner.hpp"
@@ -45,8 +46,11 @@ class NewtonSystemSolver {
   static Teuchos::ParameterList validParameters();
 
   // Reads the "Krylov" and "Preconditioner" sublists of `params`, validated here; other
-  // entries are the caller's. Throws InputError.
-  NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params);
+  // entries are the caller's. `freeMotions`: rigid body motions only the contact holds
+  // (checkRigidBodyMotionsHeld), solved for exactly around the preconditioner
+  // (FreeMotionCorrection); null if none. Throws InputError.
+  NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params,
+                     RCP<const MultiVector> freeMotions = Teuchos::null);
 
   // Sets D and refreshes the preconditioner as its strategy says.
   void setWeights(const Vector& D);
@@ -81,6 +85,7 @@ class NewtonSystemSolver {
   std::unique_ptr<MultilevelPreconditioner> amg_;
   ContactCorrection correction_ = ContactCorrection::None;
   RCP<ContactSubspaceSolver> subspace_;
+  RCP<FreeMotionCorrection> freeMotionCorrection_;
   bool reuseHierarchy_ = false;
   double rebuildTolerance_ = 0.0;
   double weightCap_ = 0.0;  // "amg of H: weight cap" with a contact correction, else 0 (none)
