@@ -1,5 +1,5 @@
 // Force control: bodies that only their contact holds in the load's direction (a pressure
-// on a face; the sides on rollers or the loaded face held sideways) converge with both methods
+// on a face or a weight; the sides on rollers or the loaded face held sideways) converge with both methods
 // on every rank count, the contact force equals the applied load, Hertz' solution holds for it,
 // and the main iterations stay within 1.5 times those of the same body under displacement
 // control. The problems are examples/hertz's force-controlled ones and a pressed box.
@@ -100,9 +100,13 @@ std::vector<Case> cases() {
   const std::string examples = sourceDir() + "/examples/hertz/";
   Teuchos::ParameterList ball = example("half-ball-pressed-3d");
   ball.set("mesh: size factor", 2.0);
+  Teuchos::ParameterList heavyBall = ball;  // the load a weight instead of a pressure
+  heavyBall.sublist("Traction").sublist("top").set("traction: z", "0");
+  heavyBall.set("body force: z", "-0.0015");
   const std::string y = "displacement: y", z = "displacement: z";
   return {{"steel half-cylinder 2D", example("steel-half-cylinder-2d"), examples, "top", y, "-0.35", 210000, 50, 0.03},
           {"half-ball 3D", ball, examples, "top", z, "-0.015", 1, 1, 0.05},
+          {"half-ball 3D under its weight", heavyBall, examples, "top", z, "-0.015", 1, 1, 0.05},
           {"box 2D", pressedBox(2), "", "ymax", y, "-0.75", 1, 0, 0},
           {"box 3D", pressedBox(3), "", "zmax", z, "-0.75", 1, 0, 0}};
 }

@@ -65,7 +65,9 @@ TEST(FreeMotionBalance, MultipliersBalanceThePressingLoad) {
       highestRatio = std::max(highestRatio, yd[i] / y0d[i]);
     }
     EXPECT_GT(lowest, 0.0);
-    if (y.getLocalLength() > 0) EXPECT_NEAR(lowestRatio, highestRatio, 1e-10 * highestRatio);
+    if (y.getLocalLength() > 0) {
+      EXPECT_NEAR(lowestRatio, highestRatio, 1e-10 * highestRatio);
+    }
   }
 }
 
