@@ -177,7 +177,7 @@ PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const Teuchos::Par
       extrapolate_(p.get<bool>("primal: extrapolation")),
       gammaRule_(p),
       forcing_(forcingRule(p, 0.1 * stop_.tolerance * bnorm_)),
-      newton_(qp, p, freeMotions),
+      newton_(qp, p),
       v_(initialDisplacement(qp, v0)),
       s_(qp.A->getRangeMap()), y_(s_.getMap()), lambda_(s_.getMap()), D_(s_.getMap()), Adv_(s_.getMap()),
       minusAdv_(s_.getMap()),
