@@ -6,6 +6,9 @@ include(CMakePackageConfigHelpers)
 install(TARGETS signorini EXPORT SignoriniTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+# The installed program finds the installed library next to it, wherever the prefix is.
+file(RELATIVE_PATH SIGNORINI_BIN_TO_LIB ${CMAKE_INSTALL_FULL_BINDIR} ${CMAKE_INSTALL_FULL_LIBDIR})
+set_target_properties(signorini_app PROPERTIES INSTALL_RPATH "$ORIGIN/${SIGNORINI_BIN_TO_LIB}")
 install(TARGETS signorini_app RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/include/signorini DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${PROJECT_BINARY_DIR}/include/signorini/core/Version.hpp

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Install test: installs Signorini into a scratch prefix; checks that exactly the public
-# headers are installed and that each compiles on its own; builds every example against the
-# exported CMake package and runs it on 2 MPI ranks.
+# headers are installed and that each compiles on its own; runs the installed program on
+# xml/default.xml; builds every example against the exported CMake package and runs it on 2
+# MPI ranks.
 set -euo pipefail
 source_dir=$1
 build_dir=$2
@@ -14,6 +15,12 @@ cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log" 2>&1 
 diff <(cd "$work/prefix/include" && find signorini -name '*.hpp' | sort) \
      <( (cd "$source_dir/include" && find signorini -name '*.hpp'; echo signorini/core/Version.hpp) | sort) ||
   { echo "the installed headers differ from include/signorini/ (< installed, > expected)"; exit 1; }
+
+# The installed program runs from the prefix alone (it finds the installed library) and
+# solves the shipped default problem.
+(cd "$work" && mpiexec -np 2 "$work/prefix/bin/signorini" "$source_dir/xml/default.xml" --output "$work/default") ||
+  { echo "the installed bin/signorini does not solve xml/default.xml"; exit 1; }
+test -s "$work/default/summary.json"
 
 cmake -S "$source_dir/tests/install/installed_headers" -B "$work/headers" -DCMAKE_PREFIX_PATH="$work/prefix"
 cmake --build "$work/headers" -j 2
