@@ -16,7 +16,8 @@ std::string CommandLine::usage() {
          "  --defaults    print the common parameters with their defaults and documentation (XML);\n"
          "                --defaults=all every parameter, the expert ones too\n"
          "exit status: 0 converged, 1 the solver did not converge (summary.json says why),\n"
-         "             2 bad input (one line names the parameter or file), 3 internal error\n";
+         "             2 bad input (one line names the parameter or file), 3 internal error,\n"
+         "             4 the results could not be written (the file and the system's reason)\n";
 }
 
 CommandLine CommandLine::parse(int argc, const char* const* argv) {

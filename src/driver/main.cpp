@@ -20,10 +20,17 @@
 
 namespace {
 
+// The kinds of error and their exit statuses (documented in CommandLine::usage()).
+struct ErrorKind {
+  const char* name;
+  int status;
+};
+constexpr ErrorKind kInputError{"error", 2}, kInternalError{"internal error", 3}, kOutputError{"output error", 4};
+
 // Called by every rank that caught an error. If all ranks caught it (the usual case: input
 // errors are detected on every rank), they leave together; if some rank is elsewhere, for
 // instance waiting in a collective, the job is aborted instead of left hanging.
-int leaveAfterError(const std::string& message, bool userError) {
+int leaveAfterError(const std::string& message, const ErrorKind& kind) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   MPI_Request request;
@@ -34,14 +41,13 @@ int leaveAfterError(const std::string& message, bool userError) {
     MPI_Test(&request, &allArrived, MPI_STATUS_IGNORE);
     if (!allArrived) std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
-  const char* kind = userError ? "error" : "internal error";
   if (allArrived) {
-    if (rank == 0) std::cerr << "signorini: " << kind << ": " << message << std::endl;
-    return userError ? 2 : 3;
+    if (rank == 0) std::cerr << "signorini: " << kind.name << ": " << message << std::endl;
+    return kind.status;
   }
-  std::cerr << "signorini: " << kind << " on rank " << rank << ": " << message << std::endl;
-  MPI_Abort(MPI_COMM_WORLD, userError ? 2 : 3);
-  return 3;
+  std::cerr << "signorini: " << kind.name << " on rank " << rank << ": " << message << std::endl;
+  MPI_Abort(MPI_COMM_WORLD, kind.status);
+  return kind.status;
 }
 
 }  // namespace
@@ -81,8 +87,10 @@ int main(int argc, char** argv) {
     const signorini::SolveResult result = signorini::runApplication(cl, comm, std::cout);
     return result.converged() ? 0 : 1;
   } catch (const signorini::InputError& e) {
-    return leaveAfterError(e.what(), true);
+    return leaveAfterError(e.what(), kInputError);
+  } catch (const signorini::OutputError& e) {
+    return leaveAfterError(e.what(), kOutputError);
   } catch (const std::exception& e) {
-    return leaveAfterError(e.what(), false);
+    return leaveAfterError(e.what(), kInternalError);
   }
 }

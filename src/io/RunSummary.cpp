@@ -8,6 +8,7 @@
 
 #include <Trilinos_version.h>
 
+#include "io/AtomicFile.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/core/Version.hpp"
 
@@ -40,21 +41,6 @@ std::string kktJson(double stationarity, double complementarity, double primal, 
 }
 
 }  // namespace
-
-void writeFileAtomically(const std::string& path, const std::string& text) {
-  const std::filesystem::path target(path);
-  if (target.has_parent_path()) std::filesystem::create_directories(target.parent_path());
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) throw Error("cannot write " + temporary);
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, target, ec);
-  if (ec) throw Error("cannot rename " + temporary + " to " + path + ": " + ec.message());
-}
 
 void writeSummaryJson(const RunSummary& s, const std::string& path) {
   const SolveResult& r = *s.result;
@@ -111,7 +97,7 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     << "  \"time\": {\"setup\": " << number(s.setupSeconds) << ", \"assembly\": " << number(s.assemblySeconds)
     << ", \"solve\": " << number(s.solveSeconds) << ", \"total\": " << number(s.totalSeconds) << "}\n"
     << "}\n";
-  writeFileAtomically(path, j.str());
+  detail::writeFileAtomically(path, j.str());
 }
 
 void writeHistoryCsv(const SolveResult& r, const std::string& path) {
@@ -123,7 +109,7 @@ void writeHistoryCsv(const SolveResult& r, const std::string& path) {
       << number(h.kkt.stationarity) << ',' << number(h.kkt.complementarity) << ','
       << number(h.kkt.primalFeasibility) << ',' << number(h.kkt.dualFeasibility) << ',' << number(h.step) << ','
       << h.krylovIterations << ',' << number(h.seconds) << '\n';
-  writeFileAtomically(path, c.str());
+  detail::writeFileAtomically(path, c.str());
 }
 
 }  // namespace signorini

@@ -29,7 +29,4 @@ struct RunSummary {
 void writeSummaryJson(const RunSummary& summary, const std::string& path);
 void writeHistoryCsv(const SolveResult& result, const std::string& path);
 
-// Writes `text` to `path` through a temporary file and a rename; throws Error naming the path.
-void writeFileAtomically(const std::string& path, const std::string& text);
-
 }  // namespace signorini

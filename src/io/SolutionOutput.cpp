@@ -11,6 +11,7 @@
 
 #include "assembly/DistributedSpace.hpp"
 #include "fe/ElasticityElement.hpp"
+#include "io/AtomicFile.hpp"
 #include "io/RunSummary.hpp"
 #include "signorini/io/VtuWriter.hpp"
 
@@ -121,7 +122,7 @@ void writeContactSamples(const ContactPressureSamples& samples, const Comm& comm
   csv << (samples.dim == 2 ? "x,y" : "x,y,z") << ",weight,pressure\n";
   for (std::size_t i = 0; i < all.size(); i += width)
     for (int k = 0; k < width; ++k) csv << all[i + k] << (k + 1 < width ? ',' : '\n');
-  writeFileAtomically(path, csv.str());
+  detail::writeFileAtomically(path, csv.str());
 }
 
 }  // namespace signorini

@@ -13,6 +13,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include "assembly/DistributedSpace.hpp"
+#include "io/AtomicFile.hpp"
 #include "io/XmlEscape.hpp"
 #include "signorini/core/Error.hpp"
 
@@ -221,33 +222,9 @@ std::string indexText(int numRanks, const std::vector<NodeField>& nodeFields,
   return out;
 }
 
-// Writes text to path through a temporary file in the same directory; returns an error
-// message, empty on success.
-std::string writeAtomically(const fs::path& path, const std::string& text) {
-  fs::path temporary = path;
-  temporary += ".tmp";
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    if (!out) return "cannot open '" + temporary.string() + "' for writing";
-    out.write(text.data(), static_cast<std::streamsize>(text.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(temporary, ignored);
-      return "cannot write '" + temporary.string() + "'";
-    }
-  }
-  std::error_code ec;
-  fs::rename(temporary, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
-    return "cannot rename '" + temporary.string() + "' to '" + path.string() + "': " + ec.message();
-  }
-  return {};
-}
-
-// Collective: if any rank reports an error, every rank throws the lowest failing rank's message.
+// Collective: if any rank reports an error, every rank throws the lowest failing rank's
+// message, an OutputError if it is one of writing the files.
+template <class Failure = Error>
 void throwIfAnyFailed(const Comm& comm, const std::string& localError) {
   const int size = comm.getSize();
   const int local = localError.empty() ? size : comm.getRank();
@@ -258,7 +235,7 @@ void throwIfAnyFailed(const Comm& comm, const std::string& localError) {
   Teuchos::broadcast(comm, failing, 1, &length);
   std::string message = comm.getRank() == failing ? localError : std::string(length, ' ');
   if (length > 0) Teuchos::broadcast(comm, failing, length, &message[0]);
-  throw Error("VTK output: " + message);
+  throw Failure("VTK output: " + message);
 }
 
 template <class Field>
@@ -292,19 +269,22 @@ void writeVtu(const DistributedSpace& space, const std::vector<NodeField>& nodeF
     fs::create_directories(dir, ec);
     if (ec || !fs::is_directory(dir)) error = "cannot create directory '" + directory + "'" + (ec ? ": " + ec.message() : "");
   }
-  throwIfAnyFailed(comm, error);  // also the barrier: the directory exists from here on
+  throwIfAnyFailed<OutputError>(comm, error);  // also the barrier: the directory exists from here on
 
+  std::string text;
   try {
-    error = writeAtomically(dir / (basename + "_" + std::to_string(rank) + ".vtu"),
-                            pieceText(space, nodeFields, cellFields));
+    text = pieceText(space, nodeFields, cellFields);
   } catch (const std::exception& e) {  // Error or bad_alloc: let every rank know
     error = e.what();
   }
   throwIfAnyFailed(comm, error);
+  error = detail::tryWriteFileAtomically((dir / (basename + "_" + std::to_string(rank) + ".vtu")).string(), text);
+  throwIfAnyFailed<OutputError>(comm, error);
 
   if (rank == 0)
-    error = writeAtomically(dir / (basename + ".pvtu"), indexText(comm.getSize(), nodeFields, cellFields, basename));
-  throwIfAnyFailed(comm, error);
+    error = detail::tryWriteFileAtomically((dir / (basename + ".pvtu")).string(),
+                                           indexText(comm.getSize(), nodeFields, cellFields, basename));
+  throwIfAnyFailed<OutputError>(comm, error);
 }
 
 }  // namespace signorini

@@ -17,6 +17,13 @@ struct InputError : Error {
   using Error::Error;
 };
 
+/// Writing a result failed for a reason of the system (a full disk, a file size limit, a
+/// directory removed or made read-only during the run): the message names the file and says
+/// what the system said.
+struct OutputError : Error {
+  using Error::Error;
+};
+
 /// A numerical method could not do its job (breakdown, non-convergence where it is fatal).
 struct SolverError : Error {
   using Error::Error;
