@@ -1,8 +1,8 @@
 #pragma once
 // Transparent huge pages for the heap. A run first touches its matrices and vectors page by
 // page; with 2 MiB pages instead of 4 KiB ones it takes 512 times fewer page faults, which
-// a virtual machine pays dearly for (3D P1 nx = 64 on 2 ranks: assembly 3.7 -> 2.6 s, solve
-// about 12% shorter, the same peak memory). glibc's malloc asks the kernel for them only
+// a virtual machine pays dearly for; the peak memory stays the same (doc/performance-model.md,
+// "Page faults and huge pages", measures it). glibc's malloc asks the kernel for them only
 // when its tunable glibc.malloc.hugetlb is set at process start, so the program restarts
 // itself once with it. A GLIBC_TUNABLES already set is the user's choice (an empty one
 // turns this off) and is left alone, as is a process that valgrind runs.

@@ -233,10 +233,9 @@ Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParamete
   p.set("chebyshev: degree", 2);
   p.set("chebyshev: ratio eigenvalue", 7.0);
   // Lanczos steps for the largest eigenvalue of D^-1 A. Against an 80-step estimate, 15 steps
-  // reach 99.4% of it at 2D nx = 400 and 99.99% at 3D nx = 40 on the finest level, where the
-  // 30 power iterations used before reached 98.4% and 98.6%; an underestimate made the CG
-  // count per Newton system grow with the mesh (Ifpack2's 10 power iterations: 16 -> 21
-  // from 3D nx = 40 to 64).
+  // reach 99.4% of it at 2D nx = 400 and 99.99% at 3D nx = 40 on the finest level, where 30
+  // power iterations reach 98.4% and 98.6%; an underestimate makes the CG count per Newton
+  // system grow with the mesh (doc/algorithms.md).
   p.set("chebyshev: eigenvalue max iterations", 15);
   p.set("chebyshev: boost factor", 1.1);  // Ifpack2's, applied here to our estimate
   return p;

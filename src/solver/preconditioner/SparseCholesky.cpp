@@ -21,8 +21,8 @@ struct SparseCholesky::Cholmod {
     common.print = 0;  // failures are reported by status, in an exception
     common.quick_return_if_not_posdef = true;
     // Supernodal pays for its dense-block overhead only on fuller factors than CHOLMOD's
-    // default (40 flops per entry of L) assumes: measured on the family's coarsest matrices,
-    // simplicial factors one with 45 twice as fast, supernodal one with 105 1.4 times faster.
+    // default (40 flops per entry of L) assumes: on the family's coarsest matrices, simplicial
+    // factors the fastest with 45 flops per entry, supernodal with 105.
     common.supernodal_switch = 80;
   }
   ~Cholmod() {
