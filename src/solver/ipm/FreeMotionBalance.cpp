@@ -1,4 +1,5 @@
 #include "solver/ipm/FreeMotionBalance.hpp"
+#include "solver/ipm/InteriorPointMethods.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -111,9 +112,17 @@ bool newtonStep(const BalanceFunction& phi, const BalanceFunction::Value& value,
 bool balanceLoadAlongFreeMotions(const CrsMatrix& A, const Vector& b, const MultiVector& F, Vector& y) {
   const int f = static_cast<int>(F.getNumVectors());
   if (f == 0 || A.getGlobalNumRows() == 0) return false;
+  // In units of the rows: G_i = (a_i F) / |a_i| is how far constraint i moves under the free
+  // motions, and r_i y_i its force, so that scaling a row (a weighted gap integrates over its
+  // node's facets) does not change the balance.
+  const Vector r = constraintRowNorms(A);
   MultiVector G(A.getRangeMap(), f);
   A.apply(F, G);
-  BalanceFunction phi{G, y, std::vector<double>(f)};
+  Vector inverse(r.getMap()), force(r.getMap());
+  inverse.reciprocal(r);
+  for (int a = 0; a < f; ++a) G.getVectorNonConst(a)->elementWiseMultiply(1.0, inverse, *G.getVector(a), 0.0);
+  force.elementWiseMultiply(1.0, r, y, 0.0);
+  BalanceFunction phi{G, force, std::vector<double>(f)};
   for (int a = 0; a < f; ++a) phi.beta[a] = F.getVector(a)->dot(b);
   const double betaNorm = norm(phi.beta);
   if (betaNorm == 0) return false;

@@ -29,6 +29,10 @@ SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList
 SolveResult solveUnconstrained(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
                                IterationObserver& observer);
 
+// The 2-norms of A's rows, on its range map (1 for an empty row): the scale of each
+// constraint, a weighted gap's being its facets' measure. Collective if the maps differ.
+Vector constraintRowNorms(const CrsMatrix& A);
+
 // Largest alpha in (0, inf] with x + alpha dx >= 0, over all ranks (inf if dx >= 0).
 double maxStepToBoundary(const Vector& x, const Vector& dx);
 

@@ -152,6 +152,23 @@ SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initia
 
 namespace detail {
 
+Vector constraintRowNorms(const CrsMatrix& A) {
+  Vector rows(A.getRowMap());
+  auto out = rows.getDataNonConst();
+  for (std::size_t i = 0; i < A.getNodeNumRows(); ++i) {
+    CrsMatrix::local_inds_host_view_type cols;
+    CrsMatrix::values_host_view_type vals;
+    A.getLocalRowView(static_cast<LocalOrdinal>(i), cols, vals);
+    double sum = 0;
+    for (std::size_t k = 0; k < vals.extent(0); ++k) sum += vals(k) * vals(k);
+    out[i] = sum > 0 ? std::sqrt(sum) : 1.0;
+  }
+  if (A.getRowMap()->isSameAs(*A.getRangeMap())) return rows;
+  Vector norms(A.getRangeMap());
+  norms.doExport(rows, Export(A.getRowMap(), A.getRangeMap()), Tpetra::INSERT);
+  return norms;
+}
+
 double maxStepToBoundary(const Vector& x, const Vector& dx) {
   double local = std::numeric_limits<double>::infinity();
   auto xd = x.getData();

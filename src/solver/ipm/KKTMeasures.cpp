@@ -8,6 +8,8 @@
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "solver/ipm/InteriorPointMethods.hpp"
+
 namespace signorini {
 namespace {
 
@@ -63,24 +65,8 @@ KKTMeasures kktMeasures(const ContactQP& qp, const Vector& v, const Vector& lamb
 namespace signorini {
 
 ActiveSetCriterion::ActiveSetCriterion(const ContactQP& qp, const Vector& v, const Vector& lambda) {
-  // Row norms of A on its row map, moved to the range map (the constraints' map) if needed.
-  const CrsMatrix& A = *qp.A;
-  Vector rows(A.getRowMap());
-  {
-    auto out = rows.getDataNonConst();
-    for (std::size_t i = 0; i < A.getNodeNumRows(); ++i) {
-      CrsMatrix::local_inds_host_view_type cols;
-      CrsMatrix::values_host_view_type vals;
-      A.getLocalRowView(static_cast<LocalOrdinal>(i), cols, vals);
-      double sum = 0;
-      for (std::size_t k = 0; k < vals.extent(0); ++k) sum += vals(k) * vals(k);
-      out[i] = sum > 0 ? std::sqrt(sum) : 1.0;
-    }
-  }
-  Vector norms(A.getRangeMap());
-  const bool sameMap = A.getRowMap()->isSameAs(*A.getRangeMap());
-  if (!sameMap) norms.doExport(rows, Export(A.getRowMap(), A.getRangeMap()), Tpetra::INSERT);
-  auto r = (sameMap ? rows : norms).getData();
+  const Vector norms = detail::constraintRowNorms(*qp.A);
+  auto r = norms.getData();
   rowNorm_.assign(r.begin(), r.end());
 
   double local[2] = {0, 0}, global[2];  // max |lambda_i r_i|, max |d_i / r_i|

@@ -109,17 +109,23 @@ PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::Parameter
       Av_(s_.getMap()), lambda_(s_.getMap()), rp_(s_.getMap()), rc_(s_.getMap()), u_(s_.getMap()),
       Adv_(s_.getMap()), ds_(s_.getMap()), dy_(s_.getMap()), sAffine_(s_.getMap()), yAffine_(s_.getMap()) {}
 
-// s = max(d - A v, displacement scale), s^T y = theta * energy scale, y = mu0 / s; where only
-// the contact holds the body, y rescaled to balance the load along the free motions.
+// s_i = max(d_i - a_i v, displacement scale |a_i| / max_j |a_j|), s^T y = theta * energy
+// scale, y = mu0 / s; where only the contact holds the body, y rescaled to balance the load
+// along the free motions. The slacks' floor follows each row's scale: a weighted gap of a
+// small facet patch (a fine part of a graded mesh) gets a proportionally smaller one, as its
+// gap and its movement are; nodal rows all have the same.
 void PrimalDualMethod::start() {
   newton_.setWeights(D_);
   const ProblemScales scales = problemScales(qp_, newton_, *v_, !freeMotions_.is_null());
   result_.krylovIterations += scales.krylovIterations;
   qp_.A->apply(*v_, Av_);
   {
+    const Vector rows = constraintRowNorms(*qp_.A);
+    const double largest = rows.normInf();
+    auto rd = rows.getData();
     auto dd = qp_.d->getData();
     auto ad = Av_.getData();
-    forEach(s_, [&](std::size_t i) { return std::max(dd[i] - ad[i], scales.displacement); });
+    forEach(s_, [&](std::size_t i) { return std::max(dd[i] - ad[i], scales.displacement * rd[i] / largest); });
   }
   mu0_ = m_ > 0 ? p_.get<double>("starting point: complementarity") * scales.energy / m_ : 0.0;
   {
