@@ -57,8 +57,8 @@ TEST(Expression, ManyPointsAtOnceGiveMuparsersValues) {
     expectSameAsPointByPoint(text, false);
 }
 
-// What the batched form does not translate (an assignment, several results) is still
-// evaluated, by muparser point by point.
+// What the batched form does not translate (an assignment, several results: that it does not
+// is test_batched_expression.cpp's) is still evaluated, by muparser point by point.
 TEST(Expression, ExpressionsOutsideTheBatchedFormAreEvaluatedPointByPoint) {
   for (const char* text : {"x = y + 1", "x, y, 2*z", "sum(x, x, x, x, x, x, x, x, x, x, x, x, x, x, x, x, y)"})
     expectSameAsPointByPoint(text, true);

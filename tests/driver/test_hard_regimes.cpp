@@ -3,22 +3,12 @@
 // of the same discrete problem (the active-set reference, on rank 0).
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <array>
-#include <cmath>
-#include <limits>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <Teuchos_Array.hpp>
-#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
-#include <Tpetra_CrsMatrix.hpp>
-#include <Tpetra_Import.hpp>
-#include <Tpetra_MultiVector.hpp>
-#include <Tpetra_Vector.hpp>
 
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
@@ -36,66 +26,10 @@ std::string familyLoad(double scale, double length) {
   return std::to_string(-scale) + "*(8*" + t + "^4 - 8*" + t + "^2 + 1)";
 }
 
-// The displacements of a QP's nodes on rank 0, keyed by the node's coordinates (rounded far
-// below the mesh spacing): the rank count renumbers the nodes, not their places. Collective.
-std::map<std::array<long long, 3>, std::array<double, 3>> displacementsByPlace(const ContactQP& qp, const Vector& v) {
-  const RCP<const Comm> comm = v.getMap()->getComm();
-  const bool root = comm->getRank() == 0;
-  const auto gatherToRoot = [&](const MultiVector& x) {
-    const auto n = static_cast<GlobalOrdinal>(x.getGlobalLength());
-    const RCP<const Map> onRoot = rcp(new Map(n, root ? static_cast<std::size_t>(n) : 0, 0, comm));
-    MultiVector gathered(onRoot, x.getNumVectors());
-    gathered.doImport(x, Import(x.getMap(), onRoot), Tpetra::INSERT);
-    return gathered;
-  };
-  const MultiVector coordinates = gatherToRoot(*qp.coordinates), displacements = gatherToRoot(v);
-  std::map<std::array<long long, 3>, std::array<double, 3>> byPlace;
-  const int dim = qp.blockSize;
-  for (std::size_t node = 0; node < coordinates.getLocalLength(); ++node) {
-    std::array<long long, 3> place{0, 0, 0};
-    std::array<double, 3> u{0, 0, 0};
-    for (int c = 0; c < dim; ++c) {
-      place[c] = std::llround(coordinates.getData(c)[node] * 1e9);
-      u[c] = displacements.getData(0)[dim * node + c];
-    }
-    byPlace[place] = u;
-  }
-  return byPlace;
-}
-
-// max |v - v_ref| / max |v_ref| against the active-set reference of the same problem,
-// assembled and solved on rank 0 alone, node by node; the same on every rank, infinite if the
-// reference did not converge.
-double differenceToReference(const Teuchos::ParameterList& problem, const ContactQP& qp, const Vector& v) {
-  const auto mine = displacementsByPlace(qp, v);
-  double difference = 0;
-  if (v.getMap()->getComm()->getRank() == 0) {
-    Teuchos::ParameterList assembled = problem;
-    assembled.set("stiffness: operator", "assembled");  // the reference factors Q
-    const AssembledProblem serial = signorini::testing::buildSerial(assembled);
-    const signorini::testing::ReferenceSolution reference = signorini::testing::activeSetSolve(serial.qp);
-    const auto theirs = displacementsByPlace(serial.qp, *reference.v);
-    double largest = 0;
-    for (const auto& [place, u] : theirs) {
-      const auto found = mine.find(place);
-      for (int c = 0; c < 3; ++c) {
-        largest = std::max(largest, std::abs(u[c]));
-        difference = std::max(difference, found == mine.end() ? std::numeric_limits<double>::infinity()
-                                                              : std::abs(found->second[c] - u[c]));
-      }
-    }
-    difference = reference.converged && mine.size() == theirs.size()
-                     ? difference / std::max(largest, std::numeric_limits<double>::min())
-                     : std::numeric_limits<double>::infinity();
-  }
-  Teuchos::broadcast(*v.getMap()->getComm(), 0, 1, &difference);
-  return difference;
-}
-
 SolveResult solve(const Teuchos::ParameterList& problem, double* difference = nullptr) {
   const AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
   SolveResult r = InteriorPointSolver(Teuchos::ParameterList()).solve(p.qp);
-  if (difference) *difference = r.converged() ? differenceToReference(problem, p.qp, *r.v) : 0.0;
+  if (difference) *difference = r.converged() ? signorini::testing::differenceToReference(problem, p.qp, *r.v) : 0.0;
   return r;
 }
 

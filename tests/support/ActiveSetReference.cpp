@@ -1,10 +1,21 @@
 #include "support/ActiveSetReference.hpp"
 
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_MultiVector.hpp>
+
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/LocalDirectSolver.hpp"
+#include "support/TestProblems.hpp"
 
 namespace signorini::testing {
 
@@ -103,6 +114,63 @@ ReferenceSolution activeSetSolve(const ContactQP& qp, int maxIterations) {
   Q->apply(*result.v, Qv);
   result.objective = 0.5 * Qv.dot(*result.v) - qp.b->dot(*result.v);
   return result;
+}
+
+namespace {
+
+// The displacements of a QP's nodes on rank 0, keyed by the node's coordinates (rounded far
+// below the mesh spacing): the rank count renumbers the nodes, not their places. Collective.
+std::map<std::array<long long, 3>, std::array<double, 3>> displacementsByPlace(const ContactQP& qp, const Vector& v) {
+  const RCP<const Comm> comm = v.getMap()->getComm();
+  const bool root = comm->getRank() == 0;
+  const auto gatherToRoot = [&](const MultiVector& x) {
+    const auto n = static_cast<GlobalOrdinal>(x.getGlobalLength());
+    const RCP<const Map> onRoot = rcp(new Map(n, root ? static_cast<std::size_t>(n) : 0, 0, comm));
+    MultiVector gathered(onRoot, x.getNumVectors());
+    gathered.doImport(x, Import(x.getMap(), onRoot), Tpetra::INSERT);
+    return gathered;
+  };
+  const MultiVector coordinates = gatherToRoot(*qp.coordinates), displacements = gatherToRoot(v);
+  std::map<std::array<long long, 3>, std::array<double, 3>> byPlace;
+  const int dim = qp.blockSize;
+  for (std::size_t node = 0; node < coordinates.getLocalLength(); ++node) {
+    std::array<long long, 3> place{0, 0, 0};
+    std::array<double, 3> u{0, 0, 0};
+    for (int c = 0; c < dim; ++c) {
+      place[c] = std::llround(coordinates.getData(c)[node] * 1e9);
+      u[c] = displacements.getData(0)[dim * node + c];
+    }
+    byPlace[place] = u;
+  }
+  return byPlace;
+}
+
+}  // namespace
+
+double differenceToReference(const Teuchos::ParameterList& problem, const ContactQP& qp, const Vector& v) {
+  const auto mine = displacementsByPlace(qp, v);
+  double difference = 0;
+  if (v.getMap()->getComm()->getRank() == 0) {
+    Teuchos::ParameterList assembled = problem;
+    assembled.set("stiffness: operator", "assembled");  // the reference factors Q
+    const AssembledProblem serial = buildSerial(assembled);
+    const ReferenceSolution reference = activeSetSolve(serial.qp);
+    const auto theirs = displacementsByPlace(serial.qp, *reference.v);
+    double largest = 0;
+    for (const auto& [place, u] : theirs) {
+      const auto found = mine.find(place);
+      for (int c = 0; c < 3; ++c) {
+        largest = std::max(largest, std::abs(u[c]));
+        difference = std::max(difference, found == mine.end() ? std::numeric_limits<double>::infinity()
+                                                              : std::abs(found->second[c] - u[c]));
+      }
+    }
+    difference = reference.converged && mine.size() == theirs.size()
+                     ? difference / std::max(largest, std::numeric_limits<double>::min())
+                     : std::numeric_limits<double>::infinity();
+  }
+  Teuchos::broadcast(*v.getMap()->getComm(), 0, 1, &difference);
+  return difference;
 }
 
 }  // namespace signorini::testing

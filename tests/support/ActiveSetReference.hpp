@@ -4,6 +4,8 @@
 // round-off by a sparse Cholesky factorization. It shares nothing with the interior point
 // code but the QP and that factorization (CHOLMOD, which the multigrid uses on its coarsest grid).
 // The QP must live on a one-rank communicator.
+#include <Teuchos_ParameterList.hpp>
+
 #include "signorini/solver/ContactQP.hpp"
 
 namespace signorini::testing {
@@ -17,5 +19,12 @@ struct ReferenceSolution {
 };
 
 ReferenceSolution activeSetSolve(const ContactQP& qp, int maxIterations = 100);
+
+// max |v - v_ref| / max |v_ref| for v, the solution of the QP `qp` built from `problem` on
+// any rank count, and v_ref the active-set reference of the same problem assembled and solved
+// on rank 0 alone; compared node by node at the nodes' coordinates, since the rank count
+// renumbers the nodes. The same on every rank; infinite if the reference did not converge.
+// Collective.
+double differenceToReference(const Teuchos::ParameterList& problem, const ContactQP& qp, const Vector& v);
 
 }  // namespace signorini::testing
