@@ -1,5 +1,4 @@
 #include "solver/ipm/FreeMotionBalance.hpp"
-#include "solver/ipm/InteriorPointMethods.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +9,8 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
+
+#include "solver/ipm/InteriorPointMethods.hpp"
 
 namespace signorini::detail {
 namespace {

@@ -11,10 +11,12 @@
 
 namespace signorini::detail {
 
-// Rescales y > 0 (on A's row map) to y_i exp((G z)_i), G = A F, with the z that makes
-// G^T y = F^T b, the load's resultant along the free motions F (orthonormal columns on A's
-// domain map). z minimises the convex sum_i y_i exp((G z)_i) - z^T F^T b, by Newton's method:
-// the smallest change of y in the relative-entropy sense that balances the load. Returns
+// Rescales y > 0 (on A's range map) to y_i exp((G' z)_i), G'_i = a_i F / |a_i| the motion of
+// constraint i under the free motions F (orthonormal columns on A's domain map), with the z
+// that makes (A F)^T y = F^T b, the load's resultant along F. z minimises the convex
+// sum_i |a_i| y_i exp((G' z)_i) - z^T F^T b, by Newton's method: the smallest change of the
+// forces |a_i| y_i in the relative-entropy sense that balances the load, whatever the rows'
+// scaling (a weighted gap's is its facets' measure). Returns
 // false, leaving y as it was, where no positive y balances the load (it pulls the body off a
 // motion no constraint resists, or has no component along F and needs y = 0 there).
 // Collective; costs one application of A to F.

@@ -59,13 +59,15 @@ void FreeMotionCorrection::apply(const MultiVector& X, MultiVector& Y, Teuchos::
     residual_ = rcp(new Vector(getRangeMap()));
     correction_ = rcp(new Vector(getDomainMap()));
   }
-  if (!active_) {
-    B_->apply(X, Y, Teuchos::NO_TRANS, alpha, beta);
-    return;
-  }
   const int f = static_cast<int>(F_->getNumVectors());
   for (std::size_t j = 0; j < X.getNumVectors(); ++j) {
     const RCP<const Vector> r = X.getVector(j);
+    // Corrections go through a scratch vector: not every preconditioner honours beta.
+    if (!active_) {
+      B_->apply(*r, *correction_);
+      Y.getVectorNonConst(j)->update(alpha, *correction_, beta);
+      continue;
+    }
     const std::vector<double> Ftr = innerProducts(*F_, *r);
     // x = C r, and r - H x = r - HF c
     std::vector<double> c = Ftr;
