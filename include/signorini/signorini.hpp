@@ -15,6 +15,7 @@
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/core/Version.hpp"
 #include "signorini/fe/IsotropicMaterial.hpp"
+#include "signorini/io/QPFiles.hpp"
 #include "signorini/io/SolutionOutput.hpp"
 #include "signorini/io/VtuWriter.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"

@@ -11,7 +11,6 @@
 #include <sstream>
 #include <system_error>
 
-#include <MatrixMarket_Tpetra.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 #include <Teuchos_Time.hpp>
@@ -32,6 +31,7 @@
 #include "io/XmlEscape.hpp"
 #include "signorini/assembly/ContactPressure.hpp"
 #include "signorini/core/Error.hpp"
+#include "signorini/io/QPFiles.hpp"
 #include "signorini/io/SolutionOutput.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "signorini/problem/ProblemParameters.hpp"
@@ -111,21 +111,6 @@ Teuchos::ParameterEntry parseLike(const Teuchos::ParameterEntry* model, const st
       entry.setValue(text);
   }
   return entry;
-}
-
-void exportQp(const AssembledProblem& p, const std::string& directory, const Comm& comm) {
-  using Writer = Tpetra::MatrixMarket::Writer<CrsMatrix>;
-  if (comm.getRank() == 0) std::filesystem::create_directories(directory);
-  comm.barrier();
-  auto Q = p.qp.Qmatrix();
-  if (Q.is_null())
-    throw InputError("--export-qp needs Q as an assembled matrix: set Problem/stiffness: operator to \"assembled\"");
-  Writer::writeSparseFile(directory + "/Q.mtx", Q, "Q", "stiffness, Dirichlet DOFs eliminated symmetrically");
-  Writer::writeSparseFile(directory + "/A.mtx", p.qp.A, "A", "contact constraints A v <= d");
-  Writer::writeDenseFile(directory + "/b.mtx", p.qp.b, "b", "load vector");
-  Writer::writeDenseFile(directory + "/d.mtx", p.qp.d, "d", "contact gaps");
-  Writer::writeDenseFile(directory + "/coords.mtx", p.qp.coordinates, "coords",
-                         "node coordinates; DOF dim*node+c is component c of node node");
 }
 
 void logContact(const ContactStatistics& c, std::ostream& out) {
@@ -323,19 +308,103 @@ std::optional<ContactStatistics> writeSolutionOutputs(const AssembledProblem& pr
 
 }  // namespace
 
+namespace {
+
+// The user's parameters (the XML file, if any, then the --set overrides), validated, and the
+// output directory, checked before anything is built.
+struct RunParameters {
+  Teuchos::ParameterList user, validated;
+  std::string directory;
+};
+
+RunParameters runParameters(const CommandLine& cl, const Comm& comm) {
+  RunParameters run;
+  const Teuchos::ParameterList valid = validTopLevelParameters();
+  if (!cl.input.empty()) run.user = readParameterFile(cl.input, comm);
+  for (const std::string& assignment : cl.overrides) applyOverride(run.user, assignment, valid);
+  run.validated = validatedParameters(run.user, valid, "");
+  run.directory = cl.output.empty() ? run.validated.sublist("Output").get<std::string>("directory") : cl.output;
+  checkOutputDirectory(run.directory, comm);
+  return run;
+}
+
+// One solve with the iteration log on rank 0; its time is the slowest rank's.
+SolveResult solveLogged(const ContactQP& qp, const Teuchos::ParameterList& solverParameters, std::ostream& out,
+                        double& seconds) {
+  const Comm& comm = *qp.Q->getDomainMap()->getComm();
+  InteriorPointSolver solver(solverParameters);
+  IterationLog log(out, comm.getRank() == 0);
+  Teuchos::Time solveTime("solve");
+  solveTime.start(true);
+  SolveResult result;
+  {
+    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve"));
+    const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::solve);
+    result = solver.solve(qp, nullptr, &log);
+  }
+  seconds = maxOverRanks(comm, solveTime.stop());
+  return result;
+}
+
+// The memory figures of `summary`, then summary.json (and --summary) and history.csv on rank 0.
+void writeRunSummary(RunSummary& summary, const CommandLine& cl, const Teuchos::ParameterList& output,
+                     const std::string& directory, bool solutionWritten, const Comm& comm, std::ostream& out) {
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  const double rss = usage.ru_maxrss / 1024.0;  // Linux reports KiB
+  summary.peakMemoryMiBMaxRank = maxOverRanks(comm, rss);
+  summary.peakMemoryMiBAllRanks = sumOverRanks(comm, rss);
+  summary.hugePages = onEveryRank(comm, detail::mallocAsksForHugePages());
+  if (comm.getRank() != 0) return;
+  writeSummaryJson(summary, directory + "/summary.json");
+  if (!cl.summary.empty()) writeSummaryJson(summary, cl.summary);
+  if (output.get<bool>("write history")) writeHistoryCsv(*summary.result, directory + "/history.csv");
+  out << "Results in " << directory << "/ (summary.json" << (output.get<bool>("write history") ? ", history.csv" : "")
+      << (solutionWritten ? ", solution.pvtu" : "") << ")\n";
+}
+
+// signorini --qp DIR: the QP of DIR solved with the Solver list, summary.json and history.csv
+// written (no mesh: no solution files).
+SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostream& out) {
+  Teuchos::Time total("total");
+  total.start(true);
+  const RunParameters run = runParameters(cl, *comm);
+  Teuchos::Time setup("setup");
+  setup.start(true);
+  const ContactQP qp = readQP(cl.qp, comm);
+  const double setupSeconds = maxOverRanks(*comm, setup.stop());
+  const long long n = qp.b->getGlobalLength(), m = qp.d->getGlobalLength();
+  if (comm->getRank() == 0)
+    out << "Signorini: QP of " << cl.qp << "/: n = " << n << ", m = " << m << ", " << qp.blockSize
+        << " unknowns per node, " << comm->getSize() << " MPI rank(s); read in " << setupSeconds << " s\n";
+  RunSummary summary;
+  SolveResult result = solveLogged(qp, run.validated.sublist("Solver"), out, summary.solveSeconds);
+  summary.problem = "qp:" + cl.qp;
+  summary.method = run.validated.sublist("Solver").get<std::string>("method");
+  summary.dim = qp.blockSize;
+  summary.ranks = comm->getSize();
+  summary.n = n;
+  summary.m = m;
+  summary.result = &result;
+  summary.setupSeconds = setupSeconds;
+  summary.totalSeconds = maxOverRanks(*comm, total.stop());
+  writeRunSummary(summary, cl, run.validated.sublist("Output"), run.directory, false, *comm, out);
+  return result;
+}
+
+}  // namespace
+
 SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, std::ostream& out) {
+  if (!cl.qp.empty()) return runQP(cl, comm, out);
   Teuchos::Time total("total");
   total.start(true);
   const bool root = comm->getRank() == 0;
-  const Teuchos::ParameterList valid = validTopLevelParameters();
-  Teuchos::ParameterList user = readParameterFile(cl.input, *comm);
-  for (const std::string& assignment : cl.overrides) applyOverride(user, assignment, valid);
-  const Teuchos::ParameterList params = validatedParameters(user, valid, "");
-  const std::string directory = cl.output.empty() ? params.sublist("Output").get<std::string>("directory") : cl.output;
-  checkOutputDirectory(directory, *comm);
+  RunParameters run = runParameters(cl, *comm);
+  const Teuchos::ParameterList& params = run.validated;
+  const std::string& directory = run.directory;
 
   const std::string baseDirectory = std::filesystem::path(cl.input).parent_path().string();
-  Teuchos::ParameterList& problemList = user.sublist("Problem");
+  Teuchos::ParameterList& problemList = run.user.sublist("Problem");
   // The export writes Q: "auto" assembles it then.
   if (!cl.exportQp.empty() && problemList.get<std::string>("stiffness: operator", "auto") == "auto")
     problemList.set("stiffness: operator", "assembled");
@@ -356,34 +425,23 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   }
 
   if (!cl.exportQp.empty()) {
-    exportQp(problem, cl.exportQp, *comm);
+    writeQP(problem.qp, cl.exportQp);
     if (root) out << "Exported Q, b, A, d, coords to " << cl.exportQp << "/\n";
   }
 
-  InteriorPointSolver solver(params.sublist("Solver"));
-  IterationLog log(out, root);
-  Teuchos::Time solveTime("solve");
-  solveTime.start(true);
-  SolveResult result;
-  {
-    Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve"));
-    const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::solve);
-    result = solver.solve(problem.qp, nullptr, &log);
-  }
-  solveTime.stop();
+  RunSummary summary;
+  SolveResult result = solveLogged(problem.qp, params.sublist("Solver"), out, summary.solveSeconds);
 
   const Teuchos::ParameterList& output = params.sublist("Output");
   const bool finite = isFinite(result);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: output"));
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::output);
-    std::optional<ContactStatistics> contact;
     if (finite)
-      contact = writeSolutionOutputs(problem, result, output, directory, out);
+      summary.contact = writeSolutionOutputs(problem, result, output, directory, out);
     else if (root)
       out << "Solution not written: the solve ended in non-finite numbers (" << toString(result.status) << ")\n";
     total.stop();
-    RunSummary summary;
     summary.problem = def.name;
     summary.method = params.sublist("Solver").get<std::string>("method");
     summary.dim = def.dim;
@@ -395,26 +453,11 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     summary.result = &result;
     summary.setupSeconds = problem.setupSeconds;
     summary.assemblySeconds = problem.assemblySeconds;
-    summary.solveSeconds = maxOverRanks(*comm, solveTime.totalElapsedTime());
     summary.totalSeconds = maxOverRanks(*comm, total.totalElapsedTime());
-    rusage usage;
-    getrusage(RUSAGE_SELF, &usage);
-    const double rss = usage.ru_maxrss / 1024.0;  // Linux reports KiB
-    summary.peakMemoryMiBMaxRank = maxOverRanks(*comm, rss);
     summary.serialMeshMiB = serialMeshMiB;
     summary.serialMeshPeakMiB = problem.serialMeshPeakMiB;
     summary.setupPeakMiBPerRank = problem.setupPeakMiBPerRank;
-    summary.contact = contact;
-    summary.peakMemoryMiBAllRanks = sumOverRanks(*comm, rss);
-    summary.hugePages = onEveryRank(*comm, detail::mallocAsksForHugePages());
-    if (root) {
-      writeSummaryJson(summary, directory + "/summary.json");
-      if (!cl.summary.empty()) writeSummaryJson(summary, cl.summary);
-      if (output.get<bool>("write history")) writeHistoryCsv(result, directory + "/history.csv");
-      out << "Results in " << directory << "/ (summary.json"
-          << (output.get<bool>("write history") ? ", history.csv" : "")
-          << (finite && output.get<bool>("write solution") ? ", solution.pvtu" : "") << ")\n";
-    }
+    writeRunSummary(summary, cl, output, directory, finite && output.get<bool>("write solution"), *comm, out);
   }
   Teuchos::TimeMonitor::summarize(comm.ptr(), out, false, true, false);
   return result;

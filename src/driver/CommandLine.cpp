@@ -7,11 +7,15 @@ namespace signorini {
 std::string CommandLine::usage() {
   return "usage: signorini FILE.xml [--output DIR] [--summary FILE.json] [--export-qp DIR]\n"
          "                 [--set \"Sublist/name=value\" ...] [--help] [--version] [--defaults[=all]]\n"
+         "       signorini --qp DIR [FILE.xml] [--output DIR] [--summary FILE.json] [--set ...]\n"
          "  FILE.xml      parameter list with the sublists Problem, Solver and Output\n"
          "                (xml/defaults.xml documents every parameter)\n"
          "  --output      directory for solution.pvtu, summary.json, history.csv\n"
          "  --summary     also write the JSON summary to this file\n"
          "  --export-qp   write Q, b, A, d and the node coordinates in Matrix Market format\n"
+         "                (doc/qp-format.md)\n"
+         "  --qp          solve the QP that DIR holds in that format, with FILE.xml's Solver and\n"
+         "                Output lists if given (its Problem list is not used)\n"
          "  --set         override one parameter, e.g. --set \"Solver/method=primal\"\n"
          "  --defaults    print the common parameters with their defaults and documentation (XML);\n"
          "                --defaults=all every parameter, the expert ones too\n"
@@ -41,6 +45,8 @@ CommandLine CommandLine::parse(int argc, const char* const* argv) {
       cl.summary = value(i, arg);
     } else if (arg == "--export-qp") {
       cl.exportQp = value(i, arg);
+    } else if (arg == "--qp") {
+      cl.qp = value(i, arg);
     } else if (arg == "--set") {
       cl.overrides.push_back(value(i, arg));
     } else if (!arg.empty() && arg[0] == '-') {
@@ -51,7 +57,9 @@ CommandLine CommandLine::parse(int argc, const char* const* argv) {
       throw InputError("more than one input file (" + cl.input + ", " + arg + ")\n" + usage());
     }
   }
-  if (cl.input.empty() && !cl.help && !cl.version && !cl.defaults) throw InputError("no input file\n" + usage());
+  if (cl.input.empty() && cl.qp.empty() && !cl.help && !cl.version && !cl.defaults)
+    throw InputError("no input file\n" + usage());
+  if (!cl.qp.empty() && !cl.exportQp.empty()) throw InputError("--qp and --export-qp exclude each other\n" + usage());
   return cl;
 }
 

@@ -313,6 +313,39 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_NE(log.str().find("converged after"), std::string::npos);
 }
 
+// signorini --qp: the QP that --export-qp wrote, solved to the same optimum, with
+// summary.json and history.csv and no solution files (there is no mesh).
+TEST(Application, ExportedQPSolvesToTheSameOptimum) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string dir = scratchDirectory("app-qp", *comm);
+  CommandLine exporting;
+  exporting.input = sourceDir() + "/xml/paper/H.xml";
+  exporting.output = dir + "/direct";
+  exporting.exportQp = dir + "/qp";
+  std::ostringstream log;
+  const SolveResult direct = runApplication(exporting, comm, log);
+  CommandLine importing;
+  importing.qp = dir + "/qp";
+  importing.output = dir + "/imported";
+  const SolveResult imported = runApplication(importing, comm, log);
+  ASSERT_TRUE(direct.converged() && imported.converged()) << imported.message;
+  EXPECT_LT(std::abs(direct.objective - imported.objective), 1e-10 * std::abs(direct.objective));
+  EXPECT_LE(std::abs(direct.outerIterations - imported.outerIterations), 1);
+  comm->barrier();
+  if (comm->getRank() != 0) return;
+  const std::string summary = readFile(dir + "/imported/summary.json");
+  EXPECT_NE(summary.find("\"outer_iterations\": " + std::to_string(imported.outerIterations) + ","), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir + "/imported/history.csv"));
+  EXPECT_FALSE(std::filesystem::exists(dir + "/imported/solution.pvtu"));
+}
+
+TEST(Application, QPDirectoryAndExportExcludeEachOther) {
+  const char* argv[] = {"signorini", "--qp", "a", "--export-qp", "b"};
+  EXPECT_NE(inputErrorOf([&] { CommandLine::parse(5, argv); }).find("exclude each other"), std::string::npos);
+  const char* alone[] = {"signorini", "--qp", "a"};
+  EXPECT_EQ(inputErrorOf([&] { CommandLine::parse(3, alone); }), "");
+}
+
 }  // namespace
 
 // Boundary conditions that cannot hold the body, or that contradict the contact, and data

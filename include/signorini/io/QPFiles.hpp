@@ -1,0 +1,26 @@
+#pragma once
+/// \file
+/// The contact QP as Matrix Market files (doc/qp-format.md): what `signorini --export-qp`
+/// writes and `signorini --qp` solves, for handing a problem between Signorini and other
+/// codes. Files: Q.mtx, b.mtx, A.mtx, d.mtx and coords.mtx, DOFs interlaced by node.
+#include <string>
+
+#include "signorini/core/TpetraTypes.hpp"
+#include "signorini/solver/ContactQP.hpp"
+
+namespace signorini {
+
+/// Writes Q (which must be assembled: ContactQP::Qmatrix()), b, A, d and the node
+/// coordinates into `directory` (created if missing). Collective; rank 0 writes. Throws
+/// InputError if Q is not assembled or the coordinates are missing, OutputError if a file
+/// cannot be written.
+void writeQP(const ContactQP& qp, const std::string& directory);
+
+/// Reads a QP written as writeQP() writes it. The unknowns are distributed by whole nodes,
+/// an equal share of them on every rank, so that a node's DOFs stay together (as MueLu and
+/// the rigid body modes need), and the constraints by an equal share; the block size is the
+/// number of columns of coords.mtx. Collective. Throws InputError naming the file and what is
+/// wrong (missing, not Matrix Market, sizes that disagree).
+ContactQP readQP(const std::string& directory, const RCP<const Comm>& comm);
+
+}  // namespace signorini

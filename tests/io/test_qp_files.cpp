@@ -1,0 +1,96 @@
+// The QP as Matrix Market files: what writeQP writes, readQP reads back into node-aligned
+// maps on any rank count, and the solve reaches the same optimum; files that disagree are
+// refused in one message that names them.
+#include "signorini/io/QPFiles.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_MultiVector.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/core/Error.hpp"
+#include "signorini/problem/ProblemBuilder.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "support/TestProblems.hpp"
+
+namespace signorini {
+namespace {
+
+namespace fs = std::filesystem;
+
+// An empty directory for this test and rank count, made by rank 0.
+std::string scratch(const std::string& name, const Comm& comm) {
+  const std::string dir = (fs::temp_directory_path() / ("signorini-qp-" + name + "-" +
+                                                         std::to_string(comm.getSize()))).string();
+  if (comm.getRank() == 0) {
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+  }
+  comm.barrier();
+  return dir;
+}
+
+// Paper problem `name` with Q assembled, written to `dir`.
+AssembledProblem written(const std::string& name, const std::string& dir) {
+  Teuchos::ParameterList problem = testing::shippedProblem("paper/" + name);
+  problem.set("stiffness: operator", "assembled");
+  AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+  writeQP(p.qp, dir);
+  return p;
+}
+
+TEST(QPFiles, RoundTripReachesTheSameOptimumOnEveryRankCount) {
+  auto comm = Tpetra::getDefaultComm();
+  for (const char* name : {"M", "H", "B"}) {
+    const std::string dir = scratch(std::string("round-trip-") + name, *comm);
+    const AssembledProblem direct = written(name, dir);
+    const ContactQP read = readQP(dir, comm);
+    EXPECT_EQ(read.blockSize, direct.qp.blockSize) << name;
+    EXPECT_EQ(read.b->getGlobalLength(), direct.qp.b->getGlobalLength()) << name;
+    EXPECT_EQ(read.d->getGlobalLength(), direct.qp.d->getGlobalLength()) << name;
+    // Whole nodes on every rank: the DOF count of each rank is a multiple of the block size.
+    EXPECT_EQ(read.Q->getDomainMap()->getNodeNumElements() % read.blockSize, 0u) << name;
+    EXPECT_FALSE(read.nearNullspace().is_null()) << name << ": no rigid body modes from the coordinates";
+    const SolveResult a = InteriorPointSolver(Teuchos::ParameterList()).solve(direct.qp);
+    const SolveResult b = InteriorPointSolver(Teuchos::ParameterList()).solve(read);
+    ASSERT_TRUE(a.converged() && b.converged()) << name << ": " << b.message;
+    EXPECT_LT(std::abs(a.objective - b.objective), 1e-10 * std::abs(a.objective)) << name;
+    EXPECT_LE(std::abs(a.outerIterations - b.outerIterations), 1) << name;
+    EXPECT_EQ(a.activeConstraints, b.activeConstraints) << name;
+  }
+}
+
+// The message of the InputError that readQP throws, "" if none.
+std::string readError(const std::string& dir) {
+  try {
+    readQP(dir, Tpetra::getDefaultComm());
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(QPFiles, MissingOrInconsistentFilesAreNamed) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string dir = scratch("refused", *comm);
+  written("M", dir);
+  if (comm->getRank() == 0) fs::rename(dir + "/d.mtx", dir + "/d.mtx.away");
+  comm->barrier();
+  EXPECT_NE(readError(dir).find(dir + "/d.mtx: cannot be opened"), std::string::npos) << readError(dir);
+  if (comm->getRank() == 0) {
+    std::ofstream(dir + "/d.mtx") << "%%MatrixMarket matrix array real general\n12 1\n";  // one row too many
+  }
+  comm->barrier();
+  const std::string message = readError(dir);
+  EXPECT_NE(message.find("A.mtx: 11 x 242, expected 12 x 242"), std::string::npos) << message;
+}
+
+}  // namespace
+}  // namespace signorini
