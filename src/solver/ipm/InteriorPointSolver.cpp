@@ -14,6 +14,7 @@
 #include "core/Collectives.hpp"
 #include "core/ParameterValidation.hpp"
 #include "signorini/core/Error.hpp"
+#include "solver/ContactQPChecks.hpp"
 #include "solver/RigidBodySupport.hpp"
 #include "solver/ipm/InteriorPointMethods.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
@@ -141,6 +142,7 @@ SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initia
                                        IterationObserver* observer) const {
   IterationObserver silent;
   IterationObserver& obs = observer ? *observer : silent;
+  checkContactQP(qp);
   checkRepresentableScale(qp);
   const RCP<const MultiVector> freeMotions = checkRigidBodyMotionsHeld(qp);
   if (qp.A->getRangeMap()->getGlobalNumElements() == 0)

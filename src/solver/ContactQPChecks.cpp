@@ -1,0 +1,49 @@
+#include "solver/ContactQPChecks.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "core/Collectives.hpp"
+#include "signorini/core/Error.hpp"
+
+namespace signorini {
+namespace {
+
+void refuse(const std::string& what) { throw InputError("ContactQP: " + what); }
+
+// The first rank-local DOF whose block is not a whole node (blockSize consecutive global
+// indices from a multiple of blockSize), or -1. Collective: the same answer on every rank.
+long long firstSplitNode(const Map& map, int blockSize) {
+  const auto count = static_cast<LocalOrdinal>(map.getNodeNumElements());
+  const auto id = [&](LocalOrdinal i) { return static_cast<long long>(map.getGlobalElement(i)); };
+  long long local = count % blockSize != 0 ? id(count - 1) : -1;
+  for (LocalOrdinal i = 0; i < count && local < 0; ++i) {
+    const long long first = id(i - i % blockSize);  // the first unknown of i's block on this rank
+    if (first % blockSize != 0 || id(i) != first + i % blockSize) local = id(i);
+  }
+  return maxOverRanks(*map.getComm(), local);
+}
+
+}  // namespace
+
+void checkContactQP(const ContactQP& qp) {
+  if (qp.Q.is_null() || qp.b.is_null() || qp.A.is_null() || qp.d.is_null()) refuse("Q, b, A and d must all be set");
+  if (qp.blockSize < 1 || qp.blockSize > 3) refuse("blockSize must be 1, 2 or 3 (unknowns per node)");
+  const Map& domain = *qp.Q->getDomainMap();
+  if (!qp.b->getMap()->isSameAs(domain)) refuse("b must live on Q's domain map");
+  if (!qp.A->getDomainMap()->isSameAs(domain)) refuse("A's domain map must be Q's domain map");
+  if (!qp.d->getMap()->isSameAs(*qp.A->getRangeMap())) refuse("d must live on A's range map");
+  if (!std::isfinite(qp.b->norm1())) refuse("b has an entry that is not finite");
+  if (!std::isfinite(qp.d->norm1())) refuse("d has an entry that is not finite");
+  const long long split = firstSplitNode(domain, qp.blockSize);
+  if (split >= 0)
+    refuse("Q's domain map splits the " + std::to_string(qp.blockSize) + " unknowns of a node (at global index " +
+           std::to_string(split) + "): every rank must hold whole nodes, unknown blockSize * node + component; "
+           "build the map by nodes (signorini::readQP does) rather than by an even split of the unknowns");
+}
+
+}  // namespace signorini

@@ -1,0 +1,76 @@
+// A ContactQP built by another code is checked before the solve: inconsistent maps and a
+// node's unknowns split between ranks are refused in one message in the API's terms.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/core/Error.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "solver/ContactQPChecks.hpp"
+#include "support/TestProblems.hpp"
+
+namespace signorini {
+namespace {
+
+std::string checkMessage(const ContactQP& qp) {
+  try {
+    checkContactQP(qp);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+ContactQP problemM() { return buildProblem(testing::shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp; }
+
+TEST(ContactQPChecks, AShippedProblemPasses) { EXPECT_EQ(checkMessage(problemM()), ""); }
+
+TEST(ContactQPChecks, MissingAndMisplacedPiecesAreNamed) {
+  ContactQP qp = problemM();
+  qp.d = Teuchos::null;
+  EXPECT_NE(checkMessage(qp).find("Q, b, A and d must all be set"), std::string::npos);
+  qp = problemM();
+  qp.d = rcp(new Vector(qp.Q->getDomainMap()));
+  EXPECT_NE(checkMessage(qp).find("d must live on A's range map"), std::string::npos);
+  qp = problemM();
+  qp.blockSize = 0;
+  EXPECT_NE(checkMessage(qp).find("blockSize must be"), std::string::npos);
+}
+
+// The unknowns split evenly, whatever the nodes: with 242 unknowns of 2 per node on 4 ranks,
+// 61 or 60 per rank, a node straddles ranks; the same unknowns by whole nodes pass.
+TEST(ContactQPChecks, ANodeSplitBetweenRanksIsRefused) {
+  auto comm = Tpetra::getDefaultComm();
+  const ContactQP qp = problemM();
+  const auto n = static_cast<GlobalOrdinal>(qp.b->getGlobalLength());
+  const RCP<const Map> even = rcp(new Map(n, 0, comm));
+  ContactQP split = qp;
+  split.Q = rcp(new CrsMatrix(*qp.Qmatrix()));  // only its maps matter here
+  bool unevenSomewhere = false;
+  for (int r = 0; r < comm->getSize(); ++r) unevenSomewhere |= (n / comm->getSize() + (r < n % comm->getSize())) % 2 != 0;
+  if (!unevenSomewhere) GTEST_SKIP() << "every rank holds whole nodes of an even split here";
+  // Q, b and A on the even split, the way a plain Matrix Market read makes them.
+  Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node> toEven(qp.Q->getDomainMap(), even);
+  auto Qeven = rcp(new CrsMatrix(even, 0));
+  Qeven->doImport(*qp.Qmatrix(), toEven, Tpetra::INSERT);
+  Qeven->fillComplete(even, even);
+  auto beven = rcp(new Vector(even));
+  beven->doImport(*qp.b, toEven, Tpetra::INSERT);
+  auto Aeven = rcp(new CrsMatrix(*qp.A));
+  Aeven->resumeFill();
+  Aeven->fillComplete(even, qp.A->getRangeMap());
+  split.Q = Qeven;
+  split.b = beven;
+  split.A = Aeven;
+  const std::string message = checkMessage(split);
+  EXPECT_NE(message.find("splits the 2 unknowns of a node"), std::string::npos) << message;
+  EXPECT_NE(message.find("readQP"), std::string::npos) << message;
+  EXPECT_THROW(InteriorPointSolver(Teuchos::ParameterList()).solve(split), InputError);
+}
+
+}  // namespace
+}  // namespace signorini
