@@ -8,6 +8,7 @@
 #include <MatrixMarket_Tpetra.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -90,6 +91,39 @@ auto readOrRefuse(const std::string& path, Read read) {
   }
 }
 
+// A map that puts each constraint on the rank of its row's first unknown, as the program's own
+// problems place nodal constraints, so that A's products need no communication for them: the
+// owners of all m constraints are gathered on every rank (m is a surface's count), and each
+// rank takes its own. Collective.
+RCP<const Map> constraintsWithTheirNodes(const CrsMatrix& A, const Map& unknowns) {
+  const Map& rows = *A.getRowMap();
+  const auto count = static_cast<LocalOrdinal>(rows.getNodeNumElements());
+  Teuchos::Array<GlobalOrdinal> first(count);
+  for (LocalOrdinal i = 0; i < count; ++i) {
+    CrsMatrix::local_inds_host_view_type columns;
+    CrsMatrix::values_host_view_type values;
+    A.getLocalRowView(i, columns, values);
+    first[i] = columns.extent(0) > 0 ? A.getColMap()->getGlobalElement(columns(0)) : unknowns.getMinGlobalIndex();
+  }
+  Teuchos::Array<int> owners(count);
+  unknowns.getRemoteIndexList(first(), owners());
+  Vector owner(A.getRowMap());
+  {
+    auto o = owner.getDataNonConst();
+    for (LocalOrdinal i = 0; i < count; ++i) o[i] = owners[i];
+  }
+  const RCP<const Map> everywhere = Tpetra::createLocalMapWithNode<LocalOrdinal, GlobalOrdinal, Node>(
+      rows.getGlobalNumElements(), A.getComm());
+  Vector all(everywhere);
+  all.doImport(owner, Import(A.getRowMap(), everywhere), Tpetra::INSERT);
+  Teuchos::Array<GlobalOrdinal> mine;
+  auto a = all.getData();
+  const int rank = A.getComm()->getRank();
+  for (std::size_t g = 0; g < all.getLocalLength(); ++g)
+    if (static_cast<int>(a[g]) == rank) mine.push_back(everywhere->getGlobalElement(static_cast<LocalOrdinal>(g)));
+  return rcp(new Map(rows.getGlobalNumElements(), mine(), 0, A.getComm()));
+}
+
 }  // namespace
 
 void writeQP(const ContactQP& qp, const std::string& directory) {
@@ -130,10 +164,21 @@ ContactQP readQP(const std::string& directory, const RCP<const Comm>& comm) {
   RCP<const Map> bMap = dofMap;
   qp.b = readOrRefuse(file("b.mtx"), [&] { return Reader::readVectorFile(file("b.mtx"), comm, bMap); });
   RCP<const Map> noAColumnMap;
-  qp.A = readOrRefuse(file("A.mtx"), [&] {
+  const RCP<const CrsMatrix> evenA = readOrRefuse(file("A.mtx"), [&] {
     return Reader::readSparseFile(file("A.mtx"), constraintMap, noAColumnMap, dofMap, constraintMap);
   });
-  qp.d = readOrRefuse(file("d.mtx"), [&] { return Reader::readVectorFile(file("d.mtx"), comm, constraintMap); });
+  const RCP<const Vector> evenD =
+      readOrRefuse(file("d.mtx"), [&] { return Reader::readVectorFile(file("d.mtx"), comm, constraintMap); });
+  // The constraints move to the ranks of their unknowns.
+  const RCP<const Map> rows = constraintsWithTheirNodes(*evenA, *dofMap);
+  const Import move(constraintMap, rows);
+  auto A = rcp(new CrsMatrix(rows, 0));
+  A->doImport(*evenA, move, Tpetra::INSERT);
+  A->fillComplete(dofMap, rows);
+  auto d = rcp(new Vector(rows));
+  d->doImport(*evenD, move, Tpetra::INSERT);
+  qp.A = A;
+  qp.d = d;
   return qp;
 }
 

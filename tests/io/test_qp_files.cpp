@@ -67,6 +67,34 @@ TEST(QPFiles, RoundTripReachesTheSameOptimumOnEveryRankCount) {
   }
 }
 
+// Nodal constraints are read onto the ranks of their nodes: every unknown a local row of A uses
+// is a local unknown, so A's products need no communication. The QP is written by one rank,
+// in the natural numbering of the box, whose bottom nodes (the contact) come first: an even
+// split of the constraints would put most of them away from their nodes.
+TEST(QPFiles, NodalConstraintsLiveWithTheirNodes) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string dir = scratch("placement", *comm);
+  if (comm->getRank() == 0) {
+    Teuchos::ParameterList problem = testing::shippedProblem("paper/H");
+    problem.set("stiffness: operator", "assembled");
+    writeQP(testing::buildSerial(problem).qp, dir);
+  }
+  comm->barrier();
+  const ContactQP read = readQP(dir, comm);
+  const Map& unknowns = *read.Q->getDomainMap();
+  long long elsewhere = 0;
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(read.A->getNodeNumRows()); ++i) {
+    CrsMatrix::local_inds_host_view_type columns;
+    CrsMatrix::values_host_view_type values;
+    read.A->getLocalRowView(i, columns, values);
+    for (std::size_t k = 0; k < columns.extent(0); ++k)
+      elsewhere += !unknowns.isNodeGlobalElement(read.A->getColMap()->getGlobalElement(columns(k)));
+  }
+  EXPECT_EQ(elsewhere, 0);
+  EXPECT_EQ(read.A->getGlobalNumRows(), read.d->getGlobalLength());
+  EXPECT_TRUE(read.d->getMap()->isSameAs(*read.A->getRangeMap()));
+}
+
 // The message of the InputError that readQP throws, "" if none.
 std::string readError(const std::string& dir) {
   try {

@@ -18,7 +18,8 @@ void writeQP(const ContactQP& qp, const std::string& directory);
 
 /// Reads a QP written as writeQP() writes it. The unknowns are distributed by whole nodes,
 /// an equal share of them on every rank, so that a node's DOFs stay together (as MueLu and
-/// the rigid body modes need), and the constraints by an equal share; the block size is the
+/// the rigid body modes need), and each constraint goes to the rank of its row's first
+/// unknown (a nodal constraint then lives with its node); the block size is the
 /// number of columns of coords.mtx. Collective. Throws InputError naming the file and what is
 /// wrong (missing, not Matrix Market, sizes that disagree).
 ContactQP readQP(const std::string& directory, const RCP<const Comm>& comm);
