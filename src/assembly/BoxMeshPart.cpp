@@ -2,10 +2,6 @@
 
 #include <array>
 
-#include <Teuchos_CommHelpers.hpp>
-#include <Tpetra_Import.hpp>
-#include <Tpetra_Map.hpp>
-#include <Tpetra_Vector.hpp>
 
 #include "fe/LagrangeSpace.hpp"
 
@@ -58,33 +54,13 @@ DistributedBoxPart makeBoxMeshPart(const RCP<const Comm>& comm, const BoxGrid& b
   // Lattice points, their keys (the point's index on the whole lattice) and owners.
   const std::vector<Point> point = latticePoints(space, block);
   const long long side[3] = {degree * box.cells[0] + 1, degree * box.cells[1] + 1, 0};
-  std::vector<GlobalOrdinal> key(numNodes), ownedKeys;
+  std::vector<GlobalOrdinal> key(numNodes);
   part.nodeOwners.resize(numNodes);
   for (long long n = 0; n < numNodes; ++n) {
     key[n] = point[n][0] + side[0] * (point[n][1] + side[1] * point[n][2]);
     part.nodeOwners[n] = blocks.lowestBlockHolding(point[n], degree);
-    if (part.nodeOwners[n] == rank) ownedKeys.push_back(key[n]);
   }
-
-  // Owners number their nodes after those of the ranks before them; the others import.
-  const long long numOwned = static_cast<long long>(ownedKeys.size());
-  long long upTo = 0;
-  Teuchos::scan(*comm, Teuchos::REDUCE_SUM, 1, &numOwned, &upTo);
-  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &numOwned, &result.numGlobalNodes);
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  auto ownedMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ownedKeys), 0, comm));
-  auto allMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(key), 0, comm));
-  Vector ownedIds(ownedMap), ids(allMap);  // ids below 2^53 are exact in a double
-  {
-    auto data = ownedIds.getDataNonConst();
-    for (long long i = 0; i < numOwned; ++i) data[i] = static_cast<double>(upTo - numOwned + i);
-  }
-  ids.doImport(ownedIds, Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>(ownedMap, allMap), Tpetra::INSERT);
-  {
-    auto data = ids.getData();
-    part.nodeIds.resize(numNodes);
-    for (long long n = 0; n < numNodes; ++n) part.nodeIds[n] = static_cast<GlobalOrdinal>(data[n]);
-  }
+  part.nodeIds = ownerOrderedIds(comm, key, part.nodeOwners, result.numGlobalNodes);
   part.nodeCoordinates.assign(space.nodeCoordinates().begin() + dim * part.mesh.numVertices(),
                               space.nodeCoordinates().end());
 

@@ -13,6 +13,7 @@
 #include "assembly/BoxMeshPart.hpp"
 #include "assembly/GlobalPartition.hpp"
 #include "assembly/MeshPart.hpp"
+#include "assembly/RefinedMeshPart.hpp"
 #include "core/Collectives.hpp"
 #include "core/RootTask.hpp"
 #include "signorini/core/Error.hpp"
@@ -98,6 +99,15 @@ DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, const BoxGrid& b
     return;
   }
   detail::DistributedBoxPart part = detail::makeBoxMeshPart(comm_, box, blocks, degree);
+  numGlobalNodes_ = part.numGlobalNodes;
+  numGlobalCells_ = part.numGlobalCells;
+  adopt(std::move(part.part), degree);
+}
+
+DistributedSpace::DistributedSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
+                                   int degree)
+    : comm_(lattice.comm()) {
+  detail::DistributedRefinedPart part = detail::makeRefinedMeshPart(lattice, refinement, degree);
   numGlobalNodes_ = part.numGlobalNodes;
   numGlobalCells_ = part.numGlobalCells;
   adopt(std::move(part.part), degree);

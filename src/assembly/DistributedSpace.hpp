@@ -5,18 +5,23 @@
 // their own, and the P_k space on them; the nodes of those cells are its overlap (owned
 // first, then ghosts). A general mesh is held once, by rank 0 alone: it builds the global
 // space, partitions the cells with METIS and sends every rank its part. A box mesh is made
-// by every rank for its own block of boxes, with no global mesh anywhere.
+// by every rank for its own block of boxes, and a refined mesh by every rank refining its
+// part of the coarse mesh, with no global fine mesh anywhere.
 #include <cstddef>
 #include <memory>
 #include <vector>
 
 #include "assembly/MeshPart.hpp"
+#include "fe/SimplexRefinement.hpp"
 #include "fe/BoxGrid.hpp"
 #include "fe/LagrangeSpace.hpp"
 #include "fe/SimplexMesh.hpp"
 #include "signorini/core/TpetraTypes.hpp"
 
 namespace signorini {
+namespace detail {
+class CoarseMeshLattice;
+}
 
 class DistributedSpace {
  public:
@@ -31,6 +36,10 @@ class DistributedSpace {
   // the global mesh and partitions it as above. Throws on every rank InputError for a bad
   // box or degree.
   DistributedSpace(const RCP<const Comm>& comm, const BoxGrid& box, int degree);
+
+  // Collective. The space on `lattice`'s coarse mesh refined refinement.levels() times, each
+  // rank refining its own coarse cells (RefinedMeshPart): no rank holds the fine mesh.
+  DistributedSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int degree);
 
   const RCP<const Comm>& comm() const { return comm_; }
   // This rank's cells as a mesh (vertices and cells renumbered locally, in global order,

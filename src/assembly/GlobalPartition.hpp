@@ -20,6 +20,9 @@ class GlobalPartition {
   long long numNodes() const { return space_.numNodes(); }
   long long numCells() const { return mesh_.numCells(); }
 
+  int cellPart(long long cell) const { return cellPart_[cell]; }
+  GlobalOrdinal nodeId(long long node) const { return newId_[node]; }
+
   // The part of one rank: its cells, and the node data of the space built on them.
   MeshPart part(int rank);
 

@@ -6,6 +6,9 @@
 #include <type_traits>
 
 #include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_Vector.hpp>
 
 #include "signorini/core/Error.hpp"
 
@@ -79,9 +82,44 @@ void forEachArray(Part& part, Visit&& visit) {
   visit(part.boundaryTags);
   visit(part.boundaryStart);
   visit(part.boundaryNodes);
+  visit(part.cellEdges);
+  visit(part.cellFaces);
+  visit(part.edgeOwners);
+  visit(part.faceOwners);
+  visit(part.nearFacets);
+  visit(part.nearFacetTags);
+  visit(part.entityCounts);
 }
 
 }  // namespace
+
+std::vector<GlobalOrdinal> ownerOrderedIds(const RCP<const Comm>& comm, const std::vector<GlobalOrdinal>& keys,
+                                           const std::vector<int>& owners, long long& numGlobalNodes,
+                                           const std::vector<long long>& order) {
+  const int rank = comm->getRank();
+  std::vector<GlobalOrdinal> ownedKeys;
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const std::size_t n = order.empty() ? i : static_cast<std::size_t>(order[i]);
+    if (owners[n] == rank) ownedKeys.push_back(keys[n]);
+  }
+  const long long numOwned = static_cast<long long>(ownedKeys.size());
+  long long upTo = 0;
+  Teuchos::scan(*comm, Teuchos::REDUCE_SUM, 1, &numOwned, &upTo);
+  Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &numOwned, &numGlobalNodes);
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto ownedMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ownedKeys), 0, comm));
+  auto allMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(keys), 0, comm));
+  Vector ownedIds(ownedMap), ids(allMap);  // ids below 2^53 are exact in a double
+  {
+    auto data = ownedIds.getDataNonConst();
+    for (long long i = 0; i < numOwned; ++i) data[i] = static_cast<double>(upTo - numOwned + i);
+  }
+  ids.doImport(ownedIds, Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>(ownedMap, allMap), Tpetra::INSERT);
+  auto data = ids.getData();
+  std::vector<GlobalOrdinal> result(keys.size());
+  for (std::size_t n = 0; n < keys.size(); ++n) result[n] = static_cast<GlobalOrdinal>(data[n]);
+  return result;
+}
 
 void sendMeshPart(const Comm& comm, const MeshPart& part, int destination) {
   Packer p;

@@ -25,7 +25,27 @@ struct MeshPart {
   // boundaryTags: a node of this part may lie on a facet that only another part holds.
   std::vector<int> boundaryTags;
   std::vector<long long> boundaryStart, boundaryNodes;
+
+  // Only in a part of a mesh that is to be refined (see CoarseMeshLattice): the global ids and
+  // owners of each cell's edges (in the order (0,1), (0,2), .., (d-1,d)) and, in 3D, faces
+  // (the face opposite vertex f at f); the boundary facets with at least two vertices among
+  // the part's, as renumbered vertex ids, and their tags; the global numbers of vertices,
+  // edges, faces (3D) and cells.
+  std::vector<long long> cellEdges, cellFaces;
+  std::vector<int> edgeOwners, faceOwners;
+  std::vector<long long> nearFacets;
+  std::vector<int> nearFacetTags;
+  std::vector<long long> entityCounts;
 };
+
+// The renumbered ids of a part's nodes, each named by a global `key` (the same on every rank
+// that holds the node) and given its owner: owners number their nodes in the order of
+// `order` (a permutation of the part's nodes; empty: the part's order), after those of the
+// ranks before them, and the other ranks learn the ids through a Tpetra Import over the
+// keys. Returns the ids; `numGlobalNodes` is the sum of the owned counts. Collective.
+std::vector<GlobalOrdinal> ownerOrderedIds(const RCP<const Comm>& comm, const std::vector<GlobalOrdinal>& keys,
+                                           const std::vector<int>& owners, long long& numGlobalNodes,
+                                           const std::vector<long long>& order = {});
 
 // Point-to-point transfer from rank 0 (blocking; parts of any size).
 void sendMeshPart(const Comm& comm, const MeshPart& part, int destination);

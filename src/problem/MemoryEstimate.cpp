@@ -84,7 +84,7 @@ void checkMemoryFits(double unknowns, int dim, int degree, bool assembledStiffne
                    bytesText(needed / comm.getSize()) + " on each of the " + std::to_string(comm.getSize()) +
                    " rank(s), more than the " + bytesText(needed / comm.getSize() * ranks / worst) +
                    " a machine has available for its " + std::to_string(ranks) +
-                   " rank(s); use fewer cells (Problem/mesh: cells or mesh: size factor)" +
+                   " rank(s); use fewer cells (Problem/mesh: cells, mesh: size factor or mesh: refinements)" +
                    (refinedGrid && degree > 1 ? ", the mesh as the P1 grid (Problem/stiffness: P1 grid)" : "") +
                    " or more machines");
 }

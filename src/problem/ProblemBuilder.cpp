@@ -12,8 +12,10 @@
 #include <Teuchos_TimeMonitor.hpp>
 
 #include "assembly/DistributedSpace.hpp"
+#include "assembly/CoarseMeshLattice.hpp"
 #include "assembly/ElasticityAssembler.hpp"
 #include "assembly/MeshVertexGrid.hpp"
+#include "assembly/RefinedMeshGrid.hpp"
 #include "core/Collectives.hpp"
 #include "core/CommunicationPhase.hpp"
 #include "core/RootTask.hpp"
@@ -55,6 +57,7 @@ AssembledProblem::~AssembledProblem() = default;
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                               const std::string& baseDirectory) {
   AssembledProblem result;
+  std::shared_ptr<const GeometricGrid> refinedGrid;  // the levels of a refined Gmsh mesh
   Teuchos::Time setup("setup"), assembly("assembly");
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: mesh and space"));
@@ -62,8 +65,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     setup.start(true);
     const double residentBefore = residentMiB();
     // Every rank makes its own part of a box mesh. A Gmsh mesh is read by rank 0 alone,
-    // once; DistributedSpace frees it after sending each rank its part, and its dimension
-    // decides the one the rest of the definition is read with.
+    // once, and freed once each rank has its part (of the mesh, or of the coarse mesh it
+    // refines); its dimension decides the one the rest of the definition is read with.
     const GmshSource gmsh = readGmshSource(problem);
     if (gmsh.file.empty()) {
       ProblemDefinition def = readProblemDefinition(problem);
@@ -78,13 +81,25 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
         if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
         mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor));
       });
-      int dim = mesh ? mesh->dim : 0;
-      Teuchos::broadcast(*comm, 0, 1, &dim);
-      result.definition = readProblemDefinition(problem, dim);
-      result.space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), result.definition.degree);
-      checkMemoryFits(static_cast<double>(result.definition.dim) * result.space->numGlobalNodes(),
-                      result.definition.dim, result.definition.degree, !storesNoStiffness(result.definition),
-                      result.definition.gridRefinedAtNodes, *comm);
+      if (gmsh.refinements > 0) {
+        // Rank 0 sends each rank its part of the coarse mesh; every rank refines its own.
+        const auto lattice = std::make_shared<const detail::CoarseMeshLattice>(comm, std::move(mesh));
+        result.definition = readProblemDefinition(problem, lattice->dim());
+        const ProblemDefinition& def = result.definition;
+        checkMemoryFits(static_cast<double>(def.dim) * lattice->numPoints(def.degree << gmsh.refinements), def.dim,
+                        def.degree, !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
+        const SimplexRefinement refinement(def.dim, gmsh.refinements);
+        result.space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree);
+        refinedGrid = RefinedMeshGrid::hierarchy(lattice, refinement, *result.space);
+      } else {
+        int dim = mesh ? mesh->dim : 0;
+        Teuchos::broadcast(*comm, 0, 1, &dim);
+        result.definition = readProblemDefinition(problem, dim);
+        result.space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), result.definition.degree);
+        checkMemoryFits(static_cast<double>(result.definition.dim) * result.space->numGlobalNodes(),
+                        result.definition.dim, result.definition.degree, !storesNoStiffness(result.definition),
+                        result.definition.gridRefinedAtNodes, *comm);
+      }
     }
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);
@@ -104,10 +119,13 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       result.qp.Qassembled = result.qp.Qmatrix();
       result.qp.Q = matrixFreeStiffness(result.space, def);
     }
-    // The grids of the geometric multigrid: a box's nested ones, a P_k space's own mesh, or
-    // that mesh refined at the nodes, whose stiffness is no Galerkin product of Q's.
+    // The grids of the geometric multigrid: a box's or a refined mesh's nested ones, a P_k
+    // space's own mesh, or that mesh refined at the nodes, whose stiffness is no Galerkin
+    // product of Q's.
     if (def.gridRefinedAtNodes)
       result.qp.grid = std::make_shared<MeshVertexGrid>(result.space, MeshVertexGrid::Refinement::atNodes);
+    else if (refinedGrid)
+      result.qp.grid = refinedGrid;
     else if (box)
       result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
     else if (def.degree > 1)

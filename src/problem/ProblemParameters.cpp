@@ -64,6 +64,12 @@ ParameterList validProblemParameters() {
   p.set("mesh: file", "", "Gmsh .msh file (format 2.2 or 4.1), or a .geo geometry that Gmsh meshes; relative to the XML file");
   p.set("mesh: size factor", 1.0, "A .geo geometry's mesh sizes are multiplied by this (Gmsh's Mesh.MeshSizeFactor)",
         range(1e-6, 1e6));
+  p.set("mesh: refinements", 0,
+        "A Gmsh mesh is refined uniformly this many times (triangles into 4, tetrahedra into 8) by every "
+        "rank on its own part of it, the mesh read (or a .geo geometry meshed at its sizes) being the "
+        "coarsest level of a geometric multigrid with one level per refinement. New vertices are midpoints "
+        "of edges: a curved boundary keeps the facets of the mesh read",
+        range(0, 10));
   p.set("element: degree", 1, "Degree of the continuous Lagrange elements", range(1, 3));
   p.set("material: young's modulus", 1.0, "Young's modulus E", range(1e-300, 1e300));
   p.set("material: poisson ratio", 0.3, "Poisson ratio nu", range(-0.999, 0.4999));
@@ -131,7 +137,7 @@ GmshSource readGmshSource(const ParameterList& user) {
   if (p.get<std::string>("mesh: type") != "gmsh") return {};
   const std::string file = p.get<std::string>("mesh: file");
   if (file.empty()) throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
-  return {file, p.get<double>("mesh: size factor")};
+  return {file, p.get<double>("mesh: size factor"), p.get<int>("mesh: refinements")};
 }
 
 ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) {
@@ -158,6 +164,7 @@ ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) 
   }
   def.meshFile = p.get<std::string>("mesh: file");
   def.meshSizeFactor = p.get<double>("mesh: size factor");
+  def.meshRefinements = p.get<int>("mesh: refinements");
   if (def.meshType == "gmsh" && def.meshFile.empty())
     throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
 

@@ -36,6 +36,7 @@ struct ProblemDefinition {
   std::array<double, 3> lengths{{1.0, 1.0, 1.0}};
   std::string meshFile;
   double meshSizeFactor = 1.0;  ///< of a .geo geometry
+  int meshRefinements = 0;      ///< uniform refinements of a Gmsh mesh
   int degree = 1;
   IsotropicMaterial material;
   std::vector<Expression> bodyForce;  ///< dim components

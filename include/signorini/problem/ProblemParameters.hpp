@@ -18,10 +18,12 @@ Teuchos::ParameterList validProblemParameters();
 /// (0: "mesh: dimension").
 ProblemDefinition readProblemDefinition(const Teuchos::ParameterList& problem, int meshDim = 0);
 
-/// A Gmsh mesh to read: its file as given (empty for a box mesh) and the .geo size factor.
+/// A Gmsh mesh to read: its file as given (empty for a box mesh), the .geo size factor and
+/// how many times the mesh read is refined uniformly.
 struct GmshSource {
   std::string file;
   double sizeFactor = 1.0;
+  int refinements = 0;
 };
 /// The mesh file alone, checked, before the mesh and so its dimension are known.
 GmshSource readGmshSource(const Teuchos::ParameterList& problem);

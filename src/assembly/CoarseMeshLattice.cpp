@@ -1,0 +1,243 @@
+#include "assembly/CoarseMeshLattice.hpp"
+
+#include <algorithm>
+#include <array>
+#include <tuple>
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+#include <Teuchos_CommHelpers.hpp>
+
+#include "assembly/GlobalPartition.hpp"
+#include "core/RootTask.hpp"
+#include "signorini/core/Error.hpp"
+
+namespace signorini::detail {
+namespace {
+
+// Position of edge (i, j), i < j, among a d-simplex's edges (0,1), (0,2), .., (d-1,d).
+int edgeIndex(int i, int j, int d) { return i * (2 * d + 1 - i) / 2 + j - i - 1; }
+
+long long binomial(long long m, int k) {
+  if (m < k) return 0;
+  long long value = 1;
+  for (int i = 1; i <= k; ++i) value = value * (m - k + i) / i;
+  return value;
+}
+
+// Lexicographic rank of (x_1..x_k) among the k-tuples of integers >= 0 with sum <= m.
+long long tupleRank(const long long* x, int k, long long m) {
+  long long rank = 0, used = 0;
+  for (int i = 0; i < k; ++i) {
+    for (long long t = 0; t < x[i]; ++t) rank += binomial(m - used - t + (k - 1 - i), k - 1 - i);
+    used += x[i];
+  }
+  return rank;
+}
+
+// Global ids and owners of the entities with `size` vertices (edges: 2, faces: 3) of every
+// cell, entity e of cell c at [c * perCell + e]: entities numbered in order of their sorted
+// vertex ids, owned by the lowest part among their cells.
+struct Entities {
+  std::vector<long long> ids;
+  std::vector<int> owners;  // per entity
+  long long count = 0;
+};
+
+Entities numberEntities(const SimplexMesh& mesh, const GlobalPartition& partition, int size) {
+  const int d = mesh.dim;
+  // The entities of one cell as subsets of its vertex positions: edges in edgeIndex() order,
+  // faces by the vertex they leave out.
+  std::vector<std::array<int, 3>> local;
+  if (size == 2) {
+    for (int i = 0; i <= d; ++i)
+      for (int j = i + 1; j <= d; ++j) local.push_back({i, j, -1});
+  } else {
+    for (int f = 0; f <= d; ++f) {
+      std::array<int, 3> face{};
+      for (int v = 0, n = 0; v <= d; ++v)
+        if (v != f) face[n++] = v;
+      local.push_back(face);
+    }
+  }
+  const long long numCells = mesh.numCells();
+  const int perCell = static_cast<int>(local.size());
+  std::vector<std::tuple<std::array<long long, 3>, long long>> all;  // (sorted vertices, cell entity)
+  all.reserve(numCells * perCell);
+  for (long long c = 0; c < numCells; ++c)
+    for (int e = 0; e < perCell; ++e) {
+      std::array<long long, 3> key{-1, -1, -1};
+      for (int v = 0; v < size; ++v) key[v] = mesh.cells[(d + 1) * c + local[e][v]];
+      std::sort(key.begin(), key.begin() + size);
+      all.emplace_back(key, c * perCell + e);
+    }
+  std::sort(all.begin(), all.end());
+  Entities result;
+  result.ids.resize(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const auto& [key, cellEntity] = all[i];
+    if (i == 0 || std::get<0>(all[i - 1]) != key) {
+      ++result.count;
+      result.owners.push_back(partition.cellPart(cellEntity / perCell));
+    }
+    result.ids[cellEntity] = result.count - 1;
+    result.owners.back() = std::min(result.owners.back(), partition.cellPart(cellEntity / perCell));
+  }
+  return result;
+}
+
+// Adds the lattice data of the mesh's entities to each part (rank 0).
+void addEntities(const SimplexMesh& mesh, const GlobalPartition& partition, const Entities& edges,
+                 const Entities* faces, std::vector<MeshPart>& parts) {
+  const int d = mesh.dim, edgesPerCell = d * (d + 1) / 2;
+  std::vector<char> inPart(mesh.numVertices());
+  for (std::size_t r = 0; r < parts.size(); ++r) {
+    MeshPart& part = parts[r];
+    std::fill(inPart.begin(), inPart.end(), 0);
+    for (long long c : part.globalCells) {
+      for (int v = 0; v <= d; ++v) inPart[mesh.cells[(d + 1) * c + v]] = 1;
+      for (int e = 0; e < edgesPerCell; ++e) {
+        const long long id = edges.ids[c * edgesPerCell + e];
+        part.cellEdges.push_back(id);
+        part.edgeOwners.push_back(edges.owners[id]);
+      }
+      if (faces)
+        for (int f = 0; f <= d; ++f) {
+          const long long id = faces->ids[c * (d + 1) + f];
+          part.cellFaces.push_back(id);
+          part.faceOwners.push_back(faces->owners[id]);
+        }
+    }
+    for (long long f = 0; f < mesh.numFacets(); ++f) {
+      int near = 0;
+      for (int v = 0; v < d; ++v) near += inPart[mesh.facets[d * f + v]];
+      if (near < 2) continue;
+      for (int v = 0; v < d; ++v) part.nearFacets.push_back(partition.nodeId(mesh.facets[d * f + v]));
+      part.nearFacetTags.push_back(mesh.facetTags[f]);
+    }
+    part.entityCounts = {mesh.numVertices(), edges.count, faces ? faces->count : 0, mesh.numCells()};
+  }
+}
+
+}  // namespace
+
+CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> mesh)
+    : comm_(comm) {
+  const int size = comm_->getSize();
+  std::vector<MeshPart> parts;
+  runOnRoot(*comm_, [&] {
+    if (!mesh) throw InputError("coarse mesh: rank 0 has no mesh");
+    GlobalPartition partition(*mesh, 1, size);
+    for (int r = 0; r < size; ++r) parts.push_back(partition.part(r));
+    const Entities edges = numberEntities(*mesh, partition, 2);
+    Entities faces;
+    if (mesh->dim == 3) faces = numberEntities(*mesh, partition, 3);
+    addEntities(*mesh, partition, edges, mesh->dim == 3 ? &faces : nullptr, parts);
+  });
+  if (comm_->getRank() == 0) {
+    for (int r = 1; r < size; ++r) {
+      sendMeshPart(*comm_, parts[r], r);
+      parts[r] = MeshPart();
+    }
+    part_ = std::move(parts[0]);
+  } else {
+    part_ = receiveMeshPart(*comm_, 0);
+  }
+  mesh.reset();
+#if defined(__GLIBC__)
+  malloc_trim(0);
+#endif
+  std::copy(part_.entityCounts.begin(), part_.entityCounts.end(), counts_);
+
+  const int d = dim();
+  for (std::size_t f = 0; f < part_.nearFacetTags.size(); ++f) {
+    std::vector<GlobalOrdinal> facet(part_.nearFacets.begin() + d * f, part_.nearFacets.begin() + d * (f + 1));
+    std::sort(facet.begin(), facet.end());
+    boundaryEntities_[facet].push_back(part_.nearFacetTags[f]);
+    if (d == 3)
+      for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j) boundaryEntities_[{facet[i], facet[j]}].push_back(part_.nearFacetTags[f]);
+  }
+}
+
+long long CoarseMeshLattice::numPoints(long long n) const {
+  const long long inner = counts_[1] * (n - 1) + (dim() == 3 ? counts_[2] * binomial(n - 1, 2) + counts_[3] * binomial(n - 1, 3)
+                                                             : counts_[3] * binomial(n - 1, 2));
+  return counts_[0] + inner;
+}
+
+int CoarseMeshLattice::carrier(long long cell, const LatticePoint& a, int* positions) const {
+  int count = 0;
+  for (int i = 0; i <= dim(); ++i)
+    if (a[i] > 0) positions[count++] = i;
+  std::sort(positions, positions + count, [&](int i, int j) { return vertexId(cell, i) < vertexId(cell, j); });
+  return count;
+}
+
+long long CoarseMeshLattice::pointId(long long cell, const LatticePoint& a, long long n) const {
+  const int d = dim();
+  int at[4];
+  const int count = carrier(cell, a, at);
+  if (count == 1) return vertexId(cell, at[0]);
+  // Inside the entity: the lattice indices past its lowest vertex, less one each.
+  long long inner[3];
+  for (int i = 1; i < count; ++i) inner[i - 1] = a[at[i]] - 1;
+  const long long rank = tupleRank(inner, count - 1, n - count);
+  long long base = counts_[0];
+  if (count == 2) {
+    const long long edge = part_.cellEdges[cell * d * (d + 1) / 2 + edgeIndex(std::min(at[0], at[1]), std::max(at[0], at[1]), d)];
+    return base + edge * (n - 1) + rank;
+  }
+  base += counts_[1] * (n - 1);
+  if (count == 3 && d == 3) {
+    const int missing = 6 - at[0] - at[1] - at[2];
+    return base + part_.cellFaces[cell * 4 + missing] * binomial(n - 1, 2) + rank;
+  }
+  if (d == 3) base += counts_[2] * binomial(n - 1, 2);
+  return base + globalCell(cell) * binomial(n - 1, d) + rank;
+}
+
+int CoarseMeshLattice::pointOwner(long long cell, const LatticePoint& a) const {
+  const int d = dim();
+  int at[4];
+  const int count = carrier(cell, a, at);
+  if (count == 1) return part_.nodeOwners[part_.mesh.cells[(d + 1) * cell + at[0]]];
+  if (count == 2)
+    return part_.edgeOwners[cell * d * (d + 1) / 2 + edgeIndex(std::min(at[0], at[1]), std::max(at[0], at[1]), d)];
+  if (count == 3 && d == 3) return part_.faceOwners[cell * 4 + (6 - at[0] - at[1] - at[2])];
+  return comm_->getRank();
+}
+
+bool CoarseMeshLattice::onBoundary(long long cell, const LatticePoint& a, int tag) const {
+  const int d = dim();
+  int at[4];
+  const int count = carrier(cell, a, at);
+  if (count > d) return false;
+  if (count == 1) {
+    const auto it = std::lower_bound(part_.boundaryTags.begin(), part_.boundaryTags.end(), tag);
+    if (it == part_.boundaryTags.end() || *it != tag) return false;
+    const std::size_t i = it - part_.boundaryTags.begin();
+    const long long vertex = part_.mesh.cells[(d + 1) * cell + at[0]];
+    return std::binary_search(part_.boundaryNodes.begin() + part_.boundaryStart[i],
+                              part_.boundaryNodes.begin() + part_.boundaryStart[i + 1], vertex);
+  }
+  std::vector<GlobalOrdinal> key(count);
+  for (int i = 0; i < count; ++i) key[i] = vertexId(cell, at[i]);
+  const auto it = boundaryEntities_.find(key);
+  return it != boundaryEntities_.end() && std::find(it->second.begin(), it->second.end(), tag) != it->second.end();
+}
+
+void CoarseMeshLattice::pointCoordinates(long long cell, const LatticePoint& a, long long n, double* x) const {
+  const int d = dim();
+  int at[4];
+  const int count = carrier(cell, a, at);
+  std::fill(x, x + d, 0.0);
+  for (int i = 0; i < count; ++i) {
+    const double weight = static_cast<double>(a[at[i]]) / static_cast<double>(n);
+    const long long vertex = part_.mesh.cells[(d + 1) * cell + at[i]];
+    for (int c = 0; c < d; ++c) x[c] += weight * part_.mesh.vertices[d * vertex + c];
+  }
+}
+
+}  // namespace signorini::detail

@@ -1,0 +1,67 @@
+#pragma once
+// Private to the library: one rank's cells of a coarse mesh that every rank refines on its
+// own, and the global numbering of the coarse mesh's barycentric lattice points that makes
+// the refined levels one distributed mesh without any rank holding it.
+//
+// The lattice points of resolution n are the points sum a_i v_i / n of the cells (a_i >= 0
+// integers summing to n): the vertices of the mesh refined l times are those of resolution
+// 2^l, and the nodes of its P_k space those of resolution k 2^l. A point lies in the inside
+// of one coarse entity (its carrier: a vertex, edge, face or cell, the vertices with
+// a_i > 0), and is numbered by it: vertices first, then each edge's n - 1 inner points, each
+// face's, each cell's, in the entity's global order and, inside an entity, in an order fixed
+// by its vertices' global ids, so that every rank holding the entity numbers it alike. Its
+// owner is the entity's: the lowest rank among the cells around it, as for any node.
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "assembly/MeshPart.hpp"
+#include "fe/SimplexRefinement.hpp"
+#include "signorini/core/TpetraTypes.hpp"
+
+namespace signorini::detail {
+
+class CoarseMeshLattice {
+ public:
+  // Collective. Rank 0 partitions its `mesh` (METIS; the other ranks pass nullptr) and sends
+  // each rank its cells with the numbers and owners of their entities. Throws on every rank
+  // InputError for a missing or inconsistent mesh, Error if the partition fails.
+  CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> mesh);
+
+  const RCP<const Comm>& comm() const { return comm_; }
+  int dim() const { return part_.mesh.dim; }
+  // This rank's coarse cells (vertices in global order, its boundary facets), and their ids.
+  const SimplexMesh& mesh() const { return part_.mesh; }
+  long long globalCell(long long cell) const { return part_.globalCells[cell]; }
+  long long numGlobalCells() const { return counts_[3]; }
+
+  // Global number of lattice points of resolution n.
+  long long numPoints(long long n) const;
+  // Global id (0 .. numPoints(n) - 1) of the point a (sum n) of local cell `cell`.
+  long long pointId(long long cell, const LatticePoint& a, long long n) const;
+  // The rank that owns it.
+  int pointOwner(long long cell, const LatticePoint& a) const;
+  // Whether it lies on the global boundary with that tag (on one of its facets).
+  bool onBoundary(long long cell, const LatticePoint& a, int tag) const;
+  // The tags of all boundaries of the global mesh, ascending.
+  const std::vector<int>& boundaryTags() const { return part_.boundaryTags; }
+  // Its coordinates, sum a_i x_i / n summed in increasing vertex id: the same bits in every
+  // cell that holds it, and for the same point at every resolution.
+  void pointCoordinates(long long cell, const LatticePoint& a, long long n, double* x) const;
+
+ private:
+  // The carrier's local vertices (cell vertex positions), sorted by global vertex id.
+  int carrier(long long cell, const LatticePoint& a, int* positions) const;
+  GlobalOrdinal vertexId(long long cell, int position) const {
+    return part_.nodeIds[part_.mesh.cells[(dim() + 1) * cell + position]];
+  }
+
+  RCP<const Comm> comm_;
+  MeshPart part_;
+  long long counts_[4] = {0, 0, 0, 0};  // vertices, edges, faces (3D), cells
+  // Sorted global vertex ids of every boundary facet near this part, and of each of their
+  // edges, with the facet's tag.
+  std::map<std::vector<GlobalOrdinal>, std::vector<int>> boundaryEntities_;
+};
+
+}  // namespace signorini::detail

@@ -1,0 +1,132 @@
+#include "assembly/RefinedMeshGrid.hpp"
+
+#include <algorithm>
+#include <cstring>
+
+#include "assembly/RefinedMeshPart.hpp"
+#include "signorini/core/Error.hpp"
+
+namespace signorini {
+
+struct RefinedMeshGrid::Point {
+  double x[3] = {0, 0, 0};
+  long long vertex = -1;
+  long long vertices[4] = {0, 0, 0, 0};
+  double weights[4] = {0, 0, 0, 0};
+};
+
+namespace {
+
+bool lessByCoordinates(const double* a, const double* b, int dim) {
+  return std::lexicographical_compare(a, a + dim, b, b + dim);
+}
+
+}  // namespace
+
+std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
+    std::shared_ptr<const detail::CoarseMeshLattice> lattice, const SimplexRefinement& refinement,
+    const DistributedSpace& space) {
+  std::shared_ptr<RefinedMeshGrid> coarser;
+  for (int level = 0; level <= refinement.levels(); ++level) {
+    std::shared_ptr<RefinedMeshGrid> grid(new RefinedMeshGrid(*lattice, refinement, level));
+    if (level < refinement.levels())
+      grid->answerForLevel(*lattice, refinement);
+    else
+      grid->answerForSpace(*lattice, refinement, space);
+    grid->coarser_ = coarser;
+    coarser = grid;
+  }
+  return coarser;
+}
+
+RefinedMeshGrid::RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
+                                 int level)
+    : dim_(lattice.dim()), level_(level), levels_(refinement.levels()) {
+  numVertices_ = lattice.numPoints(1LL << level);
+  detail::RefinedLevel own = detail::refineLocally(lattice, refinement, level, false);
+  vertexIds_ = std::move(own.vertexIds);
+  coordinates_ = std::move(own.mesh.vertices);
+}
+
+void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement) {
+  const detail::RefinedLevel finer = detail::refineLocally(lattice, refinement, level_ + 1, false);
+  const long long n = 1LL << level_;
+  points_.resize(finer.vertexIds.size());
+  for (std::size_t i = 0; i < points_.size(); ++i) {
+    Point& point = points_[i];
+    std::copy_n(&finer.mesh.vertices[dim_ * i], dim_, point.x);
+    const long long cell = finer.vertexCells[i];
+    const auto& [a, b] = refinement.parents(level_ + 1, finer.vertexPoints[i]);
+    point.vertices[0] = lattice.pointId(cell, a, n);
+    if (a == b) {
+      point.vertex = point.vertices[0];
+      point.weights[0] = 1.0;
+    } else {
+      point.vertices[1] = lattice.pointId(cell, b, n);
+      point.vertices[2] = point.vertices[3] = point.vertices[1];
+      point.weights[0] = point.weights[1] = 0.5;
+    }
+  }
+  sortPoints();
+}
+
+void RefinedMeshGrid::answerForSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
+                                     const DistributedSpace& space) {
+  const LagrangeSpace& pk = space.space();
+  const int k = pk.degree();
+  const long long n = 1LL << level_;
+  points_.resize(pk.numNodes());
+  std::vector<char> seen(pk.numNodes(), 0);
+  detail::forEachCellNode(pk, refinement, [&](long long node, long long coarseCell, const LatticeSimplex& corners,
+                                              const std::array<int, 4>& index) {
+    if (seen[node]) return;
+    seen[node] = 1;
+    Point& point = points_[node];
+    std::copy_n(&pk.nodeCoordinates()[dim_ * node], dim_, point.x);
+    for (int v = 0; v <= dim_; ++v) {
+      point.vertices[v] = lattice.pointId(coarseCell, corners[v], n);
+      point.weights[v] = static_cast<double>(index[v]) / k;
+      if (index[v] == k) point.vertex = point.vertices[v];
+    }
+  });
+  sortPoints();
+}
+
+void RefinedMeshGrid::sortPoints() {
+  std::sort(points_.begin(), points_.end(),
+            [&](const Point& a, const Point& b) { return lessByCoordinates(a.x, b.x, dim_); });
+}
+
+const RefinedMeshGrid::Point* RefinedMeshGrid::findPoint(const double* x) const {
+  const auto it = std::lower_bound(points_.begin(), points_.end(), x, [&](const Point& p, const double* y) {
+    return lessByCoordinates(p.x, y, dim_);
+  });
+  if (it == points_.end() || lessByCoordinates(x, it->x, dim_)) return nullptr;
+  return &*it;
+}
+
+void RefinedMeshGrid::vertexCoordinates(long long vertex, double* x) const {
+  const auto it = std::lower_bound(vertexIds_.begin(), vertexIds_.end(), vertex);
+  if (it == vertexIds_.end() || *it != vertex)
+    throw Error("refined mesh grid: vertex " + std::to_string(vertex) + " is not in this rank's part");
+  std::copy_n(&coordinates_[dim_ * (it - vertexIds_.begin())], dim_, x);
+}
+
+long long RefinedMeshGrid::vertexAt(const double* x) const {
+  const Point* point = findPoint(x);
+  return point ? point->vertex : -1;
+}
+
+void RefinedMeshGrid::interpolation(const double* x, long long* vertices, double* weights) const {
+  const Point* point = findPoint(x);
+  if (!point) throw Error("refined mesh grid: a point that is no node of this rank's part of the finer level");
+  std::copy_n(point->vertices, dim_ + 1, vertices);
+  std::copy_n(point->weights, dim_ + 1, weights);
+}
+
+std::string RefinedMeshGrid::description() const {
+  return "level " + std::to_string(level_) + " of " + std::to_string(levels_) + " uniform refinements (" +
+         std::to_string(numVertices_) + " vertices)";
+}
+
+}  // namespace signorini

@@ -1,0 +1,59 @@
+#pragma once
+// The geometric multigrid grids of a mesh refined uniformly on every rank (RefinedMeshPart):
+// level l is the P1 grid of the coarse mesh refined l times, its vertices numbered by their
+// coarse lattice points (CoarseMeshLattice::pointId). Its interpolation is the refinement's, not a search by coordinates:
+// a point of the next finer level is a vertex of this one or the midpoint of one of its
+// edges (weights 1/2), a node of the P_k space on the finest level has its cell's P1 weights.
+// That is the exact embedding of the nested P1 spaces whatever the coordinates.
+//
+// A rank answers for the points of its own part: vertexAt() and interpolation() for the
+// vertices of its next finer level (the finest grid: the nodes of its P_k space), given by
+// their coordinates, vertexCoordinates() for its own vertices.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assembly/CoarseMeshLattice.hpp"
+#include "assembly/DistributedSpace.hpp"
+#include "fe/SimplexRefinement.hpp"
+#include "signorini/solver/GeometricGrid.hpp"
+
+namespace signorini {
+
+class RefinedMeshGrid : public GeometricGrid {
+ public:
+  // The finest grid (level refinement.levels()) of `space`, which makeRefinedMeshPart() made
+  // from `lattice`, with the coarser levels below it down to the coarse mesh.
+  static std::shared_ptr<const RefinedMeshGrid> hierarchy(std::shared_ptr<const detail::CoarseMeshLattice> lattice,
+                                                          const SimplexRefinement& refinement,
+                                                          const DistributedSpace& space);
+
+  int dimension() const override { return dim_; }
+  long long numVertices() const override { return numVertices_; }
+  void vertexCoordinates(long long vertex, double* x) const override;
+  long long vertexAt(const double* x) const override;
+  // x must be a point this rank answers for (else Error).
+  void interpolation(const double* x, long long* vertices, double* weights) const override;
+  std::shared_ptr<const GeometricGrid> coarser() const override { return coarser_; }
+  std::string description() const override;
+
+ private:
+  struct Point;  // a point of the finer level, its vertex here (or -1), cell vertices and weights
+
+  RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int level);
+  // The points of the next finer level (the vertices of level + 1), or of the P_k space.
+  void answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement);
+  void answerForSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
+                      const DistributedSpace& space);
+  void sortPoints();
+  const Point* findPoint(const double* x) const;
+
+  int dim_ = 0, level_ = 0, levels_ = 0;
+  long long numVertices_ = 0;
+  std::vector<long long> vertexIds_;  // this rank's vertices, ascending
+  std::vector<double> coordinates_;   // dim_ per vertex
+  std::vector<Point> points_;         // sorted by coordinates
+  std::shared_ptr<const RefinedMeshGrid> coarser_;
+};
+
+}  // namespace signorini

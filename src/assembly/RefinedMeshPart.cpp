@@ -1,0 +1,169 @@
+#include "assembly/RefinedMeshPart.hpp"
+
+#include <algorithm>
+#include <cstdint>
+#include <utility>
+
+#include "fe/LagrangeSpace.hpp"
+
+namespace signorini::detail {
+
+std::vector<long long> coarseCellsAlongCurve(const SimplexMesh& mesh) {
+  const int d = mesh.dim;
+  double lower[3] = {0, 0, 0}, upper[3] = {0, 0, 0};
+  for (int c = 0; c < d; ++c) {
+    lower[c] = upper[c] = mesh.numVertices() > 0 ? mesh.vertices[c] : 0.0;
+    for (long long v = 0; v < mesh.numVertices(); ++v) {
+      lower[c] = std::min(lower[c], mesh.vertices[d * v + c]);
+      upper[c] = std::max(upper[c], mesh.vertices[d * v + c]);
+    }
+  }
+  const int bits = 63 / d;
+  std::vector<std::pair<std::uint64_t, long long>> code(mesh.numCells());
+  double x[3];
+  for (long long cell = 0; cell < mesh.numCells(); ++cell) {
+    std::fill(x, x + 3, 0.0);
+    for (int v = 0; v <= d; ++v)
+      for (int c = 0; c < d; ++c) x[c] += mesh.vertices[d * mesh.cells[(d + 1) * cell + v] + c] / (d + 1);
+    std::uint64_t z = 0;
+    for (int c = 0; c < d; ++c) {
+      const double t = upper[c] > lower[c] ? (x[c] - lower[c]) / (upper[c] - lower[c]) : 0.0;
+      const auto q = static_cast<std::uint64_t>(t * static_cast<double>((1ULL << bits) - 1));
+      for (int b = 0; b < bits; ++b) z |= ((q >> b) & 1ULL) << (d * b + c);
+    }
+    code[cell] = {z, cell};
+  }
+  std::sort(code.begin(), code.end());
+  std::vector<long long> order(code.size());
+  for (std::size_t i = 0; i < code.size(); ++i) order[i] = code[i].second;
+  return order;
+}
+
+std::vector<long long> nodesByLocality(const LagrangeSpace& space, const std::vector<long long>& coarseOrder,
+                                       long long perCoarse) {
+  std::vector<long long> order;
+  order.reserve(space.numNodes());
+  std::vector<char> seen(space.numNodes(), 0);
+  for (long long coarse : coarseOrder)
+    for (long long cell = coarse * perCoarse; cell < (coarse + 1) * perCoarse; ++cell)
+      for (int local = 0; local < space.nodesPerCell(); ++local) {
+        const long long node = space.cellNodes(cell)[local];
+        if (!seen[node]) {
+          seen[node] = 1;
+          order.push_back(node);
+        }
+      }
+  return order;
+}
+
+LatticePoint nodePoint(const LatticeSimplex& corners, const std::array<int, 4>& index, int dim) {
+  LatticePoint point{0, 0, 0, 0};
+  for (int v = 0; v <= dim; ++v)
+    for (int i = 0; i <= dim; ++i) point[i] += index[v] * corners[v][i];
+  return point;
+}
+
+RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int level,
+                           bool withFacets) {
+  const SimplexMesh& coarse = lattice.mesh();
+  const int d = coarse.dim;
+  const long long n = 1LL << level;
+  const auto& templateCells = refinement.cells(level);
+  RefinedLevel result;
+  SimplexMesh& mesh = result.mesh;
+  mesh.dim = d;
+  mesh.boundaryTags = coarse.boundaryTags;
+
+  // Every cell's vertex ids; the vertices are their sorted distinct values.
+  std::vector<long long>& ids = result.vertexIds;
+  mesh.cells.reserve(coarse.numCells() * templateCells.size() * (d + 1));
+  for (long long c = 0; c < coarse.numCells(); ++c)
+    for (const LatticeSimplex& cell : templateCells)
+      for (int v = 0; v <= d; ++v) mesh.cells.push_back(lattice.pointId(c, cell[v], n));
+  ids = mesh.cells;
+  std::sort(ids.begin(), ids.end());
+  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
+  const auto localVertex = [&](long long id) { return std::lower_bound(ids.begin(), ids.end(), id) - ids.begin(); };
+  result.vertexPoints.resize(ids.size());
+  result.vertexCells.assign(ids.size(), -1);
+  mesh.vertices.resize(d * ids.size());
+  for (long long c = 0, at = 0; c < coarse.numCells(); ++c)
+    for (const LatticeSimplex& cell : templateCells)
+      for (int v = 0; v <= d; ++v, ++at) {
+        const long long local = localVertex(mesh.cells[at]);
+        mesh.cells[at] = local;
+        if (result.vertexCells[local] >= 0) continue;
+        result.vertexCells[local] = c;
+        result.vertexPoints[local] = cell[v];
+        lattice.pointCoordinates(c, cell[v], n, &mesh.vertices[d * local]);
+      }
+  if (!withFacets) return result;
+
+  // A boundary facet's refinement: the (d-1)-simplex's, its vertices those of its cell
+  // without the one opposite it.
+  const LagrangeSpace coarseSpace(coarse, 1);
+  const SimplexRefinement facetRefinement(d - 1, level);
+  for (long long f = 0; f < coarse.numFacets(); ++f) {
+    const auto [c, opposite] = coarseSpace.facetCell(f);
+    int corner[3];
+    for (int v = 0, i = 0; v <= d; ++v)
+      if (v != opposite) corner[i++] = v;
+    for (const LatticeSimplex& piece : facetRefinement.cells(level)) {
+      for (int v = 0; v < d; ++v) {
+        LatticePoint point{0, 0, 0, 0};
+        for (int i = 0; i < d; ++i) point[corner[i]] = piece[v][i];
+        mesh.facets.push_back(localVertex(lattice.pointId(c, point, n)));
+      }
+      mesh.facetTags.push_back(coarse.facetTags[f]);
+    }
+  }
+  return result;
+}
+
+DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
+                                           int degree) {
+  const int levels = refinement.levels();
+  DistributedRefinedPart result;
+  MeshPart& part = result.part;
+  part.mesh = std::move(refineLocally(lattice, refinement, levels, true).mesh);
+  const long long perCoarse = static_cast<long long>(refinement.cells(levels).size());
+  for (long long c = 0; c < lattice.mesh().numCells(); ++c)
+    for (long long t = 0; t < perCoarse; ++t) part.globalCells.push_back(lattice.globalCell(c) * perCoarse + t);
+  result.numGlobalCells = lattice.numGlobalCells() * perCoarse;
+
+  const LagrangeSpace space(part.mesh, degree);
+  const long long numNodes = space.numNodes(), n = degree * (1LL << levels);
+  std::vector<GlobalOrdinal> keys(numNodes);
+  part.nodeOwners.resize(numNodes);
+  const std::vector<int>& tags = lattice.boundaryTags();
+  std::vector<std::vector<long long>> tagNodes(tags.size());
+  std::vector<char> seen(numNodes, 0);
+  const int d = part.mesh.dim;
+  forEachCellNode(space, refinement, [&](long long node, long long coarseCell, const LatticeSimplex& corners,
+                                         const std::array<int, 4>& index) {
+    if (seen[node]) return;
+    seen[node] = 1;
+    const LatticePoint point = nodePoint(corners, index, d);
+    keys[node] = lattice.pointId(coarseCell, point, n);
+    part.nodeOwners[node] = lattice.pointOwner(coarseCell, point);
+    for (std::size_t t = 0; t < tags.size(); ++t)
+      if (lattice.onBoundary(coarseCell, point, tags[t])) tagNodes[t].push_back(node);
+  });
+  long long numGlobalNodes = 0;
+  part.nodeIds = ownerOrderedIds(lattice.comm(), keys, part.nodeOwners, numGlobalNodes,
+                                 nodesByLocality(space, coarseCellsAlongCurve(lattice.mesh()), perCoarse));
+  result.numGlobalNodes = numGlobalNodes;
+  part.nodeCoordinates.assign(space.nodeCoordinates().begin() + d * part.mesh.numVertices(),
+                              space.nodeCoordinates().end());
+
+  part.boundaryTags = tags;
+  part.boundaryStart.push_back(0);
+  for (std::vector<long long>& nodes : tagNodes) {
+    std::sort(nodes.begin(), nodes.end());
+    part.boundaryNodes.insert(part.boundaryNodes.end(), nodes.begin(), nodes.end());
+    part.boundaryStart.push_back(static_cast<long long>(part.boundaryNodes.size()));
+  }
+  return result;
+}
+
+}  // namespace signorini::detail
