@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <tuple>
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -15,6 +16,9 @@
 
 namespace signorini::detail {
 namespace {
+
+// The padding of boundary entity keys past their vertices.
+constexpr GlobalOrdinal kNone = std::numeric_limits<GlobalOrdinal>::max();
 
 // Position of edge (i, j), i < j, among a d-simplex's edges (0,1), (0,2), .., (d-1,d).
 int edgeIndex(int i, int j, int d) { return i * (2 * d + 1 - i) / 2 + j - i - 1; }
@@ -152,12 +156,13 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
 
   const int d = dim();
   for (std::size_t f = 0; f < part_.nearFacetTags.size(); ++f) {
-    std::vector<GlobalOrdinal> facet(part_.nearFacets.begin() + d * f, part_.nearFacets.begin() + d * (f + 1));
+    std::array<GlobalOrdinal, 3> facet{kNone, kNone, kNone};
+    std::copy_n(part_.nearFacets.begin() + d * f, d, facet.begin());
     std::sort(facet.begin(), facet.end());
     boundaryEntities_[facet].push_back(part_.nearFacetTags[f]);
     if (d == 3)
       for (int i = 0; i < 3; ++i)
-        for (int j = i + 1; j < 3; ++j) boundaryEntities_[{facet[i], facet[j]}].push_back(part_.nearFacetTags[f]);
+        for (int j = i + 1; j < 3; ++j) boundaryEntities_[{facet[i], facet[j], kNone}].push_back(part_.nearFacetTags[f]);
   }
 }
 
@@ -222,7 +227,7 @@ bool CoarseMeshLattice::onBoundary(long long cell, const LatticePoint& a, int ta
     return std::binary_search(part_.boundaryNodes.begin() + part_.boundaryStart[i],
                               part_.boundaryNodes.begin() + part_.boundaryStart[i + 1], vertex);
   }
-  std::vector<GlobalOrdinal> key(count);
+  std::array<GlobalOrdinal, 3> key{kNone, kNone, kNone};
   for (int i = 0; i < count; ++i) key[i] = vertexId(cell, at[i]);
   const auto it = boundaryEntities_.find(key);
   return it != boundaryEntities_.end() && std::find(it->second.begin(), it->second.end(), tag) != it->second.end();

@@ -11,6 +11,7 @@
 // face's, each cell's, in the entity's global order and, inside an entity, in an order fixed
 // by its vertices' global ids, so that every rank holding the entity numbers it alike. Its
 // owner is the entity's: the lowest rank among the cells around it, as for any node.
+#include <array>
 #include <map>
 #include <memory>
 #include <vector>
@@ -61,7 +62,7 @@ class CoarseMeshLattice {
   long long counts_[4] = {0, 0, 0, 0};  // vertices, edges, faces (3D), cells
   // Sorted global vertex ids of every boundary facet near this part, and of each of their
   // edges, with the facet's tag.
-  std::map<std::vector<GlobalOrdinal>, std::vector<int>> boundaryEntities_;
+  std::map<std::array<GlobalOrdinal, 3>, std::vector<int>> boundaryEntities_;  // padded with the largest id
 };
 
 }  // namespace signorini::detail

@@ -26,30 +26,30 @@ bool lessByCoordinates(const double* a, const double* b, int dim) {
 std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
     std::shared_ptr<const detail::CoarseMeshLattice> lattice, const SimplexRefinement& refinement,
     const DistributedSpace& space) {
-  std::shared_ptr<RefinedMeshGrid> coarser;
-  for (int level = 0; level <= refinement.levels(); ++level) {
-    std::shared_ptr<RefinedMeshGrid> grid(new RefinedMeshGrid(*lattice, refinement, level));
-    if (level < refinement.levels())
-      grid->answerForLevel(*lattice, refinement);
-    else
-      grid->answerForSpace(*lattice, refinement, space);
-    grid->coarser_ = coarser;
-    coarser = grid;
+  // Finest first: each level is refined once, for its own grid and the points of the next coarser.
+  const int levels = refinement.levels();
+  detail::RefinedLevel finer = detail::refineLocally(*lattice, refinement, levels, false);
+  std::shared_ptr<RefinedMeshGrid> finest(new RefinedMeshGrid(*lattice, levels, levels, finer));
+  finest->answerForSpace(*lattice, refinement, space);
+  RefinedMeshGrid* above = finest.get();
+  for (int level = levels - 1; level >= 0; --level) {
+    detail::RefinedLevel own = detail::refineLocally(*lattice, refinement, level, false);
+    std::shared_ptr<RefinedMeshGrid> grid(new RefinedMeshGrid(*lattice, level, levels, own));
+    grid->answerForLevel(*lattice, refinement, finer);
+    above->coarser_ = grid;
+    above = grid.get();
+    finer = std::move(own);
   }
-  return coarser;
+  return finest;
 }
 
-RefinedMeshGrid::RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                                 int level)
-    : dim_(lattice.dim()), level_(level), levels_(refinement.levels()) {
-  numVertices_ = lattice.numPoints(1LL << level);
-  detail::RefinedLevel own = detail::refineLocally(lattice, refinement, level, false);
-  vertexIds_ = std::move(own.vertexIds);
-  coordinates_ = std::move(own.mesh.vertices);
-}
+RefinedMeshGrid::RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, int level, int levels,
+                                 const detail::RefinedLevel& own)
+    : dim_(lattice.dim()), level_(level), levels_(levels), numVertices_(lattice.numPoints(1LL << level)),
+      vertexIds_(own.vertexIds), coordinates_(own.mesh.vertices) {}
 
-void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement) {
-  const detail::RefinedLevel finer = detail::refineLocally(lattice, refinement, level_ + 1, false);
+void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
+                                     const detail::RefinedLevel& finer) {
   const long long n = 1LL << level_;
   points_.resize(finer.vertexIds.size());
   for (std::size_t i = 0; i < points_.size(); ++i) {

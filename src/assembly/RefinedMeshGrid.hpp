@@ -15,6 +15,7 @@
 
 #include "assembly/CoarseMeshLattice.hpp"
 #include "assembly/DistributedSpace.hpp"
+#include "assembly/RefinedMeshPart.hpp"
 #include "fe/SimplexRefinement.hpp"
 #include "signorini/solver/GeometricGrid.hpp"
 
@@ -40,9 +41,11 @@ class RefinedMeshGrid : public GeometricGrid {
  private:
   struct Point;  // a point of the finer level, its vertex here (or -1), cell vertices and weights
 
-  RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int level);
-  // The points of the next finer level (the vertices of level + 1), or of the P_k space.
-  void answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement);
+  // Level `level` of `levels`, whose vertices `own` holds.
+  RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, int level, int levels, const detail::RefinedLevel& own);
+  // The points to answer for: the vertices of the next finer level, or the P_k space's nodes.
+  void answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
+                      const detail::RefinedLevel& finer);
   void answerForSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
                       const DistributedSpace& space);
   void sortPoints();

@@ -74,29 +74,33 @@ RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefine
   mesh.dim = d;
   mesh.boundaryTags = coarse.boundaryTags;
 
-  // Every cell's vertex ids; the vertices are their sorted distinct values.
-  std::vector<long long>& ids = result.vertexIds;
-  mesh.cells.reserve(coarse.numCells() * templateCells.size() * (d + 1));
+  // The ids of every coarse cell's lattice points; the vertices are their distinct values.
+  const auto& points = refinement.points(level);
+  const long long perCell = static_cast<long long>(points.size());
+  std::vector<long long> pointIds(coarse.numCells() * perCell);
   for (long long c = 0; c < coarse.numCells(); ++c)
-    for (const LatticeSimplex& cell : templateCells)
-      for (int v = 0; v <= d; ++v) mesh.cells.push_back(lattice.pointId(c, cell[v], n));
-  ids = mesh.cells;
+    for (long long p = 0; p < perCell; ++p) pointIds[c * perCell + p] = lattice.pointId(c, points[p], n);
+  std::vector<long long>& ids = result.vertexIds;
+  ids = pointIds;
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  const auto localVertex = [&](long long id) { return std::lower_bound(ids.begin(), ids.end(), id) - ids.begin(); };
   result.vertexPoints.resize(ids.size());
   result.vertexCells.assign(ids.size(), -1);
   mesh.vertices.resize(d * ids.size());
-  for (long long c = 0, at = 0; c < coarse.numCells(); ++c)
-    for (const LatticeSimplex& cell : templateCells)
-      for (int v = 0; v <= d; ++v, ++at) {
-        const long long local = localVertex(mesh.cells[at]);
-        mesh.cells[at] = local;
-        if (result.vertexCells[local] >= 0) continue;
-        result.vertexCells[local] = c;
-        result.vertexPoints[local] = cell[v];
-        lattice.pointCoordinates(c, cell[v], n, &mesh.vertices[d * local]);
-      }
+  for (long long c = 0; c < coarse.numCells(); ++c)
+    for (long long p = 0; p < perCell; ++p) {
+      long long& local = pointIds[c * perCell + p];
+      local = std::lower_bound(ids.begin(), ids.end(), local) - ids.begin();
+      if (result.vertexCells[local] >= 0) continue;
+      result.vertexCells[local] = c;
+      result.vertexPoints[local] = points[p];
+      lattice.pointCoordinates(c, points[p], n, &mesh.vertices[d * local]);
+    }
+  mesh.cells.reserve(coarse.numCells() * templateCells.size() * (d + 1));
+  for (long long c = 0; c < coarse.numCells(); ++c)
+    for (const std::array<int, 4>& cell : refinement.cellPoints(level))
+      for (int v = 0; v <= d; ++v) mesh.cells.push_back(pointIds[c * perCell + cell[v]]);
+  const auto localVertex = [&](long long id) { return std::lower_bound(ids.begin(), ids.end(), id) - ids.begin(); };
   if (!withFacets) return result;
 
   // A boundary facet's refinement: the (d-1)-simplex's, its vertices those of its cell

@@ -1,5 +1,6 @@
 #include "fe/SimplexRefinement.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -71,6 +72,21 @@ SimplexRefinement::SimplexRefinement(int dim, int levels) : dim_(dim) {
     cells_.emplace_back();
     for (const LatticeSimplex& cell : bey) cells_.back().push_back(oriented(dim, cell));
     parents_.push_back(std::move(parents));
+  }
+  for (const std::vector<LatticeSimplex>& cells : cells_) {
+    std::vector<LatticePoint> points;
+    for (const LatticeSimplex& cell : cells) points.insert(points.end(), cell.begin(), cell.begin() + dim + 1);
+    std::sort(points.begin(), points.end());
+    points.erase(std::unique(points.begin(), points.end()), points.end());
+    std::vector<std::array<int, 4>> cellPoints;
+    for (const LatticeSimplex& cell : cells) {
+      std::array<int, 4> indices{-1, -1, -1, -1};
+      for (int v = 0; v <= dim; ++v)
+        indices[v] = static_cast<int>(std::lower_bound(points.begin(), points.end(), cell[v]) - points.begin());
+      cellPoints.push_back(indices);
+    }
+    points_.push_back(std::move(points));
+    cellPoints_.push_back(std::move(cellPoints));
   }
 }
 

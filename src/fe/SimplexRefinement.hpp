@@ -31,6 +31,10 @@ class SimplexRefinement {
   // oriented in the reference simplex (a reflected child of Bey's has its first two vertices
   // swapped here, not in the refinement).
   const std::vector<LatticeSimplex>& cells(int level) const { return cells_[level]; }
+  // The distinct vertices of those cells, ascending, and each cell's dim + 1 vertices as
+  // indices into them.
+  const std::vector<LatticePoint>& points(int level) const { return points_[level]; }
+  const std::vector<std::array<int, 4>>& cellPoints(int level) const { return cellPoints_[level]; }
   // For a vertex of the level-`level` cells (level >= 1) that is no point of level - 1, the
   // two points of level - 1 at the ends of the edge it halves; for one that is, that point
   // twice. Throws Error for a point that is no vertex of that level.
@@ -39,6 +43,8 @@ class SimplexRefinement {
  private:
   int dim_;
   std::vector<std::vector<LatticeSimplex>> cells_;
+  std::vector<std::vector<LatticePoint>> points_;
+  std::vector<std::vector<std::array<int, 4>>> cellPoints_;
   std::vector<std::map<LatticePoint, std::array<LatticePoint, 2>>> parents_;  // per level
 };
 
