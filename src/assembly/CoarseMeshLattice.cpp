@@ -124,6 +124,36 @@ void addEntities(const SimplexMesh& mesh, const GlobalPartition& partition, cons
   }
 }
 
+// Each tetrahedron's vertices rotated (an even permutation: the orientation stays) so that
+// Bey's rule cuts its inner octahedron along the shortest of the three diagonals, between
+// the midpoints of edges 02 and 13: the children are then the best shaped it can make.
+SimplexMesh withShortestDiagonals(const SimplexMesh& mesh) {
+  SimplexMesh result = mesh;
+  if (mesh.dim != 3) return result;
+  // The three pairings of opposite edges, and the even orders that put each on (02, 13).
+  const int orders[3][4] = {{0, 1, 2, 3}, {1, 2, 0, 3}, {3, 1, 0, 2}};
+  const int pairs[3][4] = {{0, 2, 1, 3}, {0, 1, 2, 3}, {0, 3, 1, 2}};
+  for (long long c = 0; c < mesh.numCells(); ++c) {
+    const long long* v = &mesh.cells[4 * c];
+    double best = 0.0;
+    int choice = 0;
+    for (int k = 0; k < 3; ++k) {
+      double length = 0.0;  // |(x_a + x_b) - (x_c + x_d)|^2, four times the diagonal's squared length
+      for (int x = 0; x < 3; ++x) {
+        const double t = mesh.vertices[3 * v[pairs[k][0]] + x] + mesh.vertices[3 * v[pairs[k][1]] + x] -
+                         mesh.vertices[3 * v[pairs[k][2]] + x] - mesh.vertices[3 * v[pairs[k][3]] + x];
+        length += t * t;
+      }
+      if (k == 0 || length < best) {
+        best = length;
+        choice = k;
+      }
+    }
+    for (int i = 0; i < 4; ++i) result.cells[4 * c + i] = v[orders[choice][i]];
+  }
+  return result;
+}
+
 }  // namespace
 
 CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> mesh)
@@ -132,6 +162,7 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
   std::vector<MeshPart> parts;
   runOnRoot(*comm_, [&] {
     if (!mesh) throw InputError("coarse mesh: rank 0 has no mesh");
+    mesh = std::make_shared<const SimplexMesh>(withShortestDiagonals(*mesh));
     GlobalPartition partition(*mesh, 1, size);
     for (int r = 0; r < size; ++r) parts.push_back(partition.part(r));
     const Entities edges = numberEntities(*mesh, partition, 2);
