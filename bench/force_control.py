@@ -19,7 +19,7 @@ import os
 import subprocess
 
 from preconditioners import ENV, ROOT
-from provenance import provenance
+from provenance import provenance, write_results
 
 HERTZ = os.path.join(ROOT, "examples", "hertz")
 # name, input, settings, the loaded face's displacement component and approach of the
@@ -93,12 +93,7 @@ def main():
                     continue  # the primal method needs rows that share no unknowns
                 runs.append(run(case, method, formulation, args.ranks, args.workdir))
                 print(json.dumps(runs[-1]), flush=True)
-    base = os.path.join(ROOT, "bench", "results", "force-control")
-    with open(base + ".json", "w") as f:
-        json.dump({"provenance": made, "runs": runs}, f, indent=1)
-    with open(base + ".md", "w") as f:
-        f.write(table(runs))
-    print(table(runs))
+    write_results("force-control", made, runs, table(runs))
 
 
 if __name__ == "__main__":

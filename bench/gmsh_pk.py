@@ -17,7 +17,7 @@ import os
 import subprocess
 
 from preconditioners import ENV, ROOT
-from provenance import provenance
+from provenance import provenance, write_results
 
 HERTZ = os.path.join(ROOT, "examples", "hertz")
 # (input, degree, Gmsh size factor)
@@ -71,12 +71,7 @@ def main():
         for path in PATHS:
             runs.append(run(case, path, args.ranks, args.workdir))
             print(json.dumps(runs[-1]), flush=True)
-    base = os.path.join(ROOT, "bench", "results", "gmsh-pk")
-    with open(base + ".json", "w") as f:
-        json.dump({"provenance": made, "runs": runs}, f, indent=1)
-    with open(base + ".md", "w") as f:
-        f.write(table(runs))
-    print(table(runs))
+    write_results("gmsh-pk", made, runs, table(runs))
 
 
 if __name__ == "__main__":

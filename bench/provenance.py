@@ -6,6 +6,7 @@ and the build's compiler, Signorini and Trilinos versions (as build/bin/signorin
 reports them)."""
 import datetime
 import glob
+import json
 import os
 import platform
 import re
@@ -39,3 +40,14 @@ def provenance(ranks, build=os.path.join(ROOT, "build")):
             "date": datetime.datetime.now(datetime.timezone.utc).isoformat(timespec="seconds"),
             "host": platform.node(), "cores": os.cpu_count(), "ranks": ranks,
             "compiler": compiler(build), "build": version}
+
+
+def write_results(name, made, runs, table):
+    """Writes bench/results/<name>.json (provenance and runs) and <name>.md (the table), and
+    prints the table."""
+    base = os.path.join(ROOT, "bench", "results", name)
+    with open(base + ".json", "w") as f:
+        json.dump({"provenance": made, "runs": runs}, f, indent=1)
+    with open(base + ".md", "w") as f:
+        f.write(table)
+    print(table)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <string>
 #include <tuple>
 #if defined(__GLIBC__)
 #include <malloc.h>
@@ -12,6 +13,7 @@
 
 #include "assembly/GlobalPartition.hpp"
 #include "core/RootTask.hpp"
+#include "fe/GmshMesh.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini::detail {
@@ -19,6 +21,14 @@ namespace {
 
 // The padding of boundary entity keys past their vertices.
 constexpr GlobalOrdinal kNone = std::numeric_limits<GlobalOrdinal>::max();
+
+// The first `count` ids, sorted, padded with kNone.
+std::array<GlobalOrdinal, 3> sortedKey(const long long* ids, int count) {
+  std::array<GlobalOrdinal, 3> key{kNone, kNone, kNone};
+  std::copy_n(ids, count, key.begin());
+  std::sort(key.begin(), key.end());
+  return key;
+}
 
 // Position of edge (i, j), i < j, among a d-simplex's edges (0,1), (0,2), .., (d-1,d).
 int edgeIndex(int i, int j, int d) { return i * (2 * d + 1 - i) / 2 + j - i - 1; }
@@ -91,6 +101,70 @@ Entities numberEntities(const SimplexMesh& mesh, const GlobalPartition& partitio
   return result;
 }
 
+// The elements (`size` vertex ids each, with a label) with at least two vertices in the
+// part, as renumbered vertex ids.
+void addNear(const std::vector<long long>& elements, const std::vector<int>& labels, int size,
+             const std::vector<char>& inPart, const GlobalPartition& partition, std::vector<long long>& nearElements,
+             std::vector<int>& nearLabels) {
+  for (std::size_t e = 0; e < labels.size(); ++e) {
+    int near = 0;
+    for (int v = 0; v < size; ++v) near += inPart[elements[size * e + v]];
+    if (near < 2) continue;
+    for (int v = 0; v < size; ++v) nearElements.push_back(partition.nodeId(elements[size * e + v]));
+    nearLabels.push_back(labels[e]);
+  }
+}
+
+// closestPointsOnGeometry() for every rank's points (`targets`: dimension and tag per point),
+// computed by rank 0, which alone reads the file. Collective.
+std::vector<double> closestPointsOnRoot(const Comm& comm, const std::string& path, const std::vector<int>& targets,
+                                        const std::vector<double>& points) {
+  const int rank = comm.getRank(), size = comm.getSize();
+  std::vector<long long> counts(size);
+  const long long count = static_cast<long long>(targets.size() / 2);
+  Teuchos::gatherAll(comm, 1, &count, size, counts.data());
+  std::vector<int> allTargets;
+  std::vector<double> allPoints, placed;
+  if (rank == 0) {
+    for (int r = 0; r < size; ++r) {
+      std::vector<int> t(2 * counts[r]);
+      std::vector<double> x(3 * counts[r]);
+      if (r == 0) {
+        t = targets;
+        x = points;
+      } else if (counts[r] > 0) {
+        Teuchos::receive(comm, r, static_cast<int>(t.size()), t.data());
+        Teuchos::receive(comm, r, static_cast<int>(x.size()), x.data());
+      }
+      allTargets.insert(allTargets.end(), t.begin(), t.end());
+      allPoints.insert(allPoints.end(), x.begin(), x.end());
+    }
+  } else if (count > 0) {
+    Teuchos::send(comm, static_cast<int>(targets.size()), targets.data(), 0);
+    Teuchos::send(comm, static_cast<int>(points.size()), points.data(), 0);
+  }
+  runOnRoot(comm, [&] {
+    std::vector<int> dims, entities;
+    for (std::size_t i = 0; i < allTargets.size(); i += 2) {
+      dims.push_back(allTargets[i]);
+      entities.push_back(allTargets[i + 1]);
+    }
+    placed = closestPointsOnGeometry(path, dims, entities, allPoints);
+  });
+  std::vector<double> mine(points.size());
+  if (rank == 0) {
+    std::copy_n(placed.begin(), mine.size(), mine.begin());
+    long long at = 3 * counts[0];
+    for (int r = 1; r < size; ++r) {
+      if (counts[r] > 0) Teuchos::send(comm, static_cast<int>(3 * counts[r]), placed.data() + at, r);
+      at += 3 * counts[r];
+    }
+  } else if (count > 0) {
+    Teuchos::receive(comm, 0, static_cast<int>(mine.size()), mine.data());
+  }
+  return mine;
+}
+
 // Adds the lattice data of the mesh's entities to each part (rank 0).
 void addEntities(const SimplexMesh& mesh, const GlobalPartition& partition, const Entities& edges,
                  const Entities* faces, std::vector<MeshPart>& parts) {
@@ -113,13 +187,11 @@ void addEntities(const SimplexMesh& mesh, const GlobalPartition& partition, cons
           part.faceOwners.push_back(faces->owners[id]);
         }
     }
-    for (long long f = 0; f < mesh.numFacets(); ++f) {
-      int near = 0;
-      for (int v = 0; v < d; ++v) near += inPart[mesh.facets[d * f + v]];
-      if (near < 2) continue;
-      for (int v = 0; v < d; ++v) part.nearFacets.push_back(partition.nodeId(mesh.facets[d * f + v]));
-      part.nearFacetTags.push_back(mesh.facetTags[f]);
-    }
+    addNear(mesh.facets, mesh.facetTags, d, inPart, partition, part.nearFacets, part.nearFacetTags);
+    addNear(mesh.geometryFacets, mesh.geometryFacetEntities, d, inPart, partition, part.nearGeometryFacets,
+            part.nearGeometryFacetEntities);
+    addNear(mesh.geometryEdges, mesh.geometryEdgeEntities, 2, inPart, partition, part.nearGeometryEdges,
+            part.nearGeometryEdgeEntities);
     part.entityCounts = {mesh.numVertices(), edges.count, faces ? faces->count : 0, mesh.numCells()};
   }
 }
@@ -187,14 +259,25 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
 
   const int d = dim();
   for (std::size_t f = 0; f < part_.nearFacetTags.size(); ++f) {
-    std::array<GlobalOrdinal, 3> facet{kNone, kNone, kNone};
-    std::copy_n(part_.nearFacets.begin() + d * f, d, facet.begin());
-    std::sort(facet.begin(), facet.end());
+    const EntityKey facet = sortedKey(&part_.nearFacets[d * f], d);
     boundaryEntities_[facet].push_back(part_.nearFacetTags[f]);
     if (d == 3)
       for (int i = 0; i < 3; ++i)
         for (int j = i + 1; j < 3; ++j) boundaryEntities_[{facet[i], facet[j], kNone}].push_back(part_.nearFacetTags[f]);
   }
+  for (std::size_t f = 0; f < part_.nearGeometryFacetEntities.size(); ++f) {
+    const EntityKey facet = sortedKey(&part_.nearGeometryFacets[d * f], d);
+    const int surface = part_.nearGeometryFacetEntities[f];
+    facetEntity_[facet] = surface;
+    if (d == 3)
+      for (int i = 0; i < 3; ++i)
+        for (int j = i + 1; j < 3; ++j) {
+          std::vector<int>& surfaces = edgeSurfaces_[{facet[i], facet[j], kNone}];
+          if (std::find(surfaces.begin(), surfaces.end(), surface) == surfaces.end()) surfaces.push_back(surface);
+        }
+  }
+  for (std::size_t e = 0; e < part_.nearGeometryEdgeEntities.size(); ++e)
+    edgeCurve_[sortedKey(&part_.nearGeometryEdges[2 * e], 2)] = part_.nearGeometryEdgeEntities[e];
 }
 
 long long CoarseMeshLattice::numPoints(long long n) const {
@@ -258,21 +341,94 @@ bool CoarseMeshLattice::onBoundary(long long cell, const LatticePoint& a, int ta
     return std::binary_search(part_.boundaryNodes.begin() + part_.boundaryStart[i],
                               part_.boundaryNodes.begin() + part_.boundaryStart[i + 1], vertex);
   }
-  std::array<GlobalOrdinal, 3> key{kNone, kNone, kNone};
-  for (int i = 0; i < count; ++i) key[i] = vertexId(cell, at[i]);
-  const auto it = boundaryEntities_.find(key);
+  const auto it = boundaryEntities_.find(entityKey(cell, at, count));
   return it != boundaryEntities_.end() && std::find(it->second.begin(), it->second.end(), tag) != it->second.end();
+}
+
+CoarseMeshLattice::EntityKey CoarseMeshLattice::entityKey(long long cell, const int* positions, int count) const {
+  EntityKey key{kNone, kNone, kNone};
+  for (int i = 0; i < count; ++i) key[i] = vertexId(cell, positions[i]);  // positions come sorted by id
+  return key;
 }
 
 void CoarseMeshLattice::pointCoordinates(long long cell, const LatticePoint& a, long long n, double* x) const {
   const int d = dim();
   int at[4];
   const int count = carrier(cell, a, at);
+  if (count >= 2 && count <= d && !placedIds_.empty() && placedResolution_ % n == 0) {
+    LatticePoint scaled = a;
+    for (int& entry : scaled) entry *= static_cast<int>(placedResolution_ / n);
+    const long long id = pointId(cell, scaled, placedResolution_);
+    const auto it = std::lower_bound(placedIds_.begin(), placedIds_.end(), id);
+    if (it != placedIds_.end() && *it == id) {
+      std::copy_n(&placedCoordinates_[d * (it - placedIds_.begin())], d, x);
+      return;
+    }
+  }
   std::fill(x, x + d, 0.0);
   for (int i = 0; i < count; ++i) {
     const double weight = static_cast<double>(a[at[i]]) / static_cast<double>(n);
     const long long vertex = part_.mesh.cells[(d + 1) * cell + at[i]];
     for (int c = 0; c < d; ++c) x[c] += weight * part_.mesh.vertices[d * vertex + c];
+  }
+}
+
+bool CoarseMeshLattice::geometryTarget(long long cell, const LatticePoint& a, int& entityDim, int& entity) const {
+  const int d = dim();
+  int at[4];
+  const int count = carrier(cell, a, at);
+  if (count < 2 || count > d) return false;
+  const EntityKey key = entityKey(cell, at, count);
+  if (count == d) {  // inside a facet
+    const auto it = facetEntity_.find(key);
+    if (it == facetEntity_.end()) return false;
+    entityDim = d - 1;
+    entity = it->second;
+    return true;
+  }
+  // Inside an edge of a tetrahedron: on its curve, or on the one surface around it.
+  if (const auto curve = edgeCurve_.find(key); curve != edgeCurve_.end()) {
+    entityDim = 1;
+    entity = curve->second;
+    return true;
+  }
+  const auto surfaces = edgeSurfaces_.find(key);
+  if (surfaces == edgeSurfaces_.end() || surfaces->second.size() != 1) return false;
+  entityDim = 2;
+  entity = surfaces->second[0];
+  return true;
+}
+
+void CoarseMeshLattice::placeOnGeometry(const std::string& path, const SimplexRefinement& refinement) {
+  const int d = dim();
+  placedIds_.clear();
+  placedCoordinates_.clear();
+  const long long n = 1LL << refinement.levels();
+  // The points to place, each once: (id, entity dimension, entity, straight coordinates).
+  std::vector<std::tuple<long long, int, int, std::array<double, 3>>> points;
+  for (long long c = 0; c < part_.mesh.numCells(); ++c)
+    for (const LatticePoint& a : refinement.points(refinement.levels())) {
+      int entityDim = 0, entity = 0;
+      if (!geometryTarget(c, a, entityDim, entity)) continue;
+      std::array<double, 3> x{0, 0, 0};
+      pointCoordinates(c, a, n, x.data());
+      points.emplace_back(pointId(c, a, n), entityDim, entity, x);
+    }
+  std::sort(points.begin(), points.end(), [](const auto& p, const auto& q) { return std::get<0>(p) < std::get<0>(q); });
+  points.erase(std::unique(points.begin(), points.end(),
+                           [](const auto& p, const auto& q) { return std::get<0>(p) == std::get<0>(q); }),
+               points.end());
+  std::vector<int> targets;  // dimension and tag per point
+  std::vector<double> straight;
+  for (const auto& [id, entityDim, entity, x] : points) {
+    targets.insert(targets.end(), {entityDim, entity});
+    straight.insert(straight.end(), x.begin(), x.end());
+  }
+  const std::vector<double> placed = closestPointsOnRoot(*comm_, path, targets, straight);
+  placedResolution_ = n;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    placedIds_.push_back(std::get<0>(points[i]));
+    placedCoordinates_.insert(placedCoordinates_.end(), &placed[3 * i], &placed[3 * i + d]);
   }
 }
 

@@ -14,6 +14,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "assembly/MeshPart.hpp"
@@ -47,12 +48,27 @@ class CoarseMeshLattice {
   // The tags of all boundaries of the global mesh, ascending.
   const std::vector<int>& boundaryTags() const { return part_.boundaryTags; }
   // Its coordinates, sum a_i x_i / n summed in increasing vertex id: the same bits in every
-  // cell that holds it, and for the same point at every resolution.
+  // cell that holds it, and for the same point at every resolution; for a point placed on
+  // the geometry (placeOnGeometry()), that place.
   void pointCoordinates(long long cell, const LatticePoint& a, long long n, double* x) const;
+
+  // Places the points of resolution 2^refinement.levels() (and so those of every coarser
+  // one) that lie inside a coarse facet or edge on the boundary of the .geo geometry at
+  // `path` onto it: the closest point of its surface, or of its curve for an edge on one
+  // (Gmsh's projection; the mesh read must carry SimplexMesh::geometryFacets). A point on
+  // an edge between two surfaces that is no geometry curve stays where it is. Rank 0 loads
+  // the geometry and places every rank's points. Collective.
+  void placeOnGeometry(const std::string& path, const SimplexRefinement& refinement);
 
  private:
   // The carrier's local vertices (cell vertex positions), sorted by global vertex id.
   int carrier(long long cell, const LatticePoint& a, int* positions) const;
+  // The geometry entity (dimension, tag) a point inside a coarse boundary facet or edge goes
+  // onto; false for any other point.
+  bool geometryTarget(long long cell, const LatticePoint& a, int& entityDim, int& entity) const;
+  using EntityKey = std::array<GlobalOrdinal, 3>;  // sorted vertex ids, padded with the largest id
+  EntityKey entityKey(long long cell, const int* positions, int count) const;
+
   GlobalOrdinal vertexId(long long cell, int position) const {
     return part_.nodeIds[part_.mesh.cells[(dim() + 1) * cell + position]];
   }
@@ -62,7 +78,16 @@ class CoarseMeshLattice {
   long long counts_[4] = {0, 0, 0, 0};  // vertices, edges, faces (3D), cells
   // Sorted global vertex ids of every boundary facet near this part, and of each of their
   // edges, with the facet's tag.
-  std::map<std::array<GlobalOrdinal, 3>, std::vector<int>> boundaryEntities_;  // padded with the largest id
+  std::map<EntityKey, std::vector<int>> boundaryEntities_;
+  // Geometry entities: of each boundary facet near this part, of each edge on a geometry
+  // curve (3D), and the surfaces of the facets around each edge (3D).
+  std::map<EntityKey, int> facetEntity_, edgeCurve_;
+  std::map<EntityKey, std::vector<int>> edgeSurfaces_;
+  // The placed points (placeOnGeometry()): ids at resolution placedResolution_, ascending,
+  // and their coordinates.
+  long long placedResolution_ = 0;
+  std::vector<long long> placedIds_;
+  std::vector<double> placedCoordinates_;
 };
 
 }  // namespace signorini::detail

@@ -89,6 +89,10 @@ void forEachArray(Part& part, Visit&& visit) {
   visit(part.nearFacets);
   visit(part.nearFacetTags);
   visit(part.entityCounts);
+  visit(part.nearGeometryFacets);
+  visit(part.nearGeometryEdges);
+  visit(part.nearGeometryFacetEntities);
+  visit(part.nearGeometryEdgeEntities);
 }
 
 }  // namespace

@@ -36,6 +36,10 @@ struct MeshPart {
   std::vector<long long> nearFacets;
   std::vector<int> nearFacetTags;
   std::vector<long long> entityCounts;
+  // The same for the coarse mesh's geometry facets and edges (SimplexMesh::geometryFacets):
+  // those with at least two vertices among the part's, with their geometry entities.
+  std::vector<long long> nearGeometryFacets, nearGeometryEdges;
+  std::vector<int> nearGeometryFacetEntities, nearGeometryEdgeEntities;
 };
 
 // The renumbered ids of a part's nodes, each named by a global `key` (the same on every rank

@@ -19,6 +19,8 @@
 #include <cstddef>
 #include <exception>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <fstream>
 #include <mutex>
 #include <new>
@@ -74,6 +76,9 @@ struct RawMesh {
   std::vector<double> nodeCoords;  // x, y, z per node
   std::vector<ElementBlock> cellBlocks;
   std::vector<BoundaryGroup> boundaryGroups;
+  // Of a meshed .geo geometry: the blocks of every entity of dimension dim - 1 and, in 3D, of
+  // every curve, with the entity's tag.
+  std::vector<std::pair<int, ElementBlock>> geometryFacetBlocks, geometryEdgeBlocks;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -185,7 +190,21 @@ std::vector<ElementBlock> domainElements(int dim) {
   return blocks;
 }
 
-RawMesh extractMesh() {
+// The elements of `type` on every entity of dimension `dim`, each block with its entity.
+std::vector<std::pair<int, ElementBlock>> entityElements(int dim, int type) {
+  gmsh::vectorpair entities;
+  gmsh::model::getEntities(entities, dim);
+  std::vector<std::pair<int, ElementBlock>> result;
+  for (const auto& entity : entities) {
+    std::vector<ElementBlock> blocks;
+    appendElements(dim, entity.second, blocks);
+    for (ElementBlock& block : blocks)
+      if (block.type == type) result.emplace_back(entity.second, std::move(block));
+  }
+  return result;
+}
+
+RawMesh extractMesh(bool withGeometry) {
   RawMesh raw;
   for (int d = 3; d >= 0 && raw.highestDimensionFound < 0; --d) {
     std::vector<int> types;
@@ -212,6 +231,10 @@ RawMesh extractMesh() {
     entities.erase(std::unique(entities.begin(), entities.end()), entities.end());
     for (int entity : entities) appendElements(raw.dim - 1, entity, boundary.blocks);
     raw.boundaryGroups.push_back(std::move(boundary));
+  }
+  if (withGeometry) {
+    raw.geometryFacetBlocks = entityElements(raw.dim - 1, simplexType(raw.dim - 1));
+    if (raw.dim == 3) raw.geometryEdgeBlocks = entityElements(1, kLineType);
   }
   return raw;
 }
@@ -370,6 +393,20 @@ void addBoundaryFacets(const RawMesh& raw, const std::vector<Tag>& used, const s
   }
 }
 
+// The elements of the blocks whose nodes are all vertices of the mesh, as vertex ids, with
+// their blocks' entities.
+void addGeometryEntities(const std::vector<std::pair<int, ElementBlock>>& blocks, const std::vector<Tag>& used,
+                         int nodesPerElement, std::vector<long long>& elements, std::vector<int>& entities) {
+  for (const auto& [entity, block] : blocks)
+    for (std::size_t e = 0; e < block.elementTags.size(); ++e) {
+      long long ids[3];
+      for (int i = 0; i < nodesPerElement; ++i) ids[i] = vertexIndex(used, block.nodeTags[nodesPerElement * e + i]);
+      if (std::find(ids, ids + nodesPerElement, -1) != ids + nodesPerElement) continue;
+      elements.insert(elements.end(), ids, ids + nodesPerElement);
+      entities.push_back(entity);
+    }
+}
+
 SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
   const int dim = raw.dim;
   const int nodesPerCell = dim + 1;
@@ -426,6 +463,8 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
   }
 
   addBoundaryFacets(raw, used, prefix, mesh);
+  addGeometryEntities(raw.geometryFacetBlocks, used, dim, mesh.geometryFacets, mesh.geometryFacetEntities);
+  addGeometryEntities(raw.geometryEdgeBlocks, used, 2, mesh.geometryEdges, mesh.geometryEdgeEntities);
   return mesh;
 }
 
@@ -456,7 +495,7 @@ SimplexMesh readInThisProcess(const std::string& path, double sizeFactor) {
         gmsh::option::setNumber("Mesh.ElementOrder", 1);
         gmsh::model::mesh::generate(gmsh::model::getDimension());
       }
-      raw = extractMesh();
+      raw = extractMesh(geometry);
       if (raw.dim == 0)
         throw InputError(prefix + "it holds no " + simplexDescription(2) + " nor " +
                          simplexDescription(3) +
@@ -484,7 +523,7 @@ SimplexMesh readInThisProcess(const std::string& path, double sizeFactor) {
   return buildMesh(raw, prefix);
 }
 
-// The child's answer through a pipe: 'M' and the mesh's arrays, or 'I' (an input error) or
+// The child's answer through a pipe: 'A' and the answer's arrays, or 'I' (an input error) or
 // 'E' (any other error) and the message.
 void writeAll(int fd, const void* data, std::size_t size) {
   const char* bytes = static_cast<const char*>(data);
@@ -526,12 +565,15 @@ bool receiveArray(int fd, std::vector<T>& values) {
 }
 
 void sendMesh(int fd, const SimplexMesh& mesh) {
-  writeAll(fd, "M", 1);
   writeAll(fd, &mesh.dim, sizeof mesh.dim);
   sendArray(fd, mesh.vertices);
   sendArray(fd, mesh.cells);
   sendArray(fd, mesh.facets);
   sendArray(fd, mesh.facetTags);
+  sendArray(fd, mesh.geometryFacets);
+  sendArray(fd, mesh.geometryFacetEntities);
+  sendArray(fd, mesh.geometryEdges);
+  sendArray(fd, mesh.geometryEdgeEntities);
   std::vector<char> names;
   std::vector<int> tags;
   for (const auto& [name, tag] : mesh.boundaryTags) {
@@ -547,7 +589,9 @@ bool receiveMesh(int fd, SimplexMesh& mesh) {
   std::vector<char> names;
   std::vector<int> tags;
   if (!readAll(fd, &mesh.dim, sizeof mesh.dim) || !receiveArray(fd, mesh.vertices) || !receiveArray(fd, mesh.cells) ||
-      !receiveArray(fd, mesh.facets) || !receiveArray(fd, mesh.facetTags) || !receiveArray(fd, names) ||
+      !receiveArray(fd, mesh.facets) || !receiveArray(fd, mesh.facetTags) || !receiveArray(fd, mesh.geometryFacets) ||
+      !receiveArray(fd, mesh.geometryFacetEntities) || !receiveArray(fd, mesh.geometryEdges) ||
+      !receiveArray(fd, mesh.geometryEdgeEntities) || !receiveArray(fd, names) ||
       !receiveArray(fd, tags))
     return false;
   std::size_t start = 0;
@@ -565,13 +609,13 @@ void sendError(int fd, char kind, const std::string& message) {
   writeAll(fd, message.data(), message.size());
 }
 
-// Runs in the child: never returns.
-[[noreturn]] void readAndSend(int fd, const std::string& path, double sizeFactor) {
+// Runs in the child: `work` writes the answer (or an error) to fd. Never returns.
+[[noreturn]] void answerInChild(int fd, const std::function<void(int)>& work) {
   // A crash ends the child quietly; the parent reports it (MPI's or a sanitizer's handlers
   // would print a report of their own).
   for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, SIG_DFL);
   try {
-    sendMesh(fd, readInThisProcess(path, sizeFactor));
+    work(fd);
   } catch (const InputError& e) {
     sendError(fd, 'I', e.what());
   } catch (const std::exception& e) {
@@ -610,24 +654,25 @@ double defaultTimeLimit(const std::string& path) {
   return 60.0 + (error ? 0.0 : static_cast<double>(bytes) / 1e6);
 }
 
-}  // namespace
-
-SimplexMesh readGmshMesh(const std::string& path, double sizeFactor, double timeLimitSeconds) {
+// Runs `work` in a forked child and `receive` on its answer ('A' and the data); the child's
+// errors, crash or silence past `limit` seconds (negative: none) are thrown here, naming
+// the file (`subject`, e.g. "Gmsh mesh file 'x.msh'") and what the child was `doing` with it.
+void answerFromChild(const std::string& subject, const std::string& doing, double limit,
+                     const std::function<void(int)>& work, const std::function<bool(int)>& receive) {
   int fds[2];
-  if (::pipe(fds) != 0) throw Error("Gmsh mesh file '" + path + "': cannot create a pipe to read it");
+  if (::pipe(fds) != 0) throw Error(subject + ": cannot create a pipe for " + doing);
   std::fflush(nullptr);
   const pid_t child = ::fork();
   if (child < 0) {
     ::close(fds[0]);
     ::close(fds[1]);
-    throw Error("Gmsh mesh file '" + path + "': cannot start the process that reads it");
+    throw Error(subject + ": cannot start the process for " + doing);
   }
   if (child == 0) {
     ::close(fds[0]);
-    readAndSend(fds[1], path, sizeFactor);
+    answerInChild(fds[1], work);
   }
   ::close(fds[1]);
-  const double limit = timeLimitSeconds < 0 ? defaultTimeLimit(path) : timeLimitSeconds;
   int status = 0;
   if (!readableWithin(fds[0], limit)) {
     ::kill(child, SIGKILL);
@@ -636,26 +681,90 @@ SimplexMesh readGmshMesh(const std::string& path, double sizeFactor, double time
     ::close(fds[0]);
     std::ostringstream seconds;
     seconds << limit;
-    throw InputError("Gmsh mesh file '" + path + "': Gmsh did not finish reading it within " + seconds.str() +
+    throw InputError(subject + ": Gmsh did not finish " + doing + " within " + seconds.str() +
                      " s; check that it is a valid Gmsh file (gmsh -check FILE)");
   }
   char kind = 0;
-  SimplexMesh mesh;
   std::string message;
   const bool answered = readAll(fds[0], &kind, 1);
-  const bool complete = answered && kind == 'M' && receiveMesh(fds[0], mesh);
-  if (answered && kind != 'M')
+  const bool complete = answered && kind == 'A' && receive(fds[0]);
+  if (answered && kind != 'A')
     for (char c; readAll(fds[0], &c, 1);) message += c;
   ::close(fds[0]);
   while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
   }
-  if (complete) return mesh;
+  if (complete) return;
   if (kind == 'I') throw InputError(message);
   if (kind == 'E') throw Error(message);
   const std::string how = WIFSIGNALED(status) ? std::string("crashed (") + strsignal(WTERMSIG(status)) + ")"
                                                : "stopped with exit status " + std::to_string(WEXITSTATUS(status));
-  throw InputError("Gmsh mesh file '" + path + "': Gmsh " + how +
-                   " while reading it; check that it is a valid Gmsh file (gmsh -check FILE)");
+  throw InputError(subject + ": Gmsh " + how + " while " + doing +
+                   "; check that it is a valid Gmsh file (gmsh -check FILE)");
+}
+
+// The closest points of the geometry's entities (dimension, tag) to the points (3 coordinates
+// each), in this process.
+std::vector<double> projectInThisProcess(const std::string& path, const std::vector<int>& dims,
+                                         const std::vector<int>& entities, const std::vector<double>& points) {
+  std::lock_guard<std::mutex> lock(gmshMutex());
+  std::vector<double> result(points.size());
+  try {
+    GmshSession session;
+    session.load(path);
+    // One call per entity, with all its points.
+    std::map<std::pair<int, int>, std::vector<std::size_t>> byEntity;
+    for (std::size_t i = 0; i < dims.size(); ++i) byEntity[{dims[i], entities[i]}].push_back(i);
+    std::vector<double> coord, closest, parametric;
+    for (const auto& [entity, indices] : byEntity) {
+      coord.clear();
+      for (std::size_t i : indices) coord.insert(coord.end(), &points[3 * i], &points[3 * i + 3]);
+      gmsh::model::getClosestPoint(entity.first, entity.second, coord, closest, parametric);
+      if (closest.size() != coord.size())
+        throw InputError("Gmsh geometry '" + path + "': no closest points on its entity of dimension " +
+                         std::to_string(entity.first) + " and tag " + std::to_string(entity.second));
+      for (std::size_t k = 0; k < indices.size(); ++k) std::copy_n(&closest[3 * k], 3, &result[3 * indices[k]]);
+    }
+  } catch (const Error&) {
+    throw;
+  } catch (const std::string& message) {  // what Gmsh 4.8 throws
+    throw InputError("Gmsh geometry '" + path + "': " + message);
+  } catch (const std::exception& e) {
+    throw InputError("Gmsh geometry '" + path + "': " + e.what());
+  }
+  return result;
+}
+
+}  // namespace
+
+SimplexMesh readGmshMesh(const std::string& path, double sizeFactor, double timeLimitSeconds) {
+  SimplexMesh mesh;
+  answerFromChild(
+      "Gmsh mesh file '" + path + "'", "reading it", timeLimitSeconds < 0 ? defaultTimeLimit(path) : timeLimitSeconds,
+      [&](int fd) {
+        const SimplexMesh read = readInThisProcess(path, sizeFactor);
+        writeAll(fd, "A", 1);
+        sendMesh(fd, read);
+      },
+      [&](int fd) { return receiveMesh(fd, mesh); });
+  return mesh;
+}
+
+std::vector<double> closestPointsOnGeometry(const std::string& path, const std::vector<int>& dims,
+                                            const std::vector<int>& entities, const std::vector<double>& points) {
+  if (dims.size() != entities.size() || points.size() != 3 * dims.size())
+    throw Error("closestPointsOnGeometry: " + std::to_string(dims.size()) + " dimensions, " +
+                std::to_string(entities.size()) + " entities, " + std::to_string(points.size()) + " coordinates");
+  if (dims.empty()) return {};
+  std::vector<double> result;
+  answerFromChild(
+      "Gmsh geometry '" + path + "'", "placing points on it", -1,
+      [&](int fd) {
+        const std::vector<double> closest = projectInThisProcess(path, dims, entities, points);
+        writeAll(fd, "A", 1);
+        sendArray(fd, closest);
+      },
+      [&](int fd) { return receiveArray(fd, result) && result.size() == points.size(); });
+  return result;
 }
 
 }  // namespace signorini

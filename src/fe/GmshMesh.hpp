@@ -3,6 +3,7 @@
 // into a SimplexMesh through the Gmsh SDK (libgmsh): the file format is parsed by Gmsh,
 // never here.
 #include <string>
+#include <vector>
 
 #include "fe/SimplexMesh.hpp"
 
@@ -41,5 +42,12 @@ namespace signorini {
 // limit is the default: a minute plus a second per MB for a .msh file, none for a .geo file
 // (meshing takes as long as the geometry asks).
 SimplexMesh readGmshMesh(const std::string& path, double sizeFactor = 1.0, double timeLimitSeconds = -1);
+
+// The closest point of the .geo geometry at `path` on entity (dims[i], entities[i]) to point i
+// (x, y, z per point; Gmsh's orthogonal projection), for each point. The geometry is loaded,
+// not meshed, in a child process as above. Throws InputError if Gmsh cannot load it or has no
+// such entity.
+std::vector<double> closestPointsOnGeometry(const std::string& path, const std::vector<int>& dims,
+                                            const std::vector<int>& entities, const std::vector<double>& points);
 
 }  // namespace signorini

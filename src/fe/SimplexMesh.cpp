@@ -22,8 +22,9 @@ void SimplexMesh::cellVertexCoordinates(long long cell, double* coords) const {
 std::size_t SimplexMesh::bytes() const {
   std::size_t names = 0;
   for (const auto& [name, value] : boundaryTags) names += sizeof(value) + sizeof(name) + name.capacity() + 32;  // 32: tree node
-  return vertices.capacity() * sizeof(double) + (cells.capacity() + facets.capacity()) * sizeof(long long) +
-         facetTags.capacity() * sizeof(int) + names;
+  return vertices.capacity() * sizeof(double) +
+         (cells.capacity() + facets.capacity() + geometryFacets.capacity() + geometryEdges.capacity()) * sizeof(long long) +
+         (facetTags.capacity() + geometryFacetEntities.capacity() + geometryEdgeEntities.capacity()) * sizeof(int) + names;
 }
 
 }  // namespace signorini

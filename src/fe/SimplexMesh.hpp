@@ -15,6 +15,12 @@ struct SimplexMesh {
   std::vector<long long> facets;            // dim * numFacets(): boundary facets (edges in 2D, triangles in 3D)
   std::vector<int> facetTags;               // one tag per boundary facet
   std::map<std::string, int> boundaryTags;  // boundary name -> tag
+  // Of a mesh Gmsh made from a .geo geometry (else empty): the geometry entity each facet on
+  // the geometry's boundary lies on (a surface in 3D, a curve in 2D; dim vertex ids per
+  // facet) and, in 3D, each edge on a geometry curve (2 vertex ids per edge), so that a
+  // refinement can place new vertices on the geometry.
+  std::vector<long long> geometryFacets, geometryEdges;
+  std::vector<int> geometryFacetEntities, geometryEdgeEntities;
 
   long long numVertices() const { return dim > 0 ? static_cast<long long>(vertices.size()) / dim : 0; }
   long long numCells() const { return dim > 0 ? static_cast<long long>(cells.size()) / (dim + 1) : 0; }

@@ -76,19 +76,19 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
       result.definition = std::move(def);
     } else {
       std::shared_ptr<SimplexMesh> mesh;
-      detail::runOnRoot(*comm, [&] {
-        std::filesystem::path file(gmsh.file);
-        if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
-        mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor));
-      });
+      std::filesystem::path file(gmsh.file);
+      if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
+      detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
       if (gmsh.refinements > 0) {
-        // Rank 0 sends each rank its part of the coarse mesh; every rank refines its own.
-        const auto lattice = std::make_shared<const detail::CoarseMeshLattice>(comm, std::move(mesh));
+        // Rank 0 sends each rank its part of the coarse mesh; every rank refines its own,
+        // its new boundary vertices placed on a .geo geometry.
+        const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh));
         result.definition = readProblemDefinition(problem, lattice->dim());
         const ProblemDefinition& def = result.definition;
         checkMemoryFits(static_cast<double>(def.dim) * lattice->numPoints(def.degree << gmsh.refinements), def.dim,
                         def.degree, !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
         const SimplexRefinement refinement(def.dim, gmsh.refinements);
+        if (file.extension() == ".geo") lattice->placeOnGeometry(file.string(), refinement);
         result.space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree);
         refinedGrid = RefinedMeshGrid::hierarchy(lattice, refinement, *result.space);
       } else {

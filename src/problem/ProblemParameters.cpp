@@ -67,8 +67,9 @@ ParameterList validProblemParameters() {
   p.set("mesh: refinements", 0,
         "A Gmsh mesh is refined uniformly this many times (triangles into 4, tetrahedra into 8) by every "
         "rank on its own part of it, the mesh read (or a .geo geometry meshed at its sizes) being the "
-        "coarsest level of a geometric multigrid with one level per refinement. New vertices are midpoints "
-        "of edges: a curved boundary keeps the facets of the mesh read",
+        "coarsest level of a geometric multigrid with one level per refinement. New vertices are edge "
+        "midpoints; those on the boundary of a .geo geometry are moved onto it (curved boundaries stay "
+        "curved), those of a .msh file stay on the facets of the mesh read",
         range(0, 10));
   p.set("element: degree", 1, "Degree of the continuous Lagrange elements", range(1, 3));
   p.set("material: young's modulus", 1.0, "Young's modulus E", range(1e-300, 1e300));

@@ -22,6 +22,7 @@
 #include "signorini/core/Error.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
+#include "support/TestProblems.hpp"
 
 namespace {
 
@@ -130,7 +131,9 @@ TEST_P(RefinedMesh, SolvesTheProblemOfTheMeshGmshRefines) {
       // The nested grids do at least as well as the mesh's own P1 grid with MueLu below.
       EXPECT_LE(a.krylovIterations, b.krylovIterations) << label;
     }
-  if (dim == 3) EXPECT_LT(difference[1][2], 0.8 * difference[1][1]);
+  if (dim == 3) {
+    EXPECT_LT(difference[1][2], 0.8 * difference[1][1]);
+  }
 }
 
 // The multigrid's interpolation between the levels is the embedding of nested P1 spaces: a
@@ -208,7 +211,7 @@ TEST_P(RefinedMesh, PassesThePatchTest) {
     ASSERT_TRUE(r.converged()) << r.message;
     auto v = r.v->getData();
     double worst = 0.0;
-    for (std::size_t i = 0; i < v.size(); ++i) {
+    for (long i = 0; i < static_cast<long>(v.size()); ++i) {
       double x[3] = {0, 0, 0};
       for (int c = 0; c < dim; ++c) x[c] = problem.qp.coordinates->getData(c)[i / dim];
       worst = std::max(worst, std::fabs(v[i] - exact(static_cast<int>(i % dim), x)));
@@ -219,6 +222,35 @@ TEST_P(RefinedMesh, PassesThePatchTest) {
 
 INSTANTIATE_TEST_SUITE_P(Dimensions, RefinedMesh, ::testing::Values(2, 3),
                          [](const auto& info) { return std::to_string(info.param) + "D"; });
+
+// A .geo geometry's curved boundary stays curved: the refinement's new vertices on it are
+// placed on the geometry (the Hertz examples' half-disk, a circle of radius 1 about (0, 1),
+// and half-ball, a sphere about (0, 0, 1)), where edge midpoints would lie inside it by
+// about h^2 / 8.
+TEST(RefinedMeshGeometry, NewBoundaryVerticesLieOnTheGeometry) {
+  auto comm = Tpetra::getDefaultComm();
+  for (const std::string name : {"half-disk-2d", "half-ball-3d"}) {
+    Teuchos::ParameterList p("Problem");
+    p.set("mesh: type", "gmsh");
+    p.set("mesh: file", name + ".geo");
+    p.set("mesh: size factor", name == "half-disk-2d" ? 4.0 : 3.0);
+    p.set("mesh: refinements", 2);
+    const AssembledProblem problem = buildProblem(p, comm, signorini::testing::sourceDir() + "/examples/hertz");
+    const DistributedSpace& ds = *problem.space;
+    const int dim = ds.dim();
+    double worst = 0.0;
+    long long count = 0;
+    for (long long node : ds.boundaryNodes(ds.mesh().tag("contact"))) {
+      const double* x = &ds.space().nodeCoordinates()[dim * node];
+      double squared = 0.0;
+      for (int c = 0; c < dim; ++c) squared += (x[c] - (c == dim - 1 ? 1.0 : 0.0)) * (x[c] - (c == dim - 1 ? 1.0 : 0.0));
+      worst = std::max(worst, std::fabs(std::sqrt(squared) - 1.0));
+      ++count;
+    }
+    EXPECT_GT(count, 0) << name;
+    EXPECT_LT(worst, 1e-9) << name;
+  }
+}
 
 // More refinements than memory holds are refused before any refinement, with the numbers.
 TEST(RefinedMeshInput, TooManyRefinementsAreRefusedBeforeRefining) {

@@ -1,0 +1,146 @@
+#!/usr/bin/python3
+"""The benchmark family's problem on the unit square / cube meshed by Gmsh against the box
+mesh of about the same size: the quartic load, the top clamped, the bottom on the rigid
+plane (doc/benchmark-family.md). Three meshes per case:
+
+  box      the family's box mesh (its nested geometric grids);
+  refined  a coarse Gmsh mesh of the .geo refined uniformly on every rank
+           (Problem/mesh: refinements), each refinement a geometric level;
+  msh      the fine mesh written by Gmsh as a .msh file and read as is (rank 0 reads and
+           partitions it; its own P1 grid, MueLu below).
+
+Each on 1 and 2 ranks (--ranks), with the contact solve and a linear solve of the same
+problem with the bottom clamped instead (no contact): setup, assembly and solve times,
+end-to-end wall time, CG iterations, multigrid setups, peak memory of the largest rank, the
+growth of rank 0's resident set during setup, and the contact solve over the linear one.
+
+    /usr/bin/python3 bench/gmsh_meshes.py [--ranks 1,2] [--cases 3d-p1,3d-p2,2d-p1,3d-p1-large]
+
+Writes bench/results/gmsh-meshes.{json,md}. The .msh files are made once by the gmsh program
+in the work directory (their meshing time is not part of any run).
+"""
+import argparse
+import json
+import os
+import subprocess
+import time
+
+from preconditioners import ENV, ROOT
+from provenance import provenance, write_results
+
+FAMILY = os.path.join(ROOT, "xml", "family")
+# name: (dimension, degree, box input, box cells, coarse size and refinements, fine .msh size or None)
+CASES = {
+    "3d-p1": (3, 1, "3d-p1-nx64.xml", 64, (0.116, 3), 0.0142),
+    "3d-p2": (3, 2, "3d-p2-nx32.xml", 32, (0.121, 2), 0.030),
+    "2d-p1": (2, 1, "2d-p1-nx1000.xml", 1000, (0.178, 5), 0.00557),
+    "3d-p1-large": (3, 1, "3d-p1-nx100.xml", 100, (0.075, 3), None),
+}
+
+
+def geometry(dim, size):
+    """A unit square or cube with the box mesh's boundary names for bottom and top."""
+    low, high = ("ymin", "ymax") if dim == 2 else ("zmin", "zmax")
+    shape = "Rectangle(1) = {0, 0, 0, 1, 1};" if dim == 2 else "Box(1) = {0, 0, 0, 1, 1, 1};"
+    entity, bottom, top = ("Surface", 1, 3) if dim == 2 else ("Volume", 5, 6)
+    group = "Curve" if dim == 2 else "Surface"
+    return (f'SetFactory("OpenCASCADE");\n{shape}\nMeshSize{{ PointsOf{{ {entity}{{1}}; }} }} = {size};\n'
+            f'Physical {group}("{low}") = {{{bottom}}};\nPhysical {group}("{high}") = {{{top}}};\n'
+            f'Physical {entity}("body") = {{1}};\n')
+
+
+def write_geometry(workdir, dim, size):
+    path = os.path.join(workdir, f"unit-{dim}d-h{size}.geo")
+    with open(path, "w") as f:
+        f.write(geometry(dim, size))
+    return path
+
+
+def fine_msh(workdir, dim, size):
+    path = os.path.join(workdir, f"unit-{dim}d-h{size}.msh")
+    if not os.path.exists(path):
+        geo = write_geometry(workdir, dim, size)
+        subprocess.run(["gmsh", f"-{dim}", geo, "-format", "msh41", "-o", path], check=True, capture_output=True)
+    return path
+
+
+def mesh_settings(case, mesh, workdir):
+    dim, degree, _, cells, (coarse, refinements), fine = CASES[case]
+    if mesh == "box":
+        return [f"Problem/mesh: cells={{{cells}}}"]
+    if mesh == "refined":
+        return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={write_geometry(workdir, dim, coarse)}",
+                f"Problem/mesh: refinements={refinements}"]
+    return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={fine_msh(workdir, dim, fine)}"]
+
+
+def run(case, mesh, ranks, linear, workdir):
+    dim, degree, box_input, *_ = CASES[case]
+    out = os.path.join(workdir, f"{case}-{mesh}-np{ranks}-{'linear' if linear else 'contact'}")
+    settings = mesh_settings(case, mesh, workdir) + [f"Problem/element: degree={degree}", "Output/write solution=false",
+                                                     "Output/write contact samples=false"]
+    bottom, top = ("ymin", "ymax") if dim == 2 else ("zmin", "zmax")
+    if linear:  # the bottom clamped like the top, no contact
+        settings += ["Problem/Contact/boundary="] + [f"Problem/Dirichlet/{bottom}/displacement: {a}=0"
+                                                     for a in "xyz"[:dim]]
+    cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build", "bin", "signorini"),
+           os.path.join(FAMILY, box_input), "--output", out]
+    for assignment in settings:
+        cmd += ["--set", assignment]
+    start = time.monotonic()
+    done = subprocess.run(cmd, env=ENV, capture_output=True, text=True, check=False)
+    wall = time.monotonic() - start
+    if done.returncode != 0:
+        raise SystemExit(f"gmsh_meshes: {' '.join(cmd)} failed:\n{done.stdout[-2000:]}{done.stderr[-2000:]}")
+    with open(os.path.join(out, "summary.json")) as f:
+        s = json.load(f)
+    return {"case": case, "mesh": mesh, "ranks": ranks, "solve": "linear" if linear else "contact",
+            "status": s["status"], "n": s["n"], "m": s["m"], "objective": s["objective"],
+            "cg_iterations": s["krylov_iterations"], "newton_systems": s["newton_steps"],
+            "multigrid_setups": s["preconditioner_setups"], "setup_seconds": s["time"]["setup"],
+            "assembly_seconds": s["time"]["assembly"], "solve_seconds": s["time"]["solve"], "wall_seconds": wall,
+            "peak_mib_max_rank": s["memory_mib"]["max_rank"], "rank0_setup_mib": s["setup_peak_rss_mib"][0]}
+
+
+def table(runs):
+    linear = {(r["case"], r["mesh"], r["ranks"]): r for r in runs if r["solve"] == "linear"}
+    box = {(r["case"], r["ranks"]): r for r in runs if r["solve"] == "contact" and r["mesh"] == "box"}
+    lines = ["| case | mesh | ranks | n | setup [s] | assembly [s] | solve [s] | wall [s] | wall / box | CG | CG / box "
+             "| multigrid setups | peak MiB (max rank) | rank 0 setup MiB | linear CG | contact / linear solve |",
+             "|" + "---|" * 16]
+    for r in runs:
+        if r["solve"] != "contact":
+            continue
+        b, lin = box[(r["case"], r["ranks"])], linear.get((r["case"], r["mesh"], r["ranks"]))
+        lines.append(
+            f"| {r['case']} | {r['mesh']} | {r['ranks']} | {r['n']} | {r['setup_seconds']:.2f} "
+            f"| {r['assembly_seconds']:.2f} | {r['solve_seconds']:.2f} | {r['wall_seconds']:.1f} "
+            f"| {r['wall_seconds'] / b['wall_seconds']:.2f} | {r['cg_iterations']} "
+            f"| {r['cg_iterations'] / b['cg_iterations']:.2f} | {r['multigrid_setups']} | {r['peak_mib_max_rank']:.0f} "
+            f"| {r['rank0_setup_mib']:.0f} | {lin['cg_iterations'] if lin else '-'} "
+            f"| {r['solve_seconds'] / lin['solve_seconds'] if lin else float('nan'):.1f} |")
+    return "\n".join(lines) + "\n"
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--ranks", default="1,2")
+    parser.add_argument("--cases", default=",".join(CASES))
+    parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "gmsh-meshes"))
+    args = parser.parse_args()
+    ranks = [int(r) for r in args.ranks.split(",")]
+    os.makedirs(args.workdir, exist_ok=True)
+    made = provenance(max(ranks))  # before any result file is rewritten
+    runs = []
+    for case in args.cases.split(","):
+        meshes = ["box", "refined"] + (["msh"] if CASES[case][5] else [])
+        for np in ranks:
+            for mesh in meshes:
+                for linear in (False, True):
+                    runs.append(run(case, mesh, np, linear, args.workdir))
+                    print(json.dumps(runs[-1]), flush=True)
+    write_results("gmsh-meshes", made, runs, table(runs))
+
+
+if __name__ == "__main__":
+    main()
