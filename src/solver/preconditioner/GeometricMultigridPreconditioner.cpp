@@ -226,6 +226,22 @@ bool addInPattern(CrsMatrix& A, const CrsMatrix& change) {
   return onEveryRank(*A.getComm(), fits);
 }
 
+// The Chebyshev parameters read here and by Ifpack2, in the types they are read with: a whole
+// number given for a real parameter ("ratio eigenvalue" = 20) is that number; any other type
+// is an InputError naming the parameter, where Teuchos would stop inside Ifpack2.
+void checkSmootherTypes(Teuchos::ParameterList& smoother) {
+  const std::string where = "Solver/Preconditioner/Ifpack2/";
+  for (const char* name : {"chebyshev: ratio eigenvalue", "chebyshev: boost factor", "chebyshev: max eigenvalue",
+                           "chebyshev: min eigenvalue"}) {
+    if (smoother.isType<int>(name)) smoother.set(name, static_cast<double>(smoother.get<int>(name)));
+    if (smoother.isParameter(name) && !smoother.isType<double>(name))
+      throw InputError(where + name + ": must be a number");
+  }
+  for (const char* name : {"chebyshev: degree", "chebyshev: eigenvalue max iterations"})
+    if (smoother.isParameter(name) && !smoother.isType<int>(name))
+      throw InputError(where + name + ": must be a whole number");
+}
+
 }  // namespace
 
 Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParameters() {
@@ -247,6 +263,7 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
     const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps)
     : smoother_(defaultSmootherParameters()), eigenvalueUpdateSteps_(eigenvalueUpdateSteps) {
   smoother_.setParameters(smoother);
+  checkSmootherTypes(smoother_);
   // One step is the Rayleigh quotient of the start: at 2D nx = 800 CG then did not converge.
   if (eigenvalueUpdateSteps == 1 || eigenvalueUpdateSteps == 2 || eigenvalueUpdateSteps < 0)
     throw Error("GeometricMultigridPreconditioner: eigenvalue update steps must be 0 (fresh estimates) or at "

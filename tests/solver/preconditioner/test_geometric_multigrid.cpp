@@ -435,6 +435,30 @@ TEST(GeometricMultigrid, RejectsAGridTheMeshDoesNotRefine) {
                InputError);
 }
 
+// A whole number given for a real smoother parameter (as --set "...ratio eigenvalue=20"
+// gives) is that number; a word is an input error naming the parameter, not a failure
+// inside Ifpack2.
+TEST(GeometricMultigrid, SmootherParametersAreCheckedForTheirTypes) {
+  const AssembledProblem problem = box(2, 8, 1);
+  const CrsMatrix& Q = *problem.qp.Qmatrix();
+  const auto make = [&](const Teuchos::ParameterList& smoother) {
+    GeometricMultigridPreconditioner p(*problem.qp.grid, Q.getRowMap(), prescribedRows(Q), *problem.qp.coordinates, 2,
+                                       1, 0, smoother, Teuchos::ParameterList(), 3);
+    p.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
+  };
+  Teuchos::ParameterList whole;
+  whole.set("chebyshev: ratio eigenvalue", 20);
+  EXPECT_NO_THROW(make(whole));
+  Teuchos::ParameterList word;
+  word.set("chebyshev: boost factor", "large");
+  try {
+    make(word);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("chebyshev: boost factor"), std::string::npos) << e.what();
+  }
+}
+
 // The interior point solve reaches the same solution with either hierarchy.
 // The same solution with either hierarchy. By default the geometric levels are rebuilt at
 // every Newton step (one setup per main iteration and one for the start), MueLu's hierarchy
