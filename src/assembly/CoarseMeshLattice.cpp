@@ -232,6 +232,7 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
     : comm_(comm) {
   const int size = comm_->getSize();
   std::vector<MeshPart> parts;
+  long long serialBytes = 0;
   runOnRoot(*comm_, [&] {
     if (!mesh) throw InputError("coarse mesh: rank 0 has no mesh");
     mesh = std::make_shared<const SimplexMesh>(withShortestDiagonals(*mesh));
@@ -241,7 +242,10 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
     Entities faces;
     if (mesh->dim == 3) faces = numberEntities(*mesh, partition, 3);
     addEntities(*mesh, partition, edges, mesh->dim == 3 ? &faces : nullptr, parts);
+    serialBytes = static_cast<long long>(mesh->bytes() + partition.bytes());
   });
+  Teuchos::broadcast(*comm_, 0, 1, &serialBytes);
+  serialPhaseBytes_ = static_cast<std::size_t>(serialBytes);
   if (comm_->getRank() == 0) {
     for (int r = 1; r < size; ++r) {
       sendMeshPart(*comm_, parts[r], r);

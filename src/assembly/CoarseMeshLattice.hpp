@@ -12,6 +12,7 @@
 // by its vertices' global ids, so that every rank holding the entity numbers it alike. Its
 // owner is the entity's: the lowest rank among the cells around it, as for any node.
 #include <array>
+#include <cstddef>
 #include <map>
 #include <memory>
 #include <string>
@@ -36,6 +37,9 @@ class CoarseMeshLattice {
   const SimplexMesh& mesh() const { return part_.mesh; }
   long long globalCell(long long cell) const { return part_.globalCells[cell]; }
   long long numGlobalCells() const { return counts_[3]; }
+  // What the serial phase cost rank 0: heap bytes of the coarse mesh and its partition, the
+  // same on every rank.
+  std::size_t serialPhaseBytes() const { return serialPhaseBytes_; }
 
   // Global number of lattice points of resolution n.
   long long numPoints(long long n) const;
@@ -76,6 +80,7 @@ class CoarseMeshLattice {
   RCP<const Comm> comm_;
   MeshPart part_;
   long long counts_[4] = {0, 0, 0, 0};  // vertices, edges, faces (3D), cells
+  std::size_t serialPhaseBytes_ = 0;
   // Sorted global vertex ids of every boundary facet near this part, and of each of their
   // edges, with the facet's tag.
   std::map<EntityKey, std::vector<int>> boundaryEntities_;

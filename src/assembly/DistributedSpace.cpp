@@ -110,6 +110,7 @@ DistributedSpace::DistributedSpace(const detail::CoarseMeshLattice& lattice, con
   detail::DistributedRefinedPart part = detail::makeRefinedMeshPart(lattice, refinement, degree);
   numGlobalNodes_ = part.numGlobalNodes;
   numGlobalCells_ = part.numGlobalCells;
+  serialPhaseBytes_ = lattice.serialPhaseBytes();
   adopt(std::move(part.part), degree);
 }
 

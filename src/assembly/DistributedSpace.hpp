@@ -75,7 +75,8 @@ class DistributedSpace {
   const std::vector<long long>& overlapSpaceNodes() const { return overlapSpaceNodes_; }
 
   // What the serial phase cost rank 0: heap bytes of the global mesh, the global space and
-  // the partition arrays (from their capacities), the same on every rank; 0 without one.
+  // the partition arrays (from their capacities; of a refined mesh, the coarse mesh and its
+  // partition), the same on every rank; 0 without one.
   std::size_t serialPhaseBytes() const { return serialPhaseBytes_; }
 
  private:
