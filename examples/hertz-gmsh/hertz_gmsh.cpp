@@ -14,8 +14,10 @@
 //
 // Build against an installed Signorini and run on 2 ranks:
 //   cmake -S . -B build -DCMAKE_PREFIX_PATH=<prefix> && cmake --build build
-//   mpirun -np 2 build/hertz_gmsh <signorini source>/examples/hertz/half-disk-2d.geo [size factor]
-// A size factor above 1 coarsens the mesh, below 1 refines it.
+//   mpirun -np 2 build/hertz_gmsh <signorini source>/examples/hertz/half-disk-2d.geo [size factor] [refinements]
+// A size factor above 1 coarsens the mesh, below 1 refines it. With refinements r > 0 Gmsh's
+// mesh is the coarsest of r + 1 levels: every rank refines its part r times, the new vertices
+// on the circle placed on it, and each level is a level of the geometric multigrid.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -34,12 +36,13 @@ namespace {
 
 constexpr double kRadius = 1.0, kYoung = 1.0, kPoisson = 0.3, kPush = 0.01;
 
-Teuchos::ParameterList halfDiskProblem(const std::string& geoFile, double sizeFactor) {
+Teuchos::ParameterList halfDiskProblem(const std::string& geoFile, double sizeFactor, int refinements) {
   Teuchos::ParameterList problem("Problem");
   problem.set("name", "hertz-gmsh");
   problem.set("mesh: type", "gmsh");
   problem.set("mesh: file", geoFile);
   problem.set("mesh: size factor", sizeFactor);
+  problem.set("mesh: refinements", refinements);
   problem.set("element: degree", 2);
   problem.set("material: young's modulus", kYoung);
   problem.set("material: poisson ratio", kPoisson);
@@ -60,13 +63,14 @@ int main(int argc, char** argv) {
   const RCP<const Comm> comm = Tpetra::getDefaultComm();
   const bool root = comm->getRank() == 0;
   if (argc < 2) {
-    if (root) std::fprintf(stderr, "usage: hertz_gmsh <half-disk-2d.geo> [size factor]\n");
+    if (root) std::fprintf(stderr, "usage: hertz_gmsh <half-disk-2d.geo> [size factor] [refinements]\n");
     return 2;
   }
   const double sizeFactor = argc > 2 ? std::atof(argv[2]) : 1.0;
+  const int refinements = argc > 3 ? std::atoi(argv[3]) : 0;
 
   try {
-    AssembledProblem assembled = buildProblem(halfDiskProblem(argv[1], sizeFactor), comm);
+    AssembledProblem assembled = buildProblem(halfDiskProblem(argv[1], sizeFactor, refinements), comm);
     const SolveResult result = InteriorPointSolver().solve(assembled.qp);
     if (!result.converged()) {
       if (root) std::fprintf(stderr, "hertz_gmsh: %s\n", result.message.c_str());

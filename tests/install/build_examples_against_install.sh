@@ -37,3 +37,4 @@ mpiexec -np 2 "$work/paper-pipeline/paper_pipeline" "$source_dir/xml/paper/H.xml
 test -s "$work/paper-pipeline/output/solution.pvtu"
 build_example hertz-gmsh
 mpiexec -np 2 "$work/hertz-gmsh/hertz_gmsh" "$source_dir/examples/hertz/half-disk-2d.geo" 0.5
+mpiexec -np 2 "$work/hertz-gmsh/hertz_gmsh" "$source_dir/examples/hertz/half-disk-2d.geo" 1 1
