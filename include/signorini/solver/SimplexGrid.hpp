@@ -1,0 +1,50 @@
+#pragma once
+/// \file
+/// A GeometricGrid made from any simplex mesh a caller has: the P1 grid of its triangles or
+/// tetrahedra, for the geometric multigrid's P_k -> P1 step on a QP assembled by another
+/// finite element code (ContactQP::grid). Below it MueLu takes over.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "signorini/core/TpetraTypes.hpp"
+#include "signorini/solver/GeometricGrid.hpp"
+
+namespace signorini {
+
+class SimplexGrid : public GeometricGrid {
+ public:
+  /// Collective. Each rank gives the cells it holds: `cells` has dim + 1 vertex ids per cell
+  /// (any global ids, the same on every rank for the same vertex), `vertexIds` the distinct
+  /// vertices of these cells and `coordinates` theirs (dim per vertex, in vertexIds' order).
+  /// The cells of a rank must hold the nodes of the QP's rows it owns (the cells it assembled).
+  /// Throws InputError for a dimension other than 2 or 3, arrays of sizes that do not fit, a
+  /// cell naming a vertex not in vertexIds, or a degenerate cell.
+  SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long long> vertexIds, std::vector<double> coordinates,
+              std::vector<long long> cells);
+  ~SimplexGrid() override;
+
+  int dimension() const override { return dim_; }
+  /// The number of distinct vertices over all ranks.
+  long long numVertices() const override { return numVertices_; }
+  /// For a vertex of this rank's cells.
+  void vertexCoordinates(long long vertex, double* x) const override;
+  /// The vertex within 1e-10 of the local cell size of x, among this rank's, or -1.
+  long long vertexAt(const double* x) const override;
+  /// x in one of this rank's cells (within 1e-10 of its size): that cell's vertices and P1
+  /// weights. Throws Error for a point in none.
+  void interpolation(const double* x, long long* vertices, double* weights) const override;
+  std::shared_ptr<const GeometricGrid> coarser() const override { return nullptr; }
+  std::string description() const override;
+
+ private:
+  struct Buckets;
+  int dim_;
+  long long numVertices_ = 0, numCells_ = 0;
+  std::vector<long long> vertexIds_;  // sorted
+  std::vector<double> coordinates_;   // dim_ per vertex, in vertexIds_ order
+  std::vector<long long> cells_;      // dim_ + 1 local vertex indices per cell
+  std::unique_ptr<Buckets> buckets_;  // cells and vertices by place
+};
+
+}  // namespace signorini

@@ -1,0 +1,79 @@
+// SimplexGrid: the P1 grid of a caller's own simplex mesh. Made from the cells each rank
+// assembled, it gives a P_k QP the same P_k -> P1 step as the mesh's own grid
+// (MeshVertexGrid, which the problem builder makes from its distributed space): the same
+// optimal value in the same Krylov iterations.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <string>
+
+#include <Tpetra_Core.hpp>
+
+#include "assembly/MeshVertexGrid.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+#include "signorini/solver/SimplexGrid.hpp"
+#include "support/TestProblems.hpp"
+
+namespace {
+
+using namespace signorini;
+
+// The grid of this rank's cells of the space's mesh, as another code would give it: global
+// vertex ids (the vertices' node ids), their coordinates, the cells.
+std::shared_ptr<const SimplexGrid> gridOf(const DistributedSpace& ds) {
+  const SimplexMesh& mesh = ds.mesh();
+  std::vector<long long> ids, cells;
+  for (long long v = 0; v < mesh.numVertices(); ++v) ids.push_back(ds.globalNode(v));
+  for (long long vertex : mesh.cells) cells.push_back(ds.globalNode(vertex));
+  return std::make_shared<SimplexGrid>(ds.comm(), ds.dim(), ids, mesh.vertices, cells);
+}
+
+TEST(SimplexGrid, GivesAPkSpaceThePOneStepOfItsMesh) {
+  for (const std::string name : {"paper/B", "paper/H"})
+    for (int degree : {2, 3}) {
+      const std::string label = name + " P" + std::to_string(degree);
+      Teuchos::ParameterList problem = signorini::testing::assembledShippedProblem(name);
+      problem.set("element: degree", degree);
+      AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+      p.qp.grid = std::make_shared<MeshVertexGrid>(p.space);
+      const SolveResult own = InteriorPointSolver().solve(p.qp);
+      const auto grid = gridOf(*p.space);
+      EXPECT_EQ(grid->numVertices(), p.qp.grid->numVertices()) << label;
+      p.qp.grid = grid;
+      const SolveResult given = InteriorPointSolver().solve(p.qp);
+      ASSERT_TRUE(own.converged() && given.converged()) << label;
+      EXPECT_NEAR(given.objective, own.objective, 1e-10 * std::fabs(own.objective)) << label;
+      EXPECT_EQ(given.krylovIterations, own.krylovIterations) << label;
+    }
+}
+
+TEST(SimplexGrid, LocatesPointsAndVertices) {
+  auto comm = Tpetra::getDefaultComm();
+  // Two triangles of the unit square, vertices 10, 11, 12, 13 counter-clockwise from (0, 0).
+  const SimplexGrid grid(comm, 2, {13, 10, 11, 12}, {0, 1, 0, 0, 1, 0, 1, 1}, {10, 11, 12, 10, 12, 13});
+  EXPECT_EQ(grid.numVertices(), 4);
+  const double corner[2] = {1, 1}, inside[2] = {0.75, 0.25};
+  EXPECT_EQ(grid.vertexAt(corner), 12);
+  EXPECT_EQ(grid.vertexAt(inside), -1);
+  long long vertices[3];
+  double weights[3];
+  grid.interpolation(inside, vertices, weights);  // in (10, 11, 12): 1 - x, x - y, y
+  EXPECT_EQ(vertices[0], 10);
+  EXPECT_NEAR(weights[0], 0.25, 1e-14);
+  EXPECT_NEAR(weights[1], 0.5, 1e-14);
+  EXPECT_NEAR(weights[2], 0.25, 1e-14);
+  const double outside[2] = {2, 2};
+  EXPECT_THROW(grid.interpolation(outside, vertices, weights), Error);
+}
+
+TEST(SimplexGrid, RefusesInconsistentInput) {
+  auto comm = Tpetra::getDefaultComm();
+  EXPECT_THROW(SimplexGrid(comm, 2, {0, 1, 2}, {0, 0, 1, 0}, {0, 1, 2}), InputError);       // coordinates
+  EXPECT_THROW(SimplexGrid(comm, 2, {0, 1, 2}, {0, 0, 1, 0, 0, 1}, {0, 1, 3}), InputError);  // unknown vertex
+  EXPECT_THROW(SimplexGrid(comm, 2, {0, 1, 2}, {0, 0, 1, 0, 2, 0}, {0, 1, 2}), InputError);  // flat cell
+  EXPECT_THROW(SimplexGrid(comm, 4, {}, {}, {}), InputError);
+}
+
+}  // namespace
