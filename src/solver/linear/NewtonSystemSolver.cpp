@@ -88,7 +88,8 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   prec.set("hierarchy", "auto",
            "Multigrid levels: \"geometric\" (P_k to P1 on the same mesh; on box meshes then grids with half the "
            "boxes per direction; Galerkin coarse matrices, Chebyshev smoothing, a direct solve or MueLu below); "
-           "\"algebraic\": MueLu alone; \"auto\": geometric on box meshes and for degrees 2 and 3",
+           "\"algebraic\": MueLu alone; \"auto\": geometric where the QP has a grid (box meshes, refined Gmsh "
+           "meshes, degrees 2 and 3, a grid given by the caller)",
            choices<Hierarchy>({{"auto", Hierarchy::Auto},
                                {"algebraic", Hierarchy::Algebraic},
                                {"geometric", Hierarchy::Geometric}},
@@ -156,7 +157,9 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   const bool haveGrid = qp.grid && !qp.coordinates.is_null();
   if (hierarchy == Hierarchy::Geometric || (hierarchy == Hierarchy::Auto && haveGrid)) {
     if (!haveGrid)
-      throw InputError("Preconditioner/hierarchy \"geometric\" needs a box mesh (Problem/mesh: type \"box\") or "
+      throw InputError("Preconditioner/hierarchy \"geometric\" needs a grid: ContactQP::grid (a GeometricGrid, "
+                       "e.g. a signorini::SimplexGrid of the caller's mesh) and ContactQP::coordinates; the problem "
+                       "builder gives one for a box mesh, a refined Gmsh mesh (Problem/mesh: refinements) or "
                        "a degree of 2 or 3");
     // Without Q assembled the fine level cannot be factored: the P_k -> P1 level is taken
     // however few unknowns the P1 grid has.
