@@ -27,6 +27,7 @@
 #include "core/ParameterValidation.hpp"
 #include "core/RootTask.hpp"
 #include "driver/HugePages.hpp"
+#include "io/QPCells.hpp"
 #include "io/RunSummary.hpp"
 #include "io/XmlEscape.hpp"
 #include "signorini/assembly/ContactPressure.hpp"
@@ -426,7 +427,9 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
 
   if (!cl.exportQp.empty()) {
     writeQP(problem.qp, cl.exportQp);
-    if (root) out << "Exported Q, b, A, d, coords to " << cl.exportQp << "/\n";
+    // A P2/P3 space's mesh, for the P_k -> P1 step of a run on these files.
+    if (def.degree > 1) detail::writeCells(*problem.space, cl.exportQp);
+    if (root) out << "Exported Q, b, A, d, coords" << (def.degree > 1 ? ", cells" : "") << " to " << cl.exportQp << "/\n";
   }
 
   RunSummary summary;

@@ -1,9 +1,14 @@
 #include "signorini/io/QPFiles.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include <MatrixMarket_Tpetra.hpp>
 #include <Teuchos_CommHelpers.hpp>
@@ -13,7 +18,9 @@
 #include <Tpetra_Vector.hpp>
 
 #include "core/RootTask.hpp"
+#include "io/QPCells.hpp"
 #include "signorini/core/Error.hpp"
+#include "signorini/solver/SimplexGrid.hpp"
 
 namespace signorini {
 namespace {
@@ -124,6 +131,79 @@ RCP<const Map> constraintsWithTheirNodes(const CrsMatrix& A, const Map& unknowns
   return rcp(new Map(rows.getGlobalNumElements(), mine(), 0, A.getComm()));
 }
 
+// A copy of `v` on every rank. Collective.
+RCP<MultiVector> everywhere(const MultiVector& v) {
+  const RCP<const Map> all = rcp(new Map(v.getGlobalLength(), 0, v.getMap()->getComm(), Tpetra::LocallyReplicated));
+  auto copy = rcp(new MultiVector(all, v.getNumVectors()));
+  copy->doImport(v, Import(v.getMap(), all), Tpetra::INSERT);
+  return copy;
+}
+
+// The P1 grid of cells.mtx (dim + 1 node numbers per cell), if the directory has one and its
+// cells' vertices are fewer than the nodes (a P2 or P3 space; the grid of a P1 space would be
+// the space itself). Every rank reads all cells and node coordinates, finds the cells that
+// hold its nodes, and keeps only those. Collective.
+std::shared_ptr<const GeometricGrid> cellGrid(const std::string& path, const MultiVector& coordinates, int dim) {
+  const RCP<const Comm> comm = coordinates.getMap()->getComm();
+  int present = 0;
+  detail::runOnRoot(*comm, [&] { present = std::filesystem::exists(path); });
+  Teuchos::broadcast(*comm, 0, 1, &present);
+  if (!present) return nullptr;
+  RCP<const Map> uniform;
+  const RCP<MultiVector> read = readOrRefuse(path, [&] { return Reader::readDenseFile(path, comm, uniform); });
+  if (static_cast<int>(read->getNumVectors()) != dim + 1)
+    throw InputError(path + ": " + std::to_string(read->getNumVectors()) + " columns; a cell of coords.mtx's " +
+                     std::to_string(dim) + "D nodes has " + std::to_string(dim + 1) + " vertices");
+  const RCP<MultiVector> allCells = everywhere(*read), allCoordinates = everywhere(coordinates);
+  const long long numNodes = static_cast<long long>(allCoordinates->getLocalLength());
+  std::vector<long long> cells, vertices;
+  for (std::size_t c = 0; c < allCells->getLocalLength(); ++c)
+    for (int k = 0; k <= dim; ++k) {
+      const double node = allCells->getData(k)[c];
+      if (node != std::floor(node) || node < 0 || node >= static_cast<double>(numNodes))
+        throw InputError(path + ": row " + std::to_string(c + 1) + " names node " + std::to_string(node) +
+                         "; nodes are numbered 0 to " + std::to_string(numNodes - 1) + " (coords.mtx's rows less 1)");
+      cells.push_back(static_cast<long long>(node));
+    }
+  vertices = cells;
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  if (static_cast<long long>(vertices.size()) == numNodes) return nullptr;
+  const auto coordinatesOf = [&](const std::vector<long long>& nodes) {
+    std::vector<double> x;
+    for (long long node : nodes)
+      for (int k = 0; k < dim; ++k) x.push_back(allCoordinates->getData(k)[node]);
+    return x;
+  };
+  // The cells that hold this rank's nodes, found by the grid of all cells.
+  std::vector<long long> mine;
+  {
+    const SimplexGrid all(comm, dim, vertices, coordinatesOf(vertices), cells);
+    std::map<std::vector<long long>, long long> cellOf;  // sorted vertices -> cell
+    for (std::size_t c = 0; c < cells.size() / (dim + 1); ++c) {
+      std::vector<long long> key(cells.begin() + (dim + 1) * c, cells.begin() + (dim + 1) * (c + 1));
+      std::sort(key.begin(), key.end());
+      cellOf[key] = static_cast<long long>(c);
+    }
+    std::vector<char> taken(cells.size() / (dim + 1), 0);
+    long long holding[4];
+    double x[3], weights[4];
+    for (std::size_t i = 0; i < coordinates.getLocalLength(); ++i) {
+      for (int k = 0; k < dim; ++k) x[k] = coordinates.getData(k)[i];
+      all.interpolation(x, holding, weights);
+      std::vector<long long> key(holding, holding + dim + 1);
+      std::sort(key.begin(), key.end());
+      const long long c = cellOf.at(key);
+      if (!taken[c]) mine.insert(mine.end(), cells.begin() + (dim + 1) * c, cells.begin() + (dim + 1) * (c + 1));
+      taken[c] = 1;
+    }
+  }
+  std::vector<long long> myVertices = mine;
+  std::sort(myVertices.begin(), myVertices.end());
+  myVertices.erase(std::unique(myVertices.begin(), myVertices.end()), myVertices.end());
+  return std::make_shared<SimplexGrid>(comm, dim, myVertices, coordinatesOf(myVertices), mine);
+}
+
 }  // namespace
 
 void writeQP(const ContactQP& qp, const std::string& directory) {
@@ -144,6 +224,23 @@ void writeQP(const ContactQP& qp, const std::string& directory) {
   Writer::writeDenseFile(directory + "/d.mtx", qp.d, "d", "contact gaps");
   Writer::writeDenseFile(directory + "/coords.mtx", qp.coordinates, "coords",
                          "node coordinates; DOF dim*node+c is component c of node node");
+}
+
+void detail::writeCells(const DistributedSpace& space, const std::string& directory) {
+  const SimplexMesh& mesh = space.mesh();
+  const int dim = space.dim();
+  std::vector<GlobalOrdinal> ids;
+  for (long long c = 0; c < mesh.numCells(); ++c) ids.push_back(space.globalCell(c));
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  const RCP<const Map> cellMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ids), 0, space.comm()));
+  auto cells = rcp(new MultiVector(cellMap, dim + 1));
+  for (int k = 0; k <= dim; ++k) {
+    auto column = cells->getDataNonConst(k);
+    for (long long c = 0; c < mesh.numCells(); ++c)
+      column[c] = static_cast<double>(space.globalNode(mesh.cells[(dim + 1) * c + k]));
+  }
+  Writer::writeDenseFile(directory + "/cells.mtx", cells, "cells",
+                         "P1 cells of the mesh: the node numbers (from 0) of each cell's vertices");
 }
 
 ContactQP readQP(const std::string& directory, const RCP<const Comm>& comm) {
@@ -179,6 +276,7 @@ ContactQP readQP(const std::string& directory, const RCP<const Comm>& comm) {
   d->doImport(*evenD, move, Tpetra::INSERT);
   qp.A = A;
   qp.d = d;
+  qp.grid = cellGrid(file("cells.mtx"), *qp.coordinates, qp.blockSize);
   return qp;
 }
 

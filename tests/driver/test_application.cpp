@@ -339,6 +339,29 @@ TEST(Application, ExportedQPSolvesToTheSameOptimum) {
   EXPECT_FALSE(std::filesystem::exists(dir + "/imported/solution.pvtu"));
 }
 
+// A P2 problem's export carries its mesh's cells (cells.mtx): the run on the files takes the
+// same P2 -> P1 step as the direct run, so the same iterations, Krylov ones included.
+TEST(Application, ExportedP2QPKeepsItsMultigridStep) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string dir = scratchDirectory("app-qp-p2", *comm);
+  CommandLine exporting;
+  exporting.input = sourceDir() + "/examples/hertz/half-disk-2d.xml";
+  exporting.output = dir + "/direct";
+  exporting.exportQp = dir + "/qp";
+  exporting.overrides = {"Problem/element: degree=2", "Problem/mesh: size factor=3",
+                         "Output/write solution=false", "Output/write contact samples=false"};
+  std::ostringstream log;
+  const SolveResult direct = runApplication(exporting, comm, log);
+  CommandLine importing;
+  importing.qp = dir + "/qp";
+  importing.output = dir + "/imported";
+  const SolveResult imported = runApplication(importing, comm, log);
+  ASSERT_TRUE(direct.converged() && imported.converged()) << imported.message;
+  EXPECT_LT(std::abs(direct.objective - imported.objective), 1e-10 * std::abs(direct.objective));
+  EXPECT_EQ(imported.outerIterations, direct.outerIterations);
+  EXPECT_EQ(imported.krylovIterations, direct.krylovIterations);
+}
+
 TEST(Application, QPDirectoryAndExportExcludeEachOther) {
   const char* argv[] = {"signorini", "--qp", "a", "--export-qp", "b"};
   EXPECT_NE(inputErrorOf([&] { CommandLine::parse(5, argv); }).find("exclude each other"), std::string::npos);

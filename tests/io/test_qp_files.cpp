@@ -120,5 +120,20 @@ TEST(QPFiles, MissingOrInconsistentFilesAreNamed) {
   EXPECT_NE(message.find("A.mtx: 11 x 242, expected 12 x 242"), std::string::npos) << message;
 }
 
+// cells.mtx is optional; one that cannot be the mesh of coords.mtx's nodes is refused.
+TEST(QPFiles, CellsMustFitTheNodes) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string dir = scratch("cells", *comm);
+  written("M", dir);  // 2D: three vertices per cell
+  if (comm->getRank() == 0)
+    std::ofstream(dir + "/cells.mtx") << "%%MatrixMarket matrix array real general\n1 2\n0\n1\n";
+  comm->barrier();
+  EXPECT_NE(readError(dir).find("cells.mtx: 2 columns"), std::string::npos) << readError(dir);
+  if (comm->getRank() == 0)
+    std::ofstream(dir + "/cells.mtx") << "%%MatrixMarket matrix array real general\n1 3\n0\n1\n100000\n";
+  comm->barrier();
+  EXPECT_NE(readError(dir).find("names node 100000"), std::string::npos) << readError(dir);
+}
+
 }  // namespace
 }  // namespace signorini

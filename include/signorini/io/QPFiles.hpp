@@ -20,8 +20,10 @@ void writeQP(const ContactQP& qp, const std::string& directory);
 /// an equal share of them on every rank, so that a node's DOFs stay together (as MueLu and
 /// the rigid body modes need), and each constraint goes to the rank of its row's first
 /// unknown (a nodal constraint then lives with its node); the block size is the
-/// number of columns of coords.mtx. Collective. Throws InputError naming the file and what is
-/// wrong (missing, not Matrix Market, sizes that disagree).
+/// number of columns of coords.mtx. With an optional cells.mtx (P1 cells of the mesh, node
+/// numbers of their vertices) for a P2/P3 space, ContactQP::grid is their SimplexGrid.
+/// Collective. Throws InputError naming the file and what is wrong (missing, not Matrix
+/// Market, sizes that disagree, cells naming nodes that do not exist).
 ContactQP readQP(const std::string& directory, const RCP<const Comm>& comm);
 
 }  // namespace signorini
