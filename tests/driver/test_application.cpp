@@ -313,23 +313,34 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_NE(log.str().find("converged after"), std::string::npos);
 }
 
-// signorini --qp: the QP that --export-qp wrote, solved to the same optimum, with
-// summary.json and history.csv and no solution files (there is no mesh).
-TEST(Application, ExportedQPSolvesToTheSameOptimum) {
+// The run of `input` with `overrides` that exports its QP into dir/qp, and the run on those
+// files (outputs in dir/direct and dir/imported); both must converge to the same optimum.
+std::pair<SolveResult, SolveResult> exportedAndImported(const std::string& input,
+                                                        const std::vector<std::string>& overrides,
+                                                        const std::string& dir) {
   auto comm = Tpetra::getDefaultComm();
-  const std::string dir = scratchDirectory("app-qp", *comm);
   CommandLine exporting;
-  exporting.input = sourceDir() + "/xml/paper/H.xml";
+  exporting.input = input;
   exporting.output = dir + "/direct";
   exporting.exportQp = dir + "/qp";
+  exporting.overrides = overrides;
   std::ostringstream log;
   const SolveResult direct = runApplication(exporting, comm, log);
   CommandLine importing;
   importing.qp = dir + "/qp";
   importing.output = dir + "/imported";
   const SolveResult imported = runApplication(importing, comm, log);
-  ASSERT_TRUE(direct.converged() && imported.converged()) << imported.message;
+  EXPECT_TRUE(direct.converged() && imported.converged()) << imported.message;
   EXPECT_LT(std::abs(direct.objective - imported.objective), 1e-10 * std::abs(direct.objective));
+  return {direct, imported};
+}
+
+// signorini --qp: the QP that --export-qp wrote, solved to the same optimum, with
+// summary.json and history.csv and no solution files (there is no mesh).
+TEST(Application, ExportedQPSolvesToTheSameOptimum) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string dir = scratchDirectory("app-qp", *comm);
+  const auto [direct, imported] = exportedAndImported(sourceDir() + "/xml/paper/H.xml", {}, dir);
   EXPECT_LE(std::abs(direct.outerIterations - imported.outerIterations), 1);
   comm->barrier();
   if (comm->getRank() != 0) return;
@@ -342,22 +353,12 @@ TEST(Application, ExportedQPSolvesToTheSameOptimum) {
 // A P2 problem's export carries its mesh's cells (cells.mtx): the run on the files takes the
 // same P2 -> P1 step as the direct run, so the same iterations, Krylov ones included.
 TEST(Application, ExportedP2QPKeepsItsMultigridStep) {
-  auto comm = Tpetra::getDefaultComm();
-  const std::string dir = scratchDirectory("app-qp-p2", *comm);
-  CommandLine exporting;
-  exporting.input = sourceDir() + "/examples/hertz/half-disk-2d.xml";
-  exporting.output = dir + "/direct";
-  exporting.exportQp = dir + "/qp";
-  exporting.overrides = {"Problem/element: degree=2", "Problem/mesh: size factor=3",
-                         "Output/write solution=false", "Output/write contact samples=false"};
-  std::ostringstream log;
-  const SolveResult direct = runApplication(exporting, comm, log);
-  CommandLine importing;
-  importing.qp = dir + "/qp";
-  importing.output = dir + "/imported";
-  const SolveResult imported = runApplication(importing, comm, log);
-  ASSERT_TRUE(direct.converged() && imported.converged()) << imported.message;
-  EXPECT_LT(std::abs(direct.objective - imported.objective), 1e-10 * std::abs(direct.objective));
+  const std::string dir = scratchDirectory("app-qp-p2", *Tpetra::getDefaultComm());
+  const auto [direct, imported] = exportedAndImported(
+      sourceDir() + "/examples/hertz/half-disk-2d.xml",
+      {"Problem/element: degree=2", "Problem/mesh: size factor=3", "Output/write solution=false",
+       "Output/write contact samples=false"},
+      dir);
   EXPECT_EQ(imported.outerIterations, direct.outerIterations);
   EXPECT_EQ(imported.krylovIterations, direct.krylovIterations);
 }
