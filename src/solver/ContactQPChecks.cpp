@@ -28,6 +28,22 @@ long long firstSplitNode(const Map& map, int blockSize) {
   return maxOverRanks(*map.getComm(), local);
 }
 
+// Q on a random pair x, y: its entries finite (Q x is), and symmetric to round-off of
+// ||Q x|| ||y|| (x^T Q y = y^T Q x). Two products of Q. Collective.
+void checkStiffness(const Operator& Q) {
+  Vector x(Q.getDomainMap()), y(Q.getDomainMap()), Qx(Q.getRangeMap()), Qy(Q.getRangeMap());
+  x.randomize();
+  y.randomize();
+  Q.apply(x, Qx);
+  Q.apply(y, Qy);
+  if (!std::isfinite(Qx.norm1()) || !std::isfinite(Qy.norm1())) refuse("Q has an entry that is not finite");
+  const double asymmetry = std::abs(x.dot(Qy) - y.dot(Qx)), scale = Qx.norm2() * y.norm2() + Qy.norm2() * x.norm2();
+  if (asymmetry > 1e-10 * scale)
+    refuse("Q is not symmetric (x^T Q y - y^T Q x is " + std::to_string(asymmetry / scale) +
+           " of its scale for random x, y); eliminate Dirichlet conditions symmetrically: zero the row and the "
+           "column, unit diagonal (doc/qp-format.md)");
+}
+
 }  // namespace
 
 void checkContactQP(const ContactQP& qp) {
@@ -39,11 +55,18 @@ void checkContactQP(const ContactQP& qp) {
   if (!qp.d->getMap()->isSameAs(*qp.A->getRangeMap())) refuse("d must live on A's range map");
   if (!std::isfinite(qp.b->norm1())) refuse("b has an entry that is not finite");
   if (!std::isfinite(qp.d->norm1())) refuse("d has an entry that is not finite");
+  {
+    Vector ones(qp.A->getDomainMap()), Aones(qp.A->getRangeMap());
+    ones.putScalar(1.0);
+    qp.A->apply(ones, Aones);
+    if (!std::isfinite(Aones.norm1())) refuse("A has an entry that is not finite");
+  }
   const long long split = firstSplitNode(domain, qp.blockSize);
   if (split >= 0)
     refuse("Q's domain map splits the " + std::to_string(qp.blockSize) + " unknowns of a node (at global index " +
            std::to_string(split) + "): every rank must hold whole nodes, unknown blockSize * node + component; "
            "build the map by nodes (signorini::readQP does) rather than by an even split of the unknowns");
+  checkStiffness(*qp.Q);
 }
 
 }  // namespace signorini

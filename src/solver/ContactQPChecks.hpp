@@ -1,7 +1,8 @@
 #pragma once
 // What InteriorPointSolver::solve() checks of a ContactQP before anything else, so that a QP
 // built by another code fails in one line in the terms of the API rather than deep inside
-// MueLu or Belos: the pieces present, their maps consistent, whole nodes on every rank.
+// MueLu or Belos: the pieces present, their maps consistent, whole nodes on every rank, the
+// entries finite, Q symmetric (checked on a random pair of vectors).
 #include "signorini/solver/ContactQP.hpp"
 
 namespace signorini {

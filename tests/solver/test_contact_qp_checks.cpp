@@ -2,11 +2,14 @@
 // node's unknowns split between ranks are refused in one message in the API's terms.
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
+#include <TpetraExt_MatrixMatrix.hpp>
 
 #include "signorini/core/Error.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
@@ -39,6 +42,35 @@ TEST(ContactQPChecks, MissingAndMisplacedPiecesAreNamed) {
   qp = problemM();
   qp.blockSize = 0;
   EXPECT_NE(checkMessage(qp).find("blockSize must be"), std::string::npos);
+}
+
+// Q plus a multiple of an asymmetric matrix E (one entry), and a Q with a NaN entry, are
+// refused; so is an A with an infinite entry.
+TEST(ContactQPChecks, AsymmetricOrNonFiniteEntriesAreRefused) {
+  const ContactQP qp = problemM();
+  const RCP<const CrsMatrix> Q = qp.Qmatrix();
+  const auto perturbed = [&](double value, bool symmetric) {
+    auto E = rcp(new CrsMatrix(Q->getRowMap(), 2));
+    const GlobalOrdinal first = Q->getRowMap()->getMinAllGlobalIndex();
+    if (Q->getRowMap()->isNodeGlobalElement(first)) {
+      E->insertGlobalValues(first, Teuchos::tuple<GlobalOrdinal>(first + 1), Teuchos::tuple<double>(value));
+      if (symmetric) E->insertGlobalValues(first, Teuchos::tuple<GlobalOrdinal>(first), Teuchos::tuple<double>(0.0));
+    }
+    E->fillComplete(Q->getDomainMap(), Q->getRangeMap());
+    ContactQP changed = qp;
+    changed.Q = Tpetra::MatrixMatrix::add(1.0, false, *Q, 1.0, false, *E);
+    return changed;
+  };
+  EXPECT_NE(checkMessage(perturbed(0.5 * Q->getFrobeniusNorm(), false)).find("Q is not symmetric"), std::string::npos);
+  EXPECT_NE(checkMessage(perturbed(std::nan(""), true)).find("Q has an entry that is not finite"), std::string::npos);
+  ContactQP infiniteA = qp;
+  auto A = rcp(new CrsMatrix(*qp.A, Teuchos::Copy));
+  A->resumeFill();
+  auto values = A->getLocalMatrixHost().values;
+  if (values.extent(0) > 0) values(0) = std::numeric_limits<double>::infinity();
+  A->fillComplete(qp.A->getDomainMap(), qp.A->getRangeMap());
+  infiniteA.A = A;
+  EXPECT_NE(checkMessage(infiniteA).find("A has an entry that is not finite"), std::string::npos);
 }
 
 // The unknowns split evenly, whatever the nodes: with 242 unknowns of 2 per node on 4 ranks,
