@@ -198,7 +198,7 @@ void addEntities(const SimplexMesh& mesh, const GlobalPartition& partition, cons
 
 // Each tetrahedron's vertices rotated (an even permutation: the orientation stays) so that
 // Bey's rule cuts its inner octahedron along the shortest of the three diagonals, between
-// the midpoints of edges 02 and 13: the children are then the best shaped it can make.
+// the midpoints of edges 02 and 13; the later levels follow Bey's order from there.
 SimplexMesh withShortestDiagonals(const SimplexMesh& mesh) {
   SimplexMesh result = mesh;
   if (mesh.dim != 3) return result;
