@@ -105,9 +105,9 @@ DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, const BoxGrid& b
 }
 
 DistributedSpace::DistributedSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                                   int degree)
+                                   int degree, detail::RefinedLevel& finest)
     : comm_(lattice.comm()) {
-  detail::DistributedRefinedPart part = detail::makeRefinedMeshPart(lattice, refinement, degree);
+  detail::DistributedRefinedPart part = detail::makeRefinedMeshPart(lattice, refinement, degree, finest);
   numGlobalNodes_ = part.numGlobalNodes;
   numGlobalCells_ = part.numGlobalCells;
   serialPhaseBytes_ = lattice.serialPhaseBytes();

@@ -21,6 +21,7 @@
 namespace signorini {
 namespace detail {
 class CoarseMeshLattice;
+struct RefinedLevel;
 }
 
 class DistributedSpace {
@@ -39,7 +40,10 @@ class DistributedSpace {
 
   // Collective. The space on `lattice`'s coarse mesh refined refinement.levels() times, each
   // rank refining its own coarse cells (RefinedMeshPart): no rank holds the fine mesh.
-  DistributedSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int degree);
+  // `finest` is this rank's finest level with its facets (refineLocally()): the space takes its
+  // cells and facets.
+  DistributedSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int degree,
+                   detail::RefinedLevel& finest);
 
   const RCP<const Comm>& comm() const { return comm_; }
   // This rank's cells as a mesh (vertices and cells renumbered locally, in global order,

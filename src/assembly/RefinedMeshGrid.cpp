@@ -25,22 +25,24 @@ bool lessByCoordinates(const double* a, const double* b, int dim) {
 
 std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
     std::shared_ptr<const detail::CoarseMeshLattice> lattice, const SimplexRefinement& refinement,
-    const DistributedSpace& space) {
+    const DistributedSpace& space, const detail::RefinedLevel& finest) {
   // Finest first: each level is refined once, for its own grid and the points of the next coarser.
   const int levels = refinement.levels();
-  detail::RefinedLevel finer = detail::refineLocally(*lattice, refinement, levels, false);
-  std::shared_ptr<RefinedMeshGrid> finest(new RefinedMeshGrid(*lattice, levels, levels, finer));
-  finest->answerForSpace(*lattice, refinement, space);
-  RefinedMeshGrid* above = finest.get();
+  std::shared_ptr<RefinedMeshGrid> top(new RefinedMeshGrid(*lattice, levels, levels, finest));
+  top->answerForSpace(refinement, space);
+  RefinedMeshGrid* above = top.get();
+  const detail::RefinedLevel* finer = &finest;
+  detail::RefinedLevel previous;
   for (int level = levels - 1; level >= 0; --level) {
     detail::RefinedLevel own = detail::refineLocally(*lattice, refinement, level, false);
     std::shared_ptr<RefinedMeshGrid> grid(new RefinedMeshGrid(*lattice, level, levels, own));
-    grid->answerForLevel(*lattice, refinement, finer);
+    grid->answerForLevel(*lattice, refinement, *finer);
     above->coarser_ = grid;
     above = grid.get();
-    finer = std::move(own);
+    previous = std::move(own);
+    finer = &previous;
   }
-  return finest;
+  return top;
 }
 
 RefinedMeshGrid::RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, int level, int levels,
@@ -70,21 +72,20 @@ void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, c
   sortPoints();
 }
 
-void RefinedMeshGrid::answerForSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                                     const DistributedSpace& space) {
+void RefinedMeshGrid::answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space) {
+  // The space's mesh is the finest level's, its vertices in this grid's order.
   const LagrangeSpace& pk = space.space();
   const int k = pk.degree();
-  const long long n = 1LL << level_;
   points_.resize(pk.numNodes());
   std::vector<char> seen(pk.numNodes(), 0);
-  detail::forEachCellNode(pk, refinement, [&](long long node, long long coarseCell, const LatticeSimplex& corners,
+  detail::forEachCellNode(pk, refinement, [&](long long node, long long cell, long long, const LatticeSimplex&,
                                               const std::array<int, 4>& index) {
     if (seen[node]) return;
     seen[node] = 1;
     Point& point = points_[node];
     std::copy_n(&pk.nodeCoordinates()[dim_ * node], dim_, point.x);
     for (int v = 0; v <= dim_; ++v) {
-      point.vertices[v] = lattice.pointId(coarseCell, corners[v], n);
+      point.vertices[v] = vertexIds_[space.mesh().cells[(dim_ + 1) * cell + v]];
       point.weights[v] = static_cast<double>(index[v]) / k;
       if (index[v] == k) point.vertex = point.vertices[v];
     }

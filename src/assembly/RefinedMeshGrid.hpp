@@ -24,10 +24,12 @@ namespace signorini {
 class RefinedMeshGrid : public GeometricGrid {
  public:
   // The finest grid (level refinement.levels()) of `space`, which makeRefinedMeshPart() made
-  // from `lattice`, with the coarser levels below it down to the coarse mesh.
+  // from `lattice` and `finest` (whose vertex data it reads), with the coarser levels below it
+  // down to the coarse mesh.
   static std::shared_ptr<const RefinedMeshGrid> hierarchy(std::shared_ptr<const detail::CoarseMeshLattice> lattice,
                                                           const SimplexRefinement& refinement,
-                                                          const DistributedSpace& space);
+                                                          const DistributedSpace& space,
+                                                          const detail::RefinedLevel& finest);
 
   int dimension() const override { return dim_; }
   long long numVertices() const override { return numVertices_; }
@@ -46,8 +48,7 @@ class RefinedMeshGrid : public GeometricGrid {
   // The points to answer for: the vertices of the next finer level, or the P_k space's nodes.
   void answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
                       const detail::RefinedLevel& finer);
-  void answerForSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                      const DistributedSpace& space);
+  void answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space);
   void sortPoints();
   const Point* findPoint(const double* x) const;
 

@@ -125,11 +125,16 @@ RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefine
 }
 
 DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                                           int degree) {
+                                           int degree, RefinedLevel& finest) {
   const int levels = refinement.levels();
   DistributedRefinedPart result;
   MeshPart& part = result.part;
-  part.mesh = std::move(refineLocally(lattice, refinement, levels, true).mesh);
+  part.mesh.dim = finest.mesh.dim;
+  part.mesh.vertices = finest.mesh.vertices;
+  part.mesh.cells = std::move(finest.mesh.cells);
+  part.mesh.facets = std::move(finest.mesh.facets);
+  part.mesh.facetTags = std::move(finest.mesh.facetTags);
+  part.mesh.boundaryTags = finest.mesh.boundaryTags;
   const long long perCoarse = static_cast<long long>(refinement.cells(levels).size());
   for (long long c = 0; c < lattice.mesh().numCells(); ++c)
     for (long long t = 0; t < perCoarse; ++t) part.globalCells.push_back(lattice.globalCell(c) * perCoarse + t);
@@ -143,7 +148,7 @@ DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, con
   std::vector<std::vector<long long>> tagNodes(tags.size());
   std::vector<char> seen(numNodes, 0);
   const int d = part.mesh.dim;
-  forEachCellNode(space, refinement, [&](long long node, long long coarseCell, const LatticeSimplex& corners,
+  forEachCellNode(space, refinement, [&](long long node, long long, long long coarseCell, const LatticeSimplex& corners,
                                          const std::array<int, 4>& index) {
     if (seen[node]) return;
     seen[node] = 1;

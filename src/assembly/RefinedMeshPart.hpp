@@ -33,9 +33,11 @@ struct DistributedRefinedPart {
   long long numGlobalNodes = 0, numGlobalCells = 0;
 };
 
-// The part of the P_k space on level refinement.levels(). Collective.
+// The part of the P_k space on level refinement.levels(), whose refinement `finest` is (made
+// with its facets): the part takes its cells and facets, `finest` keeps its vertex data for
+// the multigrid's grids. Collective.
 DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                                           int degree);
+                                           int degree, RefinedLevel& finest);
 
 // The coarse cells in the order of their centroids along a Morton (Z-order) curve: a Gmsh
 // mesh's cells come in the mesher's order, which scatters neighbours in memory.
@@ -51,9 +53,9 @@ std::vector<long long> nodesByLocality(const LagrangeSpace& space, const std::ve
 // (LagrangeBasis) in the finest cell with those corners.
 LatticePoint nodePoint(const LatticeSimplex& corners, const std::array<int, 4>& index, int dim);
 
-// Calls visit(node, coarse cell, corners, index) for every (cell, local node) of a P_k space
-// on the finest level built from makeRefinedMeshPart()'s part: a node once per cell, the
-// cell's corners (lattice points of the finest level) and the node's lattice index in it.
+// Calls visit(node, cell, coarse cell, corners, index) for every (cell, local node) of a P_k
+// space on the finest level built from makeRefinedMeshPart()'s part: a node once per cell,
+// the cell's corners (lattice points of the finest level) and the node's lattice index in it.
 template <class Space, class Visit>
 void forEachCellNode(const Space& space, const SimplexRefinement& refinement, Visit&& visit) {
   const auto& templateCells = refinement.cells(refinement.levels());
@@ -62,7 +64,7 @@ void forEachCellNode(const Space& space, const SimplexRefinement& refinement, Vi
   for (long long cell = 0; cell < space.mesh().numCells(); ++cell) {
     const long long* nodes = space.cellNodes(cell);
     for (int local = 0; local < space.nodesPerCell(); ++local)
-      visit(nodes[local], cell / perCoarse, templateCells[cell % perCoarse], lattice[local]);
+      visit(nodes[local], cell, cell / perCoarse, templateCells[cell % perCoarse], lattice[local]);
   }
 }
 

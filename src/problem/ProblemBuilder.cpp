@@ -89,8 +89,9 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
                         def.degree, !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
         const SimplexRefinement refinement(def.dim, gmsh.refinements);
         if (file.extension() == ".geo") lattice->placeOnGeometry(file.string(), refinement);
-        result.space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree);
-        refinedGrid = RefinedMeshGrid::hierarchy(lattice, refinement, *result.space);
+        detail::RefinedLevel finest = detail::refineLocally(*lattice, refinement, gmsh.refinements, true);
+        result.space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree, finest);
+        refinedGrid = RefinedMeshGrid::hierarchy(lattice, refinement, *result.space, finest);
       } else {
         int dim = mesh ? mesh->dim : 0;
         Teuchos::broadcast(*comm, 0, 1, &dim);
