@@ -108,7 +108,7 @@ SimplexGrid::SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long 
     if (i > 0 && vertexIds_[i] == vertexIds_[i - 1])
       throw InputError("SimplexGrid: vertex " + std::to_string(vertexIds_[i]) + " is given twice");
   }
-  numCells_ = static_cast<long long>(cells.size()) / (dim + 1);
+  const long long numCells = static_cast<long long>(cells.size()) / (dim + 1);
   cells_.resize(cells.size());
   for (std::size_t e = 0; e < cells.size(); ++e) {
     const auto it = std::lower_bound(vertexIds_.begin(), vertexIds_.end(), cells[e]);
@@ -138,7 +138,7 @@ SimplexGrid::SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long 
   }
   double volume = 1.0;
   for (int a = 0; a < dim; ++a) volume *= std::max(upper[a] - b.lower[a], 1e-300);
-  const double cellSize = std::pow(volume / std::max<long long>(numCells_, 1), 1.0 / dim);
+  const double cellSize = std::pow(volume / std::max<long long>(numCells, 1), 1.0 / dim);
   b.tolerance = 1e-10 * cellSize;
   for (int a = 0; a < dim; ++a) {
     b.count[a] = std::clamp<long long>(static_cast<long long>((upper[a] - b.lower[a]) / cellSize), 1, 1 << 20);
@@ -147,7 +147,7 @@ SimplexGrid::SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long 
   const long long boxes = b.count[0] * b.count[1] * b.count[2];
   std::vector<std::vector<long long>> cellLists(boxes), vertexLists(boxes);
   double x[12], low[3], high[3];
-  for (long long c = 0; c < numCells_; ++c) {
+  for (long long c = 0; c < numCells; ++c) {
     for (int k = 0; k <= dim; ++k) std::copy_n(&coordinates_[dim * cells_[(dim + 1) * c + k]], dim, &x[dim * k]);
     if (!nondegenerate(dim, x)) throw InputError("SimplexGrid: cell " + std::to_string(c) + " is degenerate");
     for (int a = 0; a < dim; ++a) {

@@ -40,7 +40,7 @@ class SimplexGrid : public GeometricGrid {
  private:
   struct Buckets;
   int dim_;
-  long long numVertices_ = 0, numCells_ = 0;
+  long long numVertices_ = 0;
   std::vector<long long> vertexIds_;  // sorted
   std::vector<double> coordinates_;   // dim_ per vertex, in vertexIds_ order
   std::vector<long long> cells_;      // dim_ + 1 local vertex indices per cell
