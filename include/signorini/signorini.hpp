@@ -21,7 +21,7 @@
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "signorini/problem/ProblemParameters.hpp"
 #include "signorini/solver/ContactQP.hpp"
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
 #include "signorini/solver/IterationObserver.hpp"
 #include "signorini/solver/KKTMeasures.hpp"

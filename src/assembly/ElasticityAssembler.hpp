@@ -10,7 +10,7 @@
 #include "assembly/MatrixFreeElasticityOperator.hpp"
 #include "signorini/assembly/ProblemDefinition.hpp"
 #include "signorini/solver/ContactQP.hpp"
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 
 namespace signorini {
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "assembly/DistributedSpace.hpp"
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 
 namespace signorini {
 

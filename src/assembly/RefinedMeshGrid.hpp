@@ -17,7 +17,7 @@
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/RefinedMeshPart.hpp"
 #include "fe/SimplexRefinement.hpp"
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 
 namespace signorini {
 

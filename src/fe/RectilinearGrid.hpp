@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 
 namespace signorini {
 

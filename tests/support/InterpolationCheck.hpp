@@ -3,7 +3,7 @@
 // one and reproduce x itself from the simplex's vertices (so every linear function).
 #include <gtest/gtest.h>
 
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 
 namespace signorini::testing {
 

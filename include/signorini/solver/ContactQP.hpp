@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "signorini/core/TpetraTypes.hpp"
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 
 namespace signorini {
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "signorini/core/TpetraTypes.hpp"
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 
 namespace signorini {
 

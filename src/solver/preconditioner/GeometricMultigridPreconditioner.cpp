@@ -16,7 +16,7 @@
 
 #include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 #include "solver/preconditioner/ChebyshevSmoother.hpp"
 #include "solver/preconditioner/GatheredDirectSolver.hpp"
 #include "solver/preconditioner/JacobiEigenvalueEstimate.hpp"

@@ -29,7 +29,7 @@
 #include <Tpetra_CrsMatrix_decl.hpp>
 
 #include "signorini/core/TpetraTypes.hpp"
-#include "signorini/solver/GeometricGrid.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 #include "solver/preconditioner/MultilevelPreconditioner.hpp"
 
 namespace signorini {

@@ -1,0 +1,90 @@
+#include "assembly/SolutionFields.hpp"
+
+#include <cmath>
+
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "assembly/DistributedSpace.hpp"
+#include "fe/ElasticityElement.hpp"
+
+namespace signorini {
+namespace {
+
+// sigma: the dim x dim stress; in 2D the out-of-plane stress follows the material's plane
+// strain or plane stress assumption.
+double vonMises(const double* s, int dim, const IsotropicMaterial& material) {
+  double sxx = s[0], syy, szz, sxy, syz = 0, szx = 0;
+  if (dim == 2) {
+    syy = s[3];
+    sxy = s[1];
+    szz = material.planeStrain ? material.poissonRatio * (sxx + syy) : 0.0;
+  } else {
+    syy = s[4];
+    szz = s[8];
+    sxy = s[1];
+    syz = s[5];
+    szx = s[2];
+  }
+  return std::sqrt(0.5 * ((sxx - syy) * (sxx - syy) + (syy - szz) * (syy - szz) + (szz - sxx) * (szz - sxx)) +
+                   3.0 * (sxy * sxy + syz * syz + szx * szx));
+}
+
+// The von Mises stress at each local cell's centroid, u on the overlap DOF map.
+std::vector<double> cellVonMises(const DistributedSpace& ds, const IsotropicMaterial& material, const Vector& u) {
+  const int dim = ds.dim();
+  const LagrangeSpace& space = ds.space();
+  const auto& overlap = ds.overlapSpaceNodes();
+  const int npc = space.nodesPerCell();
+  std::vector<int> localIndex(space.numNodes(), -1);
+  for (std::size_t i = 0; i < overlap.size(); ++i) localIndex[overlap[i]] = static_cast<int>(i);
+  auto ud = u.getData();
+  std::vector<double> coords((dim + 1) * dim), local(dim * npc), sigma(dim * dim), mises;
+  double centroid[3];
+  for (int i = 0; i < dim; ++i) centroid[i] = 1.0 / (dim + 1);
+  for (long long cell = 0; cell < ds.mesh().numCells(); ++cell) {
+    ds.mesh().cellVertexCoordinates(cell, coords.data());
+    const long long* nodes = space.cellNodes(cell);
+    for (int i = 0; i < npc; ++i)
+      for (int c = 0; c < dim; ++c) local[dim * i + c] = ud[dim * localIndex[nodes[i]] + c];
+    cellStress(space.basis(), coords.data(), material, local.data(), centroid, sigma.data());
+    mises.push_back(vonMises(sigma.data(), dim, material));
+  }
+  return mises;
+}
+
+}  // namespace
+
+SolutionFields solutionFields(const DistributedSpace& ds, const ProblemDefinition& problem, const CrsMatrix& A,
+                              const Vector& v, const Vector& lambda) {
+  const int dim = ds.dim();
+  const auto& overlap = ds.overlapSpaceNodes();
+  const Import toOverlap(ds.ownedDofMap(), ds.overlapDofMap());
+  Vector u(ds.overlapDofMap()), force(ds.ownedDofMap()), forceHere(ds.overlapDofMap());
+  u.doImport(v, toOverlap, Tpetra::INSERT);
+  A.apply(lambda, force, Teuchos::TRANS);
+  forceHere.doImport(force, toOverlap, Tpetra::INSERT);
+
+  SolutionFields fields;
+  auto ud = u.getData();
+  auto fd = forceHere.getData();
+  fields.displacement.assign(ud.begin(), ud.end());
+  std::vector<char> onContact(ds.space().numNodes(), 0);
+  if (!problem.contactBoundary.empty())
+    for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contactBoundary))) onContact[node] = 1;
+  for (std::size_t i = 0; i < overlap.size(); ++i) {
+    double normalForce = 0, normalDisplacement = 0;
+    for (int c = 0; c < dim; ++c) {
+      normalForce += fd[dim * i + c] * problem.obstacleDirection[c];
+      normalDisplacement += ud[dim * i + c] * problem.obstacleDirection[c];
+    }
+    fields.normalContactForce.push_back(normalForce);
+    const double* x = &ds.space().nodeCoordinates()[dim * overlap[i]];
+    fields.gap.push_back(onContact[overlap[i]] ? (*problem.gap)(x, dim) + normalDisplacement : 0.0);
+  }
+  fields.vonMisesStress = cellVonMises(ds, problem.material, u);
+  return fields;
+}
+
+}  // namespace signorini
