@@ -22,6 +22,7 @@ packages=(
   clang libclang-rt-14-dev    # the sanitizer build and the libFuzzer targets (make sanitize)
   valgrind                    # the memcheck run in the test suite
   doxygen                     # API reference (make doc)
+  universal-ctags             # the function length lint (tests/lint/function_length.py)
   python3 python3-numpy python3-matplotlib python3-meshio  # scripts and output checks
 )
 for arg in "$@"; do

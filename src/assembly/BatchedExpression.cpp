@@ -46,7 +46,6 @@ std::unique_ptr<BatchedExpression> BatchedExpression::translate(const mu::Parser
       if (token.Val.ptr == variables + k) return k;
     return -1;  // a variable other than x, y, z
   };
-  const auto binary = [&](Op op) { emit({op}, -1); };
 
   for (const mu::SToken* token = parser.GetByteCode().GetBase(); token->Cmd != mu::cmEND; ++token) {
     switch (token->Cmd) {
@@ -63,23 +62,11 @@ std::unique_ptr<BatchedExpression> BatchedExpression::translate(const mu::Parser
         else emit({Op::CoordinatePower, k, 2 + (token->Cmd - mu::cmVARPOW2)}, 1);
         break;
       }
-      case mu::cmADD: binary(Op::Add); break;
-      case mu::cmSUB: binary(Op::Subtract); break;
-      case mu::cmMUL: binary(Op::Multiply); break;
-      case mu::cmDIV: binary(Op::Divide); break;
-      case mu::cmLT: binary(Op::Less); break;
-      case mu::cmLE: binary(Op::LessEqual); break;
-      case mu::cmGT: binary(Op::Greater); break;
-      case mu::cmGE: binary(Op::GreaterEqual); break;
-      case mu::cmEQ: binary(Op::Equal); break;
-      case mu::cmNEQ: binary(Op::NotEqual); break;
-      case mu::cmLAND: binary(Op::And); break;
-      case mu::cmLOR: binary(Op::Or); break;
       case mu::cmPOW: {
         // The exponent is the value pushed last; a constant small integer one is replaced.
         const int exponent = !program.empty() && program.back().op == Op::Constant ? integerExponent(program.back().shift) : 0;
         if (exponent == 0) {
-          binary(Op::Power);
+          emit({Op::Power}, -1);
           break;
         }
         program.pop_back();
@@ -103,7 +90,11 @@ std::unique_ptr<BatchedExpression> BatchedExpression::translate(const mu::Parser
         emit({Op::EndIf}, -1);
         --conditions;
         break;
-      default: return nullptr;  // assignment, string and bulk functions, user operators
+      default: {
+        Op op;
+        if (!binaryOperator(token->Cmd, op)) return nullptr;  // assignment, string and bulk functions, user operators
+        emit({op}, -1);
+      }
     }
     if (depth < 0 || conditions < 0) return nullptr;
   }
@@ -112,6 +103,24 @@ std::unique_ptr<BatchedExpression> BatchedExpression::translate(const mu::Parser
   batched->conditions_.resize(static_cast<std::size_t>(batched->conditionDepth_) * blockSize);
   batched->coordinates_.resize(3 * blockSize);
   return batched;
+}
+
+bool BatchedExpression::binaryOperator(mu::ECmdCode command, Op& op) {
+  switch (command) {
+    case mu::cmADD: op = Op::Add; return true;
+    case mu::cmSUB: op = Op::Subtract; return true;
+    case mu::cmMUL: op = Op::Multiply; return true;
+    case mu::cmDIV: op = Op::Divide; return true;
+    case mu::cmLT: op = Op::Less; return true;
+    case mu::cmLE: op = Op::LessEqual; return true;
+    case mu::cmGT: op = Op::Greater; return true;
+    case mu::cmGE: op = Op::GreaterEqual; return true;
+    case mu::cmEQ: op = Op::Equal; return true;
+    case mu::cmNEQ: op = Op::NotEqual; return true;
+    case mu::cmLAND: op = Op::And; return true;
+    case mu::cmLOR: op = Op::Or; return true;
+    default: return false;
+  }
 }
 
 void BatchedExpression::evaluate(int count, const double* points, int dim, double* values) const {

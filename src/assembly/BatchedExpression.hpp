@@ -39,6 +39,8 @@ class BatchedExpression {
   };
   static constexpr int blockSize = 64;
 
+  // The instruction of a binary operator of muparser's bytecode; false for other commands.
+  static bool binaryOperator(mu::ECmdCode command, Op& op);
   void run(int count, const double* points, int dim, double* values) const;
   void binary(Op op, int count, double* left, const double* right) const;
   void call(const Instruction& instruction, int count, double* arguments) const;

@@ -58,50 +58,39 @@ class RestrictedOperator : public Operator {
   RCP<const Vector> selected_;
 };
 
-}  // namespace
+using Facets = std::vector<std::pair<long long, int>>;
 
-ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefinition& problem,
-                                 const RCP<const Map>& constraintMap)
-    : space_(ds),
-      multipliers_(std::make_shared<ContactMultiplierBasis>(ds.space().basis(), problem.contactFormulation)),
-      weightedGap_(problem.contactFormulation == ContactFormulation::weightedGap),
-      constraintMap_(constraintMap) {
-  const LagrangeSpace& space = ds.space();
-  const int dim = ds.dim();
-  if (!problem.contactBoundary.empty()) facets_ = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
-
-  // Constraint of each facet node; the overlap rows are the owned constraints, then the
-  // ghosts' in ascending order (FECrsGraph wants the owned map as a prefix).
-  overlapNodeConstraint_ = overlapNodeConstraints(ds, problem);
-  const auto& overlapNodes = ds.overlapSpaceNodes();
-  std::vector<long long> constraintOfNode(space.numNodes(), -1);
-  for (std::size_t i = 0; i < overlapNodes.size(); ++i) constraintOfNode[overlapNodes[i]] = overlapNodeConstraint_[i];
-  auto owned = constraintMap->getNodeElementList();
-  const std::size_t numOwned = owned.size();
+// The constraints of the contact facets' nodes on this rank: the owned ones, then the
+// ghosts' in ascending order (FECrsGraph wants the owned map as a prefix).
+std::vector<GlobalOrdinal> overlapConstraintRows(const LagrangeSpace& space, const Facets& facets,
+                                                 const std::vector<long long>& constraintOfNode,
+                                                 const Map& constraintMap) {
+  auto owned = constraintMap.getNodeElementList();
   std::vector<GlobalOrdinal> rows(owned.begin(), owned.end()), ghosts;
-  for (const auto& [cell, facet] : facets_)
+  for (const auto& [cell, facet] : facets)
     for (int a : space.basis().facetNodes(facet)) {
       const long long k = constraintOfNode[space.cellNodes(cell)[a]];
       if (k < 0) throw Error("contact pressure: a contact facet node has no constraint");
-      if (!constraintMap->isNodeGlobalElement(k)) ghosts.push_back(k);
+      if (!constraintMap.isNodeGlobalElement(k)) ghosts.push_back(k);
     }
   std::sort(ghosts.begin(), ghosts.end());
   ghosts.erase(std::unique(ghosts.begin(), ghosts.end()), ghosts.end());
   rows.insert(rows.end(), ghosts.begin(), ghosts.end());
-  overlapMap_ = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
-                            Teuchos::ArrayView<const GlobalOrdinal>(rows), 0, constraintMap->getComm()));
-  overlapIndex_.assign(space.numNodes(), -1);
-  for (long long node = 0; node < space.numNodes(); ++node)
-    if (constraintOfNode[node] >= 0 && overlapMap_->isNodeGlobalElement(constraintOfNode[node]))
-      overlapIndex_[node] = overlapMap_->getLocalElement(constraintOfNode[node]);
+  return rows;
+}
 
-  // Graph: every pair of nodes of a contact facet.
-  std::vector<std::vector<GlobalOrdinal>> columns(rows.size());
-  for (const auto& [cell, facet] : facets_) {
+// The boundary mass matrix's graph: every pair of nodes of a contact facet; an owned
+// constraint with no facet on any rank (cannot happen for nodes of contact facets) keeps a
+// diagonal. columns[i]: the sorted columns of overlap row i.
+RCP<FEGraph> boundaryMassGraph(const LagrangeSpace& space, const Facets& facets, const std::vector<int>& overlapIndex,
+                               const std::vector<GlobalOrdinal>& rows, const RCP<const Map>& constraintMap,
+                               const RCP<const Map>& overlapMap, std::vector<std::vector<GlobalOrdinal>>& columns) {
+  columns.assign(rows.size(), {});
+  for (const auto& [cell, facet] : facets) {
     const auto nodes = space.basis().facetNodes(facet);
     for (int a : nodes)
       for (int b : nodes)
-        columns[overlapIndex_[space.cellNodes(cell)[a]]].push_back(rows[overlapIndex_[space.cellNodes(cell)[b]]]);
+        columns[overlapIndex[space.cellNodes(cell)[a]]].push_back(rows[overlapIndex[space.cellNodes(cell)[b]]]);
   }
   Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("entries per row", rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -112,30 +101,38 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   }
   counts.modify_host();
   counts.sync_device();
-  auto graph = rcp(new FEGraph(constraintMap, overlapMap_, counts));
+  auto graph = rcp(new FEGraph(constraintMap, overlapMap, counts));
   graph->beginAssembly();
   for (std::size_t i = 0; i < rows.size(); ++i)
     if (!columns[i].empty()) graph->insertGlobalIndices(rows[i], columns[i].size(), columns[i].data());
-  // A constraint with no facet on any rank (cannot happen for nodes of contact facets) keeps a diagonal.
-  for (std::size_t i = 0; i < numOwned; ++i)
+  for (std::size_t i = 0; i < constraintMap->getNodeNumElements(); ++i)
     if (columns[i].empty()) graph->insertGlobalIndices(rows[i], 1, &rows[i]);
   graph->endAssembly();
+  return graph;
+}
 
+// The mass matrix of the contact facets' traces of the P_k basis, on graph; a unit diagonal
+// for an owned row without facets.
+RCP<CrsMatrix> boundaryMass(const DistributedSpace& ds, const Facets& facets, const std::vector<int>& overlapIndex,
+                            const std::vector<GlobalOrdinal>& rows,
+                            const std::vector<std::vector<GlobalOrdinal>>& columns, const RCP<FEGraph>& graph,
+                            std::size_t numOwned) {
+  const LagrangeSpace& space = ds.space();
   auto mass = rcp(new FEMatrix(graph));
   mass->beginAssembly();
-  std::vector<double> coords((dim + 1) * dim);
+  std::vector<double> coords((ds.dim() + 1) * ds.dim());
   FacetQuadrature rule;
   const int n = space.nodesPerCell();
-  for (const auto& [cell, facet] : facets_) {
+  for (const auto& [cell, facet] : facets) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
     facetQuadrature(space.basis(), coords.data(), facet, 2 * space.degree(), rule);
     const auto nodes = space.basis().facetNodes(facet);
     for (int a : nodes) {
-      const GlobalOrdinal row = rows[overlapIndex_[space.cellNodes(cell)[a]]];
+      const GlobalOrdinal row = rows[overlapIndex[space.cellNodes(cell)[a]]];
       for (int b : nodes) {
         double value = 0;
         for (int q = 0; q < rule.size(); ++q) value += rule.weights[q] * rule.phi[q * n + a] * rule.phi[q * n + b];
-        const GlobalOrdinal col = rows[overlapIndex_[space.cellNodes(cell)[b]]];
+        const GlobalOrdinal col = rows[overlapIndex[space.cellNodes(cell)[b]]];
         mass->sumIntoGlobalValues(row, 1, &value, &col);
       }
     }
@@ -144,18 +141,48 @@ ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefini
   for (std::size_t i = 0; i < numOwned; ++i)
     if (columns[i].empty()) mass->sumIntoGlobalValues(rows[i], 1, &one, &rows[i]);
   mass->endAssembly();
-  mass_ = mass;
+  return mass;
+}
 
-  // Symmetric Jacobi scaling, applied to a copy: D^-1/2 M D^-1/2 has unit diagonal.
-  scaling_ = rcp(new Vector(constraintMap));
-  mass_->getLocalDiagCopy(*scaling_);
-  {
-    auto s = scaling_->getDataNonConst();
-    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(s.size()); ++i) {
-      if (!(s[i] > 0)) throw Error("contact pressure: the boundary mass matrix has a non-positive diagonal");
-      s[i] = 1.0 / std::sqrt(s[i]);
-    }
+// D^-1/2 for D the diagonal of M: symmetric Jacobi scaling, D^-1/2 M D^-1/2 has unit diagonal.
+RCP<Vector> jacobiScaling(const CrsMatrix& M) {
+  auto scaling = rcp(new Vector(M.getRowMap()));
+  M.getLocalDiagCopy(*scaling);
+  auto s = scaling->getDataNonConst();
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(s.size()); ++i) {
+    if (!(s[i] > 0)) throw Error("contact pressure: the boundary mass matrix has a non-positive diagonal");
+    s[i] = 1.0 / std::sqrt(s[i]);
   }
+  return scaling;
+}
+
+}  // namespace
+
+ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefinition& problem,
+                                 const RCP<const Map>& constraintMap)
+    : space_(ds),
+      multipliers_(std::make_shared<ContactMultiplierBasis>(ds.space().basis(), problem.contactFormulation)),
+      weightedGap_(problem.contactFormulation == ContactFormulation::weightedGap),
+      constraintMap_(constraintMap) {
+  const LagrangeSpace& space = ds.space();
+  if (!problem.contactBoundary.empty()) facets_ = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
+
+  overlapNodeConstraint_ = overlapNodeConstraints(ds, problem);
+  const auto& overlapNodes = ds.overlapSpaceNodes();
+  std::vector<long long> constraintOfNode(space.numNodes(), -1);
+  for (std::size_t i = 0; i < overlapNodes.size(); ++i) constraintOfNode[overlapNodes[i]] = overlapNodeConstraint_[i];
+  const std::vector<GlobalOrdinal> rows = overlapConstraintRows(space, facets_, constraintOfNode, *constraintMap);
+  overlapMap_ = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
+                            Teuchos::ArrayView<const GlobalOrdinal>(rows), 0, constraintMap->getComm()));
+  overlapIndex_.assign(space.numNodes(), -1);
+  for (long long node = 0; node < space.numNodes(); ++node)
+    if (constraintOfNode[node] >= 0 && overlapMap_->isNodeGlobalElement(constraintOfNode[node]))
+      overlapIndex_[node] = overlapMap_->getLocalElement(constraintOfNode[node]);
+
+  std::vector<std::vector<GlobalOrdinal>> columns;
+  const RCP<FEGraph> graph = boundaryMassGraph(space, facets_, overlapIndex_, rows, constraintMap, overlapMap_, columns);
+  mass_ = boundaryMass(ds, facets_, overlapIndex_, rows, columns, graph, constraintMap->getNodeNumElements());
+  scaling_ = jacobiScaling(*mass_);
   lumpedWeights_ = contactNodeWeights(ds, problem, constraintMap);
   scaledMass_ = rcp(new CrsMatrix(*mass_, Teuchos::Copy));
   scaledMass_->leftScale(*scaling_);

@@ -394,24 +394,56 @@ RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDe
   return rows.onOwners(ds.comm());
 }
 
-ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition& problem, bool assembleStiffness) {
-  const LagrangeSpace& space = ds.space();
-  const SimplexMesh& mesh = ds.mesh();
-  const int dim = ds.dim(), npc = space.nodesPerCell(), n = dim * npc;
-  const DirichletData dirichlet = dirichletData(ds, problem);
-  if (problem.bodyForce.size() != static_cast<std::size_t>(dim))
-    throw InputError("Problem: the body force needs " + std::to_string(dim) + " components");
+namespace {
 
-  std::optional<OverlapStiffness> K;
-  if (assembleStiffness) K.emplace(ds);
-  Vector bOverlap(ds.overlapDofMap());
+// One cell's local DOFs as the element routines see them: vertex coordinates, and per DOF
+// (dim * local node + component) its overlap row, column and load entry, and its Dirichlet
+// data. Looked up once per DOF (localIndices), not for each of the (dim * npc)^2 entries.
+class CellDofs {
+ public:
+  CellDofs(const DistributedSpace& ds, const DirichletData& dirichlet, const LocalIndices& local, bool withMatrix)
+      : ds_(ds), dirichlet_(dirichlet), local_(local), withMatrix_(withMatrix) {
+    const int n = ds.dim() * ds.space().nodesPerCell();
+    vertexCoords.resize((ds.dim() + 1) * ds.dim());
+    rows.resize(n);
+    cols.resize(n);
+    entries.resize(n);
+    fixed.resize(n);
+    value.resize(n);
+  }
+  void gather(long long cell) {
+    const int dim = ds_.dim();
+    ds_.mesh().cellVertexCoordinates(cell, vertexCoords.data());
+    const long long* nodes = ds_.space().cellNodes(cell);
+    for (int i = 0; i < ds_.space().nodesPerCell(); ++i)
+      for (int c = 0; c < dim; ++c) {
+        const long long spaceDof = dim * nodes[i] + c;
+        if (withMatrix_) {
+          rows[dim * i + c] = local_.row[spaceDof];
+          cols[dim * i + c] = local_.column[spaceDof];
+        }
+        entries[dim * i + c] = local_.entry[spaceDof];
+        fixed[dim * i + c] = dirichlet_.fixed[spaceDof];
+        value[dim * i + c] = dirichlet_.value[spaceDof];
+      }
+  }
 
-  // Local rows and columns of the overlap matrix, and local entries of bOverlap, per space
-  // DOF: looked up once here, not for each of the (dim * npc)^2 entries of every cell.
-  const LocalIndices local = localIndices(ds, K ? &*K : nullptr, bOverlap);
-  std::vector<double> vertexCoords((dim + 1) * dim), Ke, Fe, value(n);
-  std::vector<char> fixed(n);
-  std::vector<LocalOrdinal> rows(n), cols(n), entries(n);
+  std::vector<double> vertexCoords, value;
+  std::vector<LocalOrdinal> rows, cols, entries;
+  std::vector<char> fixed;
+
+ private:
+  const DistributedSpace& ds_;
+  const DirichletData& dirichlet_;
+  const LocalIndices& local_;
+  const bool withMatrix_;
+};
+
+// Element stiffness (into K if given) and body force load (into bOverlap) of every local
+// cell, prescribed DOFs eliminated symmetrically.
+void assembleCells(const DistributedSpace& ds, const ProblemDefinition& problem, CellDofs& cell,
+                   OverlapStiffness* K, Vector& bOverlap) {
+  const int dim = ds.dim(), npc = ds.space().nodesPerCell(), n = dim * npc;
   // Expressions are evaluated at every quadrature point of every cell: skip the zero ones.
   std::vector<char> zeroForce(dim);
   for (int c = 0; c < dim; ++c) zeroForce[c] = problem.bodyForce[c].isConstantZero();
@@ -419,89 +451,110 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
     for (int c = 0; c < dim; ++c)
       if (!zeroForce[c]) problem.bodyForce[c].evaluate(count, x, dim, f + c * count);
   };
-  const auto gatherCell = [&](long long cell) {
-    mesh.cellVertexCoordinates(cell, vertexCoords.data());
-    const long long* nodes = space.cellNodes(cell);
-    for (int i = 0; i < npc; ++i)
-      for (int c = 0; c < dim; ++c) {
-        const long long spaceDof = dim * nodes[i] + c;
-        if (K) {
-          rows[dim * i + c] = local.row[spaceDof];
-          cols[dim * i + c] = local.column[spaceDof];
-        }
-        entries[dim * i + c] = local.entry[spaceDof];
-        fixed[dim * i + c] = dirichlet.fixed[spaceDof];
-        value[dim * i + c] = dirichlet.value[spaceDof];
-      }
-  };
-
+  std::vector<double> Ke, Fe;
   auto bData = bOverlap.getDataNonConst();
-  for (long long cell = 0; cell < mesh.numCells(); ++cell) {
-    gatherCell(cell);
-    elasticityStiffness(space.basis(), vertexCoords.data(), problem.material, Ke);
-    bodyForceLoad(space.basis(), vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
-    eliminatePrescribed(fixed, value, n, Ke, Fe);
-    if (K) K->addElementMatrix(dim, npc, rows.data(), cols.data(), Ke.data());
-    for (int i = 0; i < n; ++i) bData[entries[i]] += Fe[i];
+  for (long long c = 0; c < ds.mesh().numCells(); ++c) {
+    cell.gather(c);
+    elasticityStiffness(ds.space().basis(), cell.vertexCoords.data(), problem.material, Ke);
+    bodyForceLoad(ds.space().basis(), cell.vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
+    eliminatePrescribed(cell.fixed, cell.value, n, Ke, Fe);
+    if (K) K->addElementMatrix(dim, npc, cell.rows.data(), cell.cols.data(), Ke.data());
+    for (int i = 0; i < n; ++i) bData[cell.entries[i]] += Fe[i];
   }
+}
+
+// The tractions' loads on the free DOFs of their boundaries' facets, into bOverlap.
+void addTractions(const DistributedSpace& ds, const ProblemDefinition& problem, CellDofs& cell, Vector& bOverlap) {
+  const int dim = ds.dim(), n = dim * ds.space().nodesPerCell();
+  std::vector<double> Fe;
+  auto bData = bOverlap.getDataNonConst();
   for (const BoundaryField& bc : problem.traction) {
     const auto traction = [&](int count, const double* x, double* t) {
       for (int c = 0; c < dim; ++c)
         if (bc.components[c]) bc.components[c]->evaluate(count, x, dim, t + c * count);
     };
-    for (const auto& [cell, facet] : space.boundaryFacets(mesh.tag(bc.boundary))) {
-      gatherCell(cell);
-      facetTractionLoad(space.basis(), vertexCoords.data(), facet, traction,
-                        problem.loadQuadratureDegree, Fe);
+    for (const auto& [c, facet] : ds.space().boundaryFacets(ds.mesh().tag(bc.boundary))) {
+      cell.gather(c);
+      facetTractionLoad(ds.space().basis(), cell.vertexCoords.data(), facet, traction, problem.loadQuadratureDegree,
+                        Fe);
       for (int i = 0; i < n; ++i)
-        if (!fixed[i]) bData[entries[i]] += Fe[i];
+        if (!cell.fixed[i]) bData[cell.entries[i]] += Fe[i];
     }
   }
-  bData = Teuchos::null;
-  // Owners put the unit diagonal of prescribed DOFs.
+}
+
+// The owners' part of the elimination: a unit diagonal in K and the prescribed value in b
+// for each prescribed DOF; b summed from bOverlap onto the owned DOFs first.
+RCP<Vector> prescribeOnOwners(const DistributedSpace& ds, const DirichletData& dirichlet, OverlapStiffness* K,
+                              const Vector& bOverlap) {
+  const int dim = ds.dim();
   const auto& overlap = ds.overlapSpaceNodes();
   const std::size_t numOwned = ds.ownedNodeMap()->getNodeNumElements();
-  RCP<CrsMatrix> Q;
-  if (K) {
-    for (std::size_t i = 0; i < numOwned; ++i)
-      for (int c = 0; c < dim; ++c) {
-        const long long spaceDof = dim * overlap[i] + c;
-        if (dirichlet.fixed[spaceDof]) K->add(K->row(spaceDof), K->column(spaceDof), 1.0);
-      }
-    Q = K->sumOnOwners();
-  }
-
   auto b = rcp(new Vector(ds.ownedDofMap()));
   b->doExport(bOverlap, Export(ds.overlapDofMap(), ds.ownedDofMap()), Tpetra::ADD);
-  {
-    auto data = b->getDataNonConst();
-    for (std::size_t i = 0; i < numOwned; ++i)
-      for (int c = 0; c < dim; ++c)
-        if (dirichlet.fixed[dim * overlap[i] + c]) data[dim * i + c] = dirichlet.value[dim * overlap[i] + c];
-  }
+  auto data = b->getDataNonConst();
+  for (std::size_t i = 0; i < numOwned; ++i)
+    for (int c = 0; c < dim; ++c) {
+      const long long spaceDof = dim * overlap[i] + c;
+      if (!dirichlet.fixed[spaceDof]) continue;
+      if (K) K->add(K->row(spaceDof), K->column(spaceDof), 1.0);
+      data[dim * i + c] = dirichlet.value[spaceDof];
+    }
+  return b;
+}
 
+// One constraint per contact node (weighted gaps: per contact vertex), in the formulation the
+// problem asks for; contact nodes whose displacement towards the obstacle is prescribed into
+// contact are refused.
+ContactConstraints contactConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
+                                      const DirichletData& dirichlet) {
   const OwnedContactNodes contact = ownedContactNodes(ds, problem);
   checkPrescribedContactNodes(ds, problem, dirichlet, contact.nodes);
   std::vector<GlobalOrdinal> ownedConstraints(contact.nodes.size());
   for (std::size_t k = 0; k < ownedConstraints.size(); ++k) ownedConstraints[k] = contact.first + k;
   auto constraintMap = rcp(new Map(contact.numGlobal, Teuchos::ArrayView<const GlobalOrdinal>(ownedConstraints),
                                    0, ds.comm()));
-  const ContactConstraints constraints = problem.contactFormulation == ContactFormulation::weightedGap
-                                             ? weightedGapConstraints(ds, problem, constraintMap)
-                                             : nodalConstraints(ds, problem, contact, constraintMap);
+  return problem.contactFormulation == ContactFormulation::weightedGap
+             ? weightedGapConstraints(ds, problem, constraintMap)
+             : nodalConstraints(ds, problem, contact, constraintMap);
+}
 
+RCP<MultiVector> ownedNodeCoordinates(const DistributedSpace& ds) {
+  const int dim = ds.dim();
+  const auto& overlap = ds.overlapSpaceNodes();
   auto coordinates = rcp(new MultiVector(ds.ownedNodeMap(), dim));
   for (int c = 0; c < dim; ++c) {
     auto data = coordinates->getDataNonConst(c);
-    for (std::size_t i = 0; i < numOwned; ++i) data[i] = space.nodeCoordinates()[dim * overlap[i] + c];
+    for (std::size_t i = 0; i < data.size(); ++i) data[i] = ds.space().nodeCoordinates()[dim * overlap[i] + c];
   }
+  return coordinates;
+}
+
+}  // namespace
+
+// Stiffness and loads cell by cell on the overlap, tractions on their facets, the owners'
+// Dirichlet rows, then the contact constraints.
+ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition& problem, bool assembleStiffness) {
+  const int dim = ds.dim();
+  const DirichletData dirichlet = dirichletData(ds, problem);
+  if (problem.bodyForce.size() != static_cast<std::size_t>(dim))
+    throw InputError("Problem: the body force needs " + std::to_string(dim) + " components");
+
+  std::optional<OverlapStiffness> K;
+  if (assembleStiffness) K.emplace(ds);
+  Vector bOverlap(ds.overlapDofMap());
+  const LocalIndices local = localIndices(ds, K ? &*K : nullptr, bOverlap);
+  CellDofs cell(ds, dirichlet, local, K.has_value());
+  assembleCells(ds, problem, cell, K ? &*K : nullptr, bOverlap);
+  addTractions(ds, problem, cell, bOverlap);
 
   ContactQP qp;
-  qp.Q = Q;
-  qp.b = b;
+  qp.b = prescribeOnOwners(ds, dirichlet, K ? &*K : nullptr, bOverlap);
+  if (K) qp.Q = K->sumOnOwners();
+  const ContactConstraints constraints = contactConstraints(ds, problem, dirichlet);
   qp.A = constraints.A;
   qp.d = constraints.d;
-  qp.coordinates = coordinates;
+  qp.coordinates = ownedNodeCoordinates(ds);
   qp.blockSize = dim;
   return qp;
 }

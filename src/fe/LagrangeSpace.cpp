@@ -85,6 +85,81 @@ Key sortedKey(Key key, int size) {
   return key;
 }
 
+// The boundary facets by their sorted vertices, every vertex of one marked in onBoundary.
+KeyTable boundaryFacetIndex(const SimplexMesh& mesh, std::vector<char>& onBoundary) {
+  const int d = mesh.dim;
+  KeyTable facetIndex(mesh.numFacets());
+  for (long long facet = 0; facet < mesh.numFacets(); ++facet) {
+    Key key = {-1, -1, -1};
+    for (int v = 0; v < d; ++v) {
+      key[v] = mesh.facets[d * facet + v];
+      if (key[v] < 0 || key[v] >= mesh.numVertices())
+        throw InputError("mesh: facet " + std::to_string(facet) + " references a missing vertex");
+      onBoundary[key[v]] = 1;
+    }
+    if (facetIndex.findOrInsert(sortedKey(key, d), facet) != facet)
+      throw InputError("mesh: boundary facet " + std::to_string(facet) + " is listed twice");
+  }
+  return facetIndex;
+}
+
+// The boundary facets among the faces of `cell` (those whose vertices all lie on boundary
+// facets and which are listed) get the cell and their local index.
+void attachBoundaryFacets(const SimplexMesh& mesh, long long cell, const std::vector<char>& onBoundary,
+                          KeyTable& facetIndex, std::vector<std::pair<long long, int>>& facetCells) {
+  const int d = mesh.dim;
+  const long long* vertex = mesh.cells.data() + (d + 1) * cell;
+  int boundaryVertices = 0;
+  for (int v = 0; v <= d; ++v) {
+    if (vertex[v] < 0 || vertex[v] >= mesh.numVertices())
+      throw InputError("mesh: cell " + std::to_string(cell) + " references a missing vertex");
+    boundaryVertices += onBoundary[vertex[v]];
+  }
+  for (int f = 0; boundaryVertices >= d && f <= d; ++f) {
+    if (boundaryVertices - onBoundary[vertex[f]] < d) continue;  // facet f has an interior vertex
+    Key key = {-1, -1, -1};
+    for (int v = 0, n = 0; v <= d; ++v)
+      if (v != f) key[n++] = vertex[v];
+    const long long facet = facetIndex.find(sortedKey(key, d));
+    if (facet < 0) continue;
+    if (facetCells[facet].first != -1)
+      throw InputError("mesh: boundary facet " + std::to_string(facet) + " is shared by two cells");
+    facetCells[facet] = {cell, f};
+  }
+}
+
+// The nodes of a P_k cell, into `nodes`. A node (lattice point a) is identified by the
+// vertices it lies between and its lattice weights on them: new ones are numbered from
+// numNodes on, their coordinates appended to nodeCoordinates unless given.
+void numberCellNodes(const SimplexMesh& mesh, const LagrangeBasis& basis, long long cell, KeyTable& nodeIndex,
+                     long long* nodes, long long& numNodes, std::vector<double>* nodeCoordinates) {
+  const int d = mesh.dim, degree = basis.degree(), nodesPerCell = basis.size();
+  const long long* vertex = mesh.cells.data() + (d + 1) * cell;
+  for (int local = 0; local < nodesPerCell; ++local) {
+    const auto& a = basis.latticeIndices()[local];
+    if (local <= d) {  // the vertices, first in the local order
+      nodes[local] = vertex[local];
+      continue;
+    }
+    Key key = {-1, -1, -1};
+    int size = 0;
+    for (int i = 0; i <= d; ++i)
+      if (a[i] > 0) key[size++] = vertex[i] << 2 | a[i];  // a_i <= 3 fits two bits
+    key = sortedKey(key, size);
+    nodes[local] = nodeIndex.findOrInsert(key, numNodes);
+    if (nodes[local] != numNodes) continue;
+    ++numNodes;
+    if (!nodeCoordinates) continue;
+    // Summed in key order (by vertex id), not cell order: the value is the node's own,
+    // the same whichever cell meets it first and in any part numbered in global order.
+    for (int j = 0; j < d; ++j) {
+      double x = 0.0;
+      for (int i = 0; i < size; ++i) x += (key[i] & 3) * mesh.vertices[d * (key[i] >> 2) + j];
+      nodeCoordinates->push_back(x / degree);
+    }
+  }
+}
+
 }  // namespace
 
 LagrangeSpace::LagrangeSpace(const SimplexMesh& mesh, int degree) : mesh_(&mesh), basis_(mesh.dim, degree) {
@@ -99,81 +174,24 @@ LagrangeSpace::LagrangeSpace(const SimplexMesh& mesh, int degree, const std::vec
 void LagrangeSpace::build(const std::vector<double>* nonVertexCoordinates) {
   const SimplexMesh& mesh = *mesh_;
   const int d = mesh.dim, degree = basis_.degree();
-  const long long numVertices = mesh.numVertices();
-  const long long numCells = mesh.numCells();
-  const long long numFacets = mesh.numFacets();
+  const long long numVertices = mesh.numVertices(), numCells = mesh.numCells(), numFacets = mesh.numFacets();
   if (mesh.vertices.size() % d != 0 || mesh.cells.size() % (d + 1) != 0 || mesh.facets.size() % d != 0 ||
       mesh.facetTags.size() != static_cast<std::size_t>(numFacets))
     throw InputError("mesh: array sizes do not fit dimension " + std::to_string(d));
 
   // Boundary facets are found as cell faces whose vertices all lie on boundary facets.
   std::vector<char> onBoundary(numVertices, 0);
-  KeyTable facetIndex(numFacets);
-  for (long long facet = 0; facet < numFacets; ++facet) {
-    Key key = {-1, -1, -1};
-    for (int v = 0; v < d; ++v) {
-      key[v] = mesh.facets[d * facet + v];
-      if (key[v] < 0 || key[v] >= numVertices)
-        throw InputError("mesh: facet " + std::to_string(facet) + " references a missing vertex");
-      onBoundary[key[v]] = 1;
-    }
-    if (facetIndex.findOrInsert(sortedKey(key, d), facet) != facet)
-      throw InputError("mesh: boundary facet " + std::to_string(facet) + " is listed twice");
-  }
+  KeyTable facetIndex = boundaryFacetIndex(mesh, onBoundary);
   facetCells_.assign(numFacets, {-1, -1});
-
-  const int nodesPerCell = basis_.size();
-  const auto& lattice = basis_.latticeIndices();
   nodeCoordinates_ = mesh.vertices;
   numNodes_ = numVertices;
   KeyTable nodeIndex(degree > 1 ? numCells : 0);
-  if (degree > 1) cellNodes_.resize(static_cast<std::size_t>(nodesPerCell) * numCells);
-
+  if (degree > 1) cellNodes_.resize(static_cast<std::size_t>(basis_.size()) * numCells);
   for (long long cell = 0; cell < numCells; ++cell) {
-    const long long* vertex = mesh.cells.data() + (d + 1) * cell;
-    int boundaryVertices = 0;
-    for (int v = 0; v <= d; ++v) {
-      if (vertex[v] < 0 || vertex[v] >= numVertices)
-        throw InputError("mesh: cell " + std::to_string(cell) + " references a missing vertex");
-      boundaryVertices += onBoundary[vertex[v]];
-    }
-    for (int f = 0; boundaryVertices >= d && f <= d; ++f) {
-      if (boundaryVertices - onBoundary[vertex[f]] < d) continue;  // facet f has an interior vertex
-      Key key = {-1, -1, -1};
-      for (int v = 0, n = 0; v <= d; ++v)
-        if (v != f) key[n++] = vertex[v];
-      const long long facet = facetIndex.find(sortedKey(key, d));
-      if (facet < 0) continue;
-      if (facetCells_[facet].first != -1)
-        throw InputError("mesh: boundary facet " + std::to_string(facet) + " is shared by two cells");
-      facetCells_[facet] = {cell, f};
-    }
-
-    if (degree == 1) continue;
-    long long* nodes = cellNodes_.data() + static_cast<std::size_t>(nodesPerCell) * cell;
-    for (int local = 0; local < nodesPerCell; ++local) {
-      const auto& a = lattice[local];
-      if (local <= d) {  // the vertices, first in the local order
-        nodes[local] = vertex[local];
-        continue;
-      }
-      Key key = {-1, -1, -1};
-      int size = 0;
-      for (int i = 0; i <= d; ++i)
-        if (a[i] > 0) key[size++] = vertex[i] << 2 | a[i];  // a_i <= 3 fits two bits
-      key = sortedKey(key, size);
-      nodes[local] = nodeIndex.findOrInsert(key, numNodes_);
-      if (nodes[local] != numNodes_) continue;
-      ++numNodes_;
-      if (nonVertexCoordinates) continue;
-      // Summed in key order (by vertex id), not cell order: the value is the node's own,
-      // the same whichever cell meets it first and in any part numbered in global order.
-      for (int j = 0; j < d; ++j) {
-        double x = 0.0;
-        for (int i = 0; i < size; ++i) x += (key[i] & 3) * mesh.vertices[d * (key[i] >> 2) + j];
-        nodeCoordinates_.push_back(x / degree);
-      }
-    }
+    attachBoundaryFacets(mesh, cell, onBoundary, facetIndex, facetCells_);
+    if (degree > 1)
+      numberCellNodes(mesh, basis_, cell, nodeIndex, &cellNodes_[static_cast<std::size_t>(basis_.size()) * cell],
+                      numNodes_, nonVertexCoordinates ? nullptr : &nodeCoordinates_);
   }
 
   if (nonVertexCoordinates) {
@@ -182,7 +200,6 @@ void LagrangeSpace::build(const std::vector<double>* nonVertexCoordinates) {
                        " coordinates given for " + std::to_string(numNodes_ - numVertices) + " nodes past the vertices");
     nodeCoordinates_.insert(nodeCoordinates_.end(), nonVertexCoordinates->begin(), nonVertexCoordinates->end());
   }
-
   for (long long facet = 0; facet < numFacets; ++facet)
     if (facetCells_[facet].first == -1)
       throw InputError("mesh: boundary facet " + std::to_string(facet) + " is not a face of any cell");

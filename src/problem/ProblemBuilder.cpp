@@ -54,6 +54,82 @@ AssembledProblem::AssembledProblem(AssembledProblem&&) noexcept = default;
 AssembledProblem& AssembledProblem::operator=(AssembledProblem&&) noexcept = default;
 AssembledProblem::~AssembledProblem() = default;
 
+namespace {
+
+// The space of a Gmsh mesh refined `gmsh.refinements` times: rank 0 sends each rank its part
+// of the coarse mesh (held by rank 0 alone in `mesh`); every rank refines its own, its new
+// boundary vertices placed on a .geo geometry. Returns the levels' grids.
+std::shared_ptr<const GeometricGrid> refinedGmshSpace(const Teuchos::ParameterList& problem, const GmshSource& gmsh,
+                                                      const std::filesystem::path& file,
+                                                      std::shared_ptr<SimplexMesh> mesh, const RCP<const Comm>& comm,
+                                                      AssembledProblem& result) {
+  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh));
+  result.definition = readProblemDefinition(problem, lattice->dim());
+  const ProblemDefinition& def = result.definition;
+  checkMemoryFits(static_cast<double>(def.dim) * lattice->numPoints(def.degree << gmsh.refinements), def.dim,
+                  def.degree, !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
+  const SimplexRefinement refinement(def.dim, gmsh.refinements);
+  if (file.extension() == ".geo") lattice->placeOnGeometry(file.string(), refinement);
+  detail::RefinedLevel finest = detail::refineLocally(*lattice, refinement, gmsh.refinements, true);
+  result.space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree, finest);
+  return RefinedMeshGrid::hierarchy(lattice, refinement, *result.space, finest);
+}
+
+// The definition and the space, with the grids of a refined mesh if there are. Every rank
+// makes its own part of a box mesh. A Gmsh mesh is read by rank 0 alone, once, and freed once
+// each rank has its part (of the mesh, or of the coarse mesh it refines); its dimension
+// decides the one the rest of the definition is read with.
+std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
+                                               const std::string& baseDirectory, AssembledProblem& result) {
+  const GmshSource gmsh = readGmshSource(problem);
+  if (gmsh.file.empty()) {
+    ProblemDefinition def = readProblemDefinition(problem);
+    checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree, !storesNoStiffness(def),
+                    def.gridRefinedAtNodes, *comm);
+    result.space = std::make_shared<const DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
+    result.definition = std::move(def);
+    return nullptr;
+  }
+  std::shared_ptr<SimplexMesh> mesh;
+  std::filesystem::path file(gmsh.file);
+  if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
+  detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
+  if (gmsh.refinements > 0) return refinedGmshSpace(problem, gmsh, file, std::move(mesh), comm, result);
+  int dim = mesh ? mesh->dim : 0;
+  Teuchos::broadcast(*comm, 0, 1, &dim);
+  result.definition = readProblemDefinition(problem, dim);
+  const ProblemDefinition& def = result.definition;
+  result.space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), def.degree);
+  checkMemoryFits(static_cast<double>(def.dim) * result.space->numGlobalNodes(), def.dim, def.degree,
+                  !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
+  return nullptr;
+}
+
+// The QP on result.space, and the grids of the geometric multigrid: a box's or a refined
+// mesh's nested ones, a P_k space's own mesh, or that mesh refined at the nodes, whose
+// stiffness is no Galerkin product of Q's.
+void assembleQP(AssembledProblem& result, std::shared_ptr<const GeometricGrid> refinedGrid) {
+  const ProblemDefinition& def = result.definition;
+  const bool onlyGridStiffness = storesNoStiffness(def);
+  result.qp = assembleContactQP(*result.space, def, !onlyGridStiffness);
+  if (def.matrixFreeStiffness) {
+    result.qp.Qassembled = result.qp.Qmatrix();
+    result.qp.Q = matrixFreeStiffness(result.space, def);
+  }
+  if (def.gridRefinedAtNodes)
+    result.qp.grid = std::make_shared<MeshVertexGrid>(result.space, MeshVertexGrid::Refinement::atNodes);
+  else if (refinedGrid)
+    result.qp.grid = std::move(refinedGrid);
+  else if (def.meshType == "box")
+    result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
+  else if (def.degree > 1)
+    result.qp.grid = std::make_shared<MeshVertexGrid>(result.space);
+  if (onlyGridStiffness || def.gridRefinedAtNodes)
+    result.qp.gridStiffness = assembleGridStiffness(*result.space, def, *result.qp.grid);
+}
+
+}  // namespace
+
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                               const std::string& baseDirectory) {
   AssembledProblem result;
@@ -64,44 +140,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::meshAndSpace);
     setup.start(true);
     const double residentBefore = residentMiB();
-    // Every rank makes its own part of a box mesh. A Gmsh mesh is read by rank 0 alone,
-    // once, and freed once each rank has its part (of the mesh, or of the coarse mesh it
-    // refines); its dimension decides the one the rest of the definition is read with.
-    const GmshSource gmsh = readGmshSource(problem);
-    if (gmsh.file.empty()) {
-      ProblemDefinition def = readProblemDefinition(problem);
-      checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree,
-                      !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
-      result.space = std::make_shared<const DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
-      result.definition = std::move(def);
-    } else {
-      std::shared_ptr<SimplexMesh> mesh;
-      std::filesystem::path file(gmsh.file);
-      if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
-      detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
-      if (gmsh.refinements > 0) {
-        // Rank 0 sends each rank its part of the coarse mesh; every rank refines its own,
-        // its new boundary vertices placed on a .geo geometry.
-        const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh));
-        result.definition = readProblemDefinition(problem, lattice->dim());
-        const ProblemDefinition& def = result.definition;
-        checkMemoryFits(static_cast<double>(def.dim) * lattice->numPoints(def.degree << gmsh.refinements), def.dim,
-                        def.degree, !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
-        const SimplexRefinement refinement(def.dim, gmsh.refinements);
-        if (file.extension() == ".geo") lattice->placeOnGeometry(file.string(), refinement);
-        detail::RefinedLevel finest = detail::refineLocally(*lattice, refinement, gmsh.refinements, true);
-        result.space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree, finest);
-        refinedGrid = RefinedMeshGrid::hierarchy(lattice, refinement, *result.space, finest);
-      } else {
-        int dim = mesh ? mesh->dim : 0;
-        Teuchos::broadcast(*comm, 0, 1, &dim);
-        result.definition = readProblemDefinition(problem, dim);
-        result.space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), result.definition.degree);
-        checkMemoryFits(static_cast<double>(result.definition.dim) * result.space->numGlobalNodes(),
-                        result.definition.dim, result.definition.degree, !storesNoStiffness(result.definition),
-                        result.definition.gridRefinedAtNodes, *comm);
-      }
-    }
+    refinedGrid = makeSpace(problem, comm, baseDirectory, result);
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);
     result.setupPeakMiBPerRank.resize(comm->getSize());
@@ -112,27 +151,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: assembly"));
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::assembly);
     assembly.start(true);
-    const ProblemDefinition& def = result.definition;
-    const bool box = def.meshType == "box";
-    const bool onlyGridStiffness = storesNoStiffness(def);
-    result.qp = assembleContactQP(*result.space, def, !onlyGridStiffness);
-    if (def.matrixFreeStiffness) {
-      result.qp.Qassembled = result.qp.Qmatrix();
-      result.qp.Q = matrixFreeStiffness(result.space, def);
-    }
-    // The grids of the geometric multigrid: a box's or a refined mesh's nested ones, a P_k
-    // space's own mesh, or that mesh refined at the nodes, whose stiffness is no Galerkin
-    // product of Q's.
-    if (def.gridRefinedAtNodes)
-      result.qp.grid = std::make_shared<MeshVertexGrid>(result.space, MeshVertexGrid::Refinement::atNodes);
-    else if (refinedGrid)
-      result.qp.grid = refinedGrid;
-    else if (box)
-      result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
-    else if (def.degree > 1)
-      result.qp.grid = std::make_shared<MeshVertexGrid>(result.space);
-    if (onlyGridStiffness || def.gridRefinedAtNodes)
-      result.qp.gridStiffness = assembleGridStiffness(*result.space, def, *result.qp.grid);
+    assembleQP(result, std::move(refinedGrid));
     assembly.stop();
   }
   result.setupSeconds = maxOverRanks(*comm, setup.totalElapsedTime());

@@ -133,6 +133,69 @@ ParameterList validProblemParameters() {
   return p;
 }
 
+namespace {
+
+// mesh: cells and mesh: lengths, for def.dim.
+void readBoxSize(const ParameterList& p, ProblemDefinition& def) {
+  const int dim = def.dim;
+  const auto cells = p.get<Array<int>>("mesh: cells");
+  if (cells.size() != 1 && cells.size() != dim)
+    throw InputError("Problem/mesh: cells: give 1 or " + std::to_string(dim) + " values");
+  for (int i = 0; i < 3; ++i) {
+    def.cells[i] = cells[cells.size() == 1 ? 0 : std::min<int>(i, cells.size() - 1)];
+    if (i < dim && def.cells[i] < 1)
+      throw InputError("Problem/mesh: cells: every value must be >= 1");
+  }
+  const auto lengths = p.get<Array<double>>("mesh: lengths");
+  for (int i = 0; i < dim; ++i) {
+    if (i >= static_cast<int>(lengths.size()) || !(lengths[i] > 0))
+      throw InputError("Problem/mesh: lengths: give " + std::to_string(dim) + " positive values");
+    def.lengths[i] = lengths[i];
+  }
+}
+
+// The contact boundary, the obstacle's direction and gap, and the constraints' formulation.
+void readContact(const ParameterList& contact, ProblemDefinition& def) {
+  const int dim = def.dim;
+  def.contactBoundary = contact.get<std::string>("boundary");
+  if (def.contactBoundary.empty()) return;
+  auto direction = contact.get<Array<double>>("obstacle: direction");
+  if (direction.empty()) {
+    direction.assign(dim, 0.0);
+    direction[dim - 1] = 1.0;
+  }
+  if (static_cast<int>(direction.size()) != dim)
+    throw InputError("Problem/Contact/obstacle: direction: give " + std::to_string(dim) + " values");
+  double norm = 0;
+  for (double c : direction) norm += c * c;
+  norm = std::sqrt(norm);
+  if (!(norm > 0)) throw InputError("Problem/Contact/obstacle: direction: must not be zero");
+  for (int i = 0; i < dim; ++i) def.obstacleDirection[i] = direction[i] / norm;
+
+  const std::string type = contact.get<std::string>("gap: type");
+  const double g0 = contact.get<double>("gap: value");
+  std::string text;
+  if (type == "constant") {
+    std::ostringstream e;
+    e.precision(17);
+    e << g0;
+    text = e.str();
+  } else if (type == "paraboloid") {
+    auto center = contact.get<Array<double>>("gap: center");
+    if (static_cast<int>(center.size()) != dim)
+      throw InputError("Problem/Contact/gap: center: give " + std::to_string(dim) + " values");
+    text = formatGap(g0, center, contact.get<double>("gap: radius"), dim);
+  } else {
+    text = contact.get<std::string>("gap: expression");
+  }
+  def.gap.emplace(text, "Problem/Contact/gap");
+  def.contactFormulation = contact.get<std::string>("formulation") == "weighted gap"
+                               ? ContactFormulation::weightedGap
+                               : ContactFormulation::nodal;
+}
+
+}  // namespace
+
 GmshSource readGmshSource(const ParameterList& user) {
   const ParameterList p = validatedParameters(user, validProblemParameters(), "Problem");
   if (p.get<std::string>("mesh: type") != "gmsh") return {};
@@ -149,20 +212,7 @@ ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) 
   def.dim = meshDim > 0 ? meshDim : p.get<int>("mesh: dimension");
   const int dim = def.dim;
 
-  const auto cells = p.get<Array<int>>("mesh: cells");
-  if (cells.size() != 1 && cells.size() != dim)
-    throw InputError("Problem/mesh: cells: give 1 or " + std::to_string(dim) + " values");
-  for (int i = 0; i < 3; ++i) {
-    def.cells[i] = cells[cells.size() == 1 ? 0 : std::min<int>(i, cells.size() - 1)];
-    if (i < dim && def.cells[i] < 1)
-      throw InputError("Problem/mesh: cells: every value must be >= 1");
-  }
-  const auto lengths = p.get<Array<double>>("mesh: lengths");
-  for (int i = 0; i < dim; ++i) {
-    if (i >= static_cast<int>(lengths.size()) || !(lengths[i] > 0))
-      throw InputError("Problem/mesh: lengths: give " + std::to_string(dim) + " positive values");
-    def.lengths[i] = lengths[i];
-  }
+  readBoxSize(p, def);
   def.meshFile = p.get<std::string>("mesh: file");
   def.meshSizeFactor = p.get<double>("mesh: size factor");
   def.meshRefinements = p.get<int>("mesh: refinements");
@@ -187,43 +237,7 @@ ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) 
   def.dirichlet = boundaryFields(p, "Dirichlet", "displacement: ", dim);
   def.traction = boundaryFields(p, "Traction", "traction: ", dim);
 
-  const ParameterList& contact = p.sublist("Contact");
-  def.contactBoundary = contact.get<std::string>("boundary");
-  if (!def.contactBoundary.empty()) {
-    auto direction = contact.get<Array<double>>("obstacle: direction");
-    if (direction.empty()) {
-      direction.assign(dim, 0.0);
-      direction[dim - 1] = 1.0;
-    }
-    if (static_cast<int>(direction.size()) != dim)
-      throw InputError("Problem/Contact/obstacle: direction: give " + std::to_string(dim) + " values");
-    double norm = 0;
-    for (double c : direction) norm += c * c;
-    norm = std::sqrt(norm);
-    if (!(norm > 0)) throw InputError("Problem/Contact/obstacle: direction: must not be zero");
-    for (int i = 0; i < dim; ++i) def.obstacleDirection[i] = direction[i] / norm;
-
-    const std::string type = contact.get<std::string>("gap: type");
-    const double g0 = contact.get<double>("gap: value");
-    std::string text;
-    if (type == "constant") {
-      std::ostringstream e;
-      e.precision(17);
-      e << g0;
-      text = e.str();
-    } else if (type == "paraboloid") {
-      auto center = contact.get<Array<double>>("gap: center");
-      if (static_cast<int>(center.size()) != dim)
-        throw InputError("Problem/Contact/gap: center: give " + std::to_string(dim) + " values");
-      text = formatGap(g0, center, contact.get<double>("gap: radius"), dim);
-    } else {
-      text = contact.get<std::string>("gap: expression");
-    }
-    def.gap.emplace(text, "Problem/Contact/gap");
-    def.contactFormulation = contact.get<std::string>("formulation") == "weighted gap"
-                                 ? ContactFormulation::weightedGap
-                                 : ContactFormulation::nodal;
-  }
+  readContact(p.sublist("Contact"), def);
   return def;
 }
 

@@ -84,7 +84,70 @@ struct SimplexGrid::Buckets {
       for (i[1] = from[1]; i[1] <= to[1]; ++i[1])
         for (i[0] = from[0]; i[0] <= to[0]; ++i[0]) visit(box(i));
   }
+  // The buckets of the cells (vertices of `cells` indices into `coordinates`, dim per vertex).
+  // Throws InputError for a degenerate cell.
+  static std::unique_ptr<Buckets> over(int dim, const std::vector<double>& coordinates,
+                                       const std::vector<long long>& cells);
 };
+
+// Boxes about as many as the cells, each about a cell wide, over the vertices' bounding box.
+std::unique_ptr<SimplexGrid::Buckets> SimplexGrid::Buckets::over(int dim, const std::vector<double>& coordinates,
+                                                                 const std::vector<long long>& cells) {
+  auto buckets = std::make_unique<Buckets>();
+  Buckets& b = *buckets;
+  b.dim = dim;
+  const std::size_t numVertices = coordinates.size() / dim;
+  const long long numCells = static_cast<long long>(cells.size()) / (dim + 1);
+  std::array<double, 3> upper{};
+  for (int a = 0; a < dim; ++a) {
+    b.lower[a] = upper[a] = numVertices > 0 ? coordinates[a] : 0.0;
+    for (std::size_t v = 0; v < numVertices; ++v) {
+      b.lower[a] = std::min(b.lower[a], coordinates[dim * v + a]);
+      upper[a] = std::max(upper[a], coordinates[dim * v + a]);
+    }
+  }
+  double volume = 1.0;
+  for (int a = 0; a < dim; ++a) volume *= std::max(upper[a] - b.lower[a], 1e-300);
+  const double cellSize = std::pow(volume / std::max<long long>(numCells, 1), 1.0 / dim);
+  b.tolerance = 1e-10 * cellSize;
+  for (int a = 0; a < dim; ++a) {
+    b.count[a] = std::clamp<long long>(static_cast<long long>((upper[a] - b.lower[a]) / cellSize), 1, 1 << 20);
+    b.width[a] = std::max(upper[a] - b.lower[a], 1e-300) / static_cast<double>(b.count[a]);
+  }
+  const long long boxes = b.count[0] * b.count[1] * b.count[2];
+  std::vector<std::vector<long long>> cellLists(boxes), vertexLists(boxes);
+  double x[12], low[3], high[3];
+  for (long long c = 0; c < numCells; ++c) {
+    for (int k = 0; k <= dim; ++k) std::copy_n(&coordinates[dim * cells[(dim + 1) * c + k]], dim, &x[dim * k]);
+    if (!nondegenerate(dim, x)) throw InputError("SimplexGrid: cell " + std::to_string(c) + " is degenerate");
+    for (int a = 0; a < dim; ++a) {
+      low[a] = high[a] = x[a];
+      for (int k = 1; k <= dim; ++k) {
+        low[a] = std::min(low[a], x[dim * k + a]);
+        high[a] = std::max(high[a], x[dim * k + a]);
+      }
+      low[a] -= b.tolerance;
+      high[a] += b.tolerance;
+    }
+    b.forBoxes(low, high, [&](long long box) { cellLists[box].push_back(c); });
+  }
+  for (std::size_t v = 0; v < numVertices; ++v)
+    b.forBoxes(&coordinates[dim * v], &coordinates[dim * v], [&](long long box) {
+      vertexLists[box].push_back(static_cast<long long>(v));
+    });
+  const auto flatten = [](std::vector<std::vector<long long>>& lists, std::vector<long long>& start,
+                          std::vector<long long>& items) {
+    start.assign(1, 0);
+    for (auto& list : lists) {
+      items.insert(items.end(), list.begin(), list.end());
+      start.push_back(static_cast<long long>(items.size()));
+      std::vector<long long>().swap(list);
+    }
+  };
+  flatten(cellLists, b.cellStart, b.cellItems);
+  flatten(vertexLists, b.vertexStart, b.vertexItems);
+  return buckets;
+}
 
 SimplexGrid::SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long long> vertexIds,
                          std::vector<double> coordinates, std::vector<long long> cells)
@@ -108,7 +171,6 @@ SimplexGrid::SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long 
     if (i > 0 && vertexIds_[i] == vertexIds_[i - 1])
       throw InputError("SimplexGrid: vertex " + std::to_string(vertexIds_[i]) + " is given twice");
   }
-  const long long numCells = static_cast<long long>(cells.size()) / (dim + 1);
   cells_.resize(cells.size());
   for (std::size_t e = 0; e < cells.size(); ++e) {
     const auto it = std::lower_bound(vertexIds_.begin(), vertexIds_.end(), cells[e]);
@@ -124,58 +186,7 @@ SimplexGrid::SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long 
   const RCP<const Map> overlapping = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ids), 0, comm));
   numVertices_ = static_cast<long long>(Tpetra::createOneToOne(overlapping)->getGlobalNumElements());
 
-  // Boxes about as many as the cells, each about a cell wide.
-  buckets_ = std::make_unique<Buckets>();
-  Buckets& b = *buckets_;
-  b.dim = dim;
-  std::array<double, 3> upper{};
-  for (int a = 0; a < dim; ++a) {
-    b.lower[a] = upper[a] = numVertices > 0 ? coordinates_[a] : 0.0;
-    for (std::size_t v = 0; v < numVertices; ++v) {
-      b.lower[a] = std::min(b.lower[a], coordinates_[dim * v + a]);
-      upper[a] = std::max(upper[a], coordinates_[dim * v + a]);
-    }
-  }
-  double volume = 1.0;
-  for (int a = 0; a < dim; ++a) volume *= std::max(upper[a] - b.lower[a], 1e-300);
-  const double cellSize = std::pow(volume / std::max<long long>(numCells, 1), 1.0 / dim);
-  b.tolerance = 1e-10 * cellSize;
-  for (int a = 0; a < dim; ++a) {
-    b.count[a] = std::clamp<long long>(static_cast<long long>((upper[a] - b.lower[a]) / cellSize), 1, 1 << 20);
-    b.width[a] = std::max(upper[a] - b.lower[a], 1e-300) / static_cast<double>(b.count[a]);
-  }
-  const long long boxes = b.count[0] * b.count[1] * b.count[2];
-  std::vector<std::vector<long long>> cellLists(boxes), vertexLists(boxes);
-  double x[12], low[3], high[3];
-  for (long long c = 0; c < numCells; ++c) {
-    for (int k = 0; k <= dim; ++k) std::copy_n(&coordinates_[dim * cells_[(dim + 1) * c + k]], dim, &x[dim * k]);
-    if (!nondegenerate(dim, x)) throw InputError("SimplexGrid: cell " + std::to_string(c) + " is degenerate");
-    for (int a = 0; a < dim; ++a) {
-      low[a] = high[a] = x[a];
-      for (int k = 1; k <= dim; ++k) {
-        low[a] = std::min(low[a], x[dim * k + a]);
-        high[a] = std::max(high[a], x[dim * k + a]);
-      }
-      low[a] -= b.tolerance;
-      high[a] += b.tolerance;
-    }
-    b.forBoxes(low, high, [&](long long box) { cellLists[box].push_back(c); });
-  }
-  for (std::size_t v = 0; v < numVertices; ++v)
-    b.forBoxes(&coordinates_[dim * v], &coordinates_[dim * v], [&](long long box) {
-      vertexLists[box].push_back(static_cast<long long>(v));
-    });
-  const auto flatten = [](std::vector<std::vector<long long>>& lists, std::vector<long long>& start,
-                          std::vector<long long>& items) {
-    start.assign(1, 0);
-    for (auto& list : lists) {
-      items.insert(items.end(), list.begin(), list.end());
-      start.push_back(static_cast<long long>(items.size()));
-      std::vector<long long>().swap(list);
-    }
-  };
-  flatten(cellLists, b.cellStart, b.cellItems);
-  flatten(vertexLists, b.vertexStart, b.vertexItems);
+  buckets_ = Buckets::over(dim, coordinates_, cells_);
 }
 
 SimplexGrid::~SimplexGrid() = default;

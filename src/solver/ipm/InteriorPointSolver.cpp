@@ -27,12 +27,10 @@ using detail::ForcingType;
 using detail::Method;
 using detail::StartingPoint;
 
-Teuchos::ParameterList InteriorPointSolver::validParameters() {
-  Teuchos::ParameterList p("Solver");
-  p.set("method", "primal-dual", "\"primal-dual\" (Algorithm 3.2 with slack variables) or \"primal\" (Algorithm 3.1)",
-        choices<Method>({{"primal-dual", Method::PrimalDual}, {"primal", Method::Primal}}, "method"));
-  p.set("kkt: tolerance", 1e-8, "Stop when every relative KKT measure is at most this", range(1e-16, 1.0));
-  p.set("maximum iterations", 200, "Main iterations allowed", range(1, 100000));
+namespace {
+
+// The truncated Newton forcing of both methods.
+void addForcingParameters(Teuchos::ParameterList& p) {
   p.set("forcing: type", "reduction",
         "Truncated Newton forcing: \"reduction\" (each Krylov solve reduces its starting residual by "
         "eta, and reaches the adaptive residual scale times forcing: reduction safeguard), \"adaptive\" "
@@ -58,6 +56,9 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
         "Expert: Forcing \"reduction\": every solve also reaches this times the adaptive forcing's residual "
         "scale, so that the dual residual follows mu where the starting vectors stop improving",
         range(1e-6, 1e6));
+}
+
+void addPrimalDualParameters(Teuchos::ParameterList& p) {
   p.set("starting point: complementarity", 1.0,
         "Expert: Initial s^T y as a multiple of the energy scale |b^T v_hat| of the unconstrained solution "
         "(primal-dual)", range(1e-12, 1e12));
@@ -78,7 +79,10 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
         "on that set (its constraints held with a penalty far below the tolerance, the others released) and "
         "stop there if it meets every KKT tolerance (see doc/algorithms.md)");
   p.set("primal-dual: armijo", 0.01, "Expert: Fixed centering: Armijo constant of the merit backtracking", range(1e-8, 0.5));
+}
 
+// The primal method's, with the paper's adaptive gamma rule.
+void addPrimalParameters(Teuchos::ParameterList& p) {
   p.set("primal: mu0", -1.0,
         "Initial barrier parameter mu_0; -1: from the problem's scale, (starting point: "
         "complementarity) |b^T v_hat| / m (the paper: 1)");
@@ -113,7 +117,19 @@ Teuchos::ParameterList InteriorPointSolver::validParameters() {
   p.set("gamma: increase factor", 1.05, "Expert: gamma <- min(gamma: max, factor * gamma) after more inner iterations",
         range(1.0, 100.0));
   p.set("gamma: max", 0.99, "Expert: Upper bound in the increase rule", range(1e-6, 0.999999));
+}
 
+}  // namespace
+
+Teuchos::ParameterList InteriorPointSolver::validParameters() {
+  Teuchos::ParameterList p("Solver");
+  p.set("method", "primal-dual", "\"primal-dual\" (Algorithm 3.2 with slack variables) or \"primal\" (Algorithm 3.1)",
+        choices<Method>({{"primal-dual", Method::PrimalDual}, {"primal", Method::Primal}}, "method"));
+  p.set("kkt: tolerance", 1e-8, "Stop when every relative KKT measure is at most this", range(1e-16, 1.0));
+  p.set("maximum iterations", 200, "Main iterations allowed", range(1, 100000));
+  addForcingParameters(p);
+  addPrimalDualParameters(p);
+  addPrimalParameters(p);
   p.setParameters(NewtonSystemSolver::validParameters());
   return p;
 }

@@ -34,22 +34,9 @@ RCP<Vector> constraintStiffness(const Vector& diagonalOfQ, const CrsMatrix& A) {
   return q;
 }
 
-Teuchos::ParameterList NewtonSystemSolver::validParameters() {
-  Teuchos::ParameterList p;
-  Teuchos::ParameterList& krylov = p.sublist("Krylov", false, "Krylov solver of the Newton systems");
-  krylov.setParameters(KrylovSolver::validParameters());
-  krylov.set("maximum iterations", 1000, "Krylov iterations allowed per Newton system",
-             range(1, 1000000));
-  krylov.set("initial guess: previous solutions", 2,
-             "Expert: Start each Newton system from the H-orthogonal projection of its solution on this many earlier "
-             "solutions (and the predictor's step, for the corrector); a kept solution carries its product with "
-             "Q, so the projection costs one application of Q per system; 0: start from zero",
-             range(0, 20));
-  krylov.set("initial guess: contact correction", true,
-             "Expert: Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x): one "
-             "subspace solve per Newton system (and one application of H without the projection); needs "
-             "Preconditioner/contact correction");
-  Teuchos::ParameterList& prec = p.sublist("Preconditioner", false, "Preconditioner of H");
+namespace {
+
+void addPreconditionerParameters(Teuchos::ParameterList& prec) {
   prec.set("type", "amg of H",
            "\"none\", \"amg of Q\" (MueLu on Q, built once) or \"amg of H\" (a multigrid of "
            "Q + A^T D A, rebuilt as \"amg of H: rebuild tolerance\" says)",
@@ -114,6 +101,26 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
                "smoother, the same polynomial of H as an operator, reads its degree, ratio eigenvalue, boost "
                "factor and max eigenvalue");
   prec.sublist("MueLu", false, "Passed to MueLu unchanged, over Signorini's defaults");
+}
+
+}  // namespace
+
+Teuchos::ParameterList NewtonSystemSolver::validParameters() {
+  Teuchos::ParameterList p;
+  Teuchos::ParameterList& krylov = p.sublist("Krylov", false, "Krylov solver of the Newton systems");
+  krylov.setParameters(KrylovSolver::validParameters());
+  krylov.set("maximum iterations", 1000, "Krylov iterations allowed per Newton system",
+             range(1, 1000000));
+  krylov.set("initial guess: previous solutions", 2,
+             "Expert: Start each Newton system from the H-orthogonal projection of its solution on this many earlier "
+             "solutions (and the predictor's step, for the corrector); a kept solution carries its product with "
+             "Q, so the projection costs one application of Q per system; 0: start from zero",
+             range(0, 20));
+  krylov.set("initial guess: contact correction", true,
+             "Expert: Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x): one "
+             "subspace solve per Newton system (and one application of H without the projection); needs "
+             "Preconditioner/contact correction");
+  addPreconditionerParameters(p.sublist("Preconditioner", false, "Preconditioner of H"));
   return p;
 }
 
@@ -156,38 +163,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
   const Hierarchy hierarchy = choice<Hierarchy>(prec, "hierarchy");
   const bool haveGrid = qp.grid && !qp.coordinates.is_null();
   if (hierarchy == Hierarchy::Geometric || (hierarchy == Hierarchy::Auto && haveGrid)) {
-    if (!haveGrid)
-      throw InputError("Preconditioner/hierarchy \"geometric\" needs a grid: ContactQP::grid (a GeometricGrid, "
-                       "e.g. a signorini::SimplexGrid of the caller's mesh) and ContactQP::coordinates; the problem "
-                       "builder gives one for a box mesh, a refined Gmsh mesh (Problem/mesh: refinements) or "
-                       "a degree of 2 or 3");
-    // Without Q assembled the fine level cannot be factored: the P_k -> P1 level is taken
-    // however few unknowns the P1 grid has.
-    long long coarsestSize = prec.get<int>("geometric: coarsest size");
-    if (!assembled) coarsestSize = std::min(coarsestSize, qp.blockSize * qp.grid->numVertices());
-    auto geometric = std::make_unique<GeometricMultigridPreconditioner>(
-        *qp.grid, qp.Q->getDomainMap(), stiffness.prescribedDofs(), *qp.coordinates, qp.blockSize,
-        coarsestSize, prec.get<int>("geometric: direct solve size"),
-        prec.sublist("Ifpack2"), muelu, prec.get<int>("geometric: eigenvalue update steps"));
-    if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() > 0 &&
-        (assembled || !qp.gridStiffness.is_null())) {
-      geometric_ = geometric.get();
-      filteredH_ = rcp(new BarrierHessianOperator(qp.Q, qp.A, qp.Qmatrix()));
-      diagonalOfQ_ = stiffness.diagonal();
-      if (!qp.gridStiffness.is_null())
-        geometric_->setGridStiffness(*qp.gridStiffness);
-      else
-        geometric_->setFineStiffness(qp.Qmatrix());
-      geometric_->setFineStiffnessOperator(qp.Q, *diagonalOfQ_);
-    }
-    // A single grid factored exactly is H's inverse: a contact correction would add nothing,
-    // and the weights need no cap, which only serves such a correction.
-    if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() == 0 &&
-        geometric->directCoarsestSolve())
-      correction_ = ContactCorrection::None;
-    amg_ = std::move(geometric);
-    // A rebuild on the geometric levels updates the Galerkin products of the changed rows.
-    rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.0);
+    makeGeometric(qp, prec, stiffness);
   } else {
     amg_ = std::make_unique<MueLuPreconditioner>(muelu, qp.blockSize, qp.nearNullspace(), qp.coordinates);
     // A rebuild of MueLu's hierarchy is a whole setup: only when constraints switch.
@@ -214,6 +190,43 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
     amg_->compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
     amgReady_ = true;
   }
+}
+
+void NewtonSystemSolver::makeGeometric(const ContactQP& qp, const Teuchos::ParameterList& prec,
+                                       const StiffnessParts& stiffness) {
+  const bool assembled = !qp.Qmatrix().is_null();
+  if (!qp.grid || qp.coordinates.is_null())
+    throw InputError("Preconditioner/hierarchy \"geometric\" needs a grid: ContactQP::grid (a GeometricGrid, "
+                     "e.g. a signorini::SimplexGrid of the caller's mesh) and ContactQP::coordinates; the problem "
+                     "builder gives one for a box mesh, a refined Gmsh mesh (Problem/mesh: refinements) or "
+                     "a degree of 2 or 3");
+  // Without Q assembled the fine level cannot be factored: the P_k -> P1 level is taken
+  // however few unknowns the P1 grid has.
+  long long coarsestSize = prec.get<int>("geometric: coarsest size");
+  if (!assembled) coarsestSize = std::min(coarsestSize, qp.blockSize * qp.grid->numVertices());
+  auto geometric = std::make_unique<GeometricMultigridPreconditioner>(
+      *qp.grid, qp.Q->getDomainMap(), stiffness.prescribedDofs(), *qp.coordinates, qp.blockSize,
+      coarsestSize, prec.get<int>("geometric: direct solve size"),
+      prec.sublist("Ifpack2"), prec.sublist("MueLu"), prec.get<int>("geometric: eigenvalue update steps"));
+  if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() > 0 &&
+      (assembled || !qp.gridStiffness.is_null())) {
+    geometric_ = geometric.get();
+    filteredH_ = rcp(new BarrierHessianOperator(qp.Q, qp.A, qp.Qmatrix()));
+    diagonalOfQ_ = stiffness.diagonal();
+    if (!qp.gridStiffness.is_null())
+      geometric_->setGridStiffness(*qp.gridStiffness);
+    else
+      geometric_->setFineStiffness(qp.Qmatrix());
+    geometric_->setFineStiffnessOperator(qp.Q, *diagonalOfQ_);
+  }
+  // A single grid factored exactly is H's inverse: a contact correction would add nothing,
+  // and the weights need no cap, which only serves such a correction.
+  if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() == 0 &&
+      geometric->directCoarsestSolve())
+    correction_ = ContactCorrection::None;
+  amg_ = std::move(geometric);
+  // A rebuild on the geometric levels updates the Galerkin products of the changed rows.
+  rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.0);
 }
 
 void NewtonSystemSolver::setWeights(const Vector& D) {

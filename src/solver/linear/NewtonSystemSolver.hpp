@@ -36,6 +36,8 @@
 
 namespace signorini {
 
+class StiffnessParts;
+
 // The choices of the "Preconditioner" list.
 enum class PreconditionerType { None, AmgOfQ, AmgOfH };
 enum class Hierarchy { Auto, Algebraic, Geometric };
@@ -101,6 +103,8 @@ class NewtonSystemSolver {
 
   // The geometric hierarchy for Q + A^T D' A, D' = `filtered`, without assembling it.
   void buildGeometricForSum(const Vector& filtered);
+  // amg_ on the geometric levels of qp.grid (Preconditioner/hierarchy geometric or auto).
+  void makeGeometric(const ContactQP& qp, const Teuchos::ParameterList& prec, const StiffnessParts& stiffness);
 };
 
 // q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i, on A's row map, from

@@ -41,19 +41,17 @@ struct GeometricMultigridPreconditioner::Level {
 
 namespace {
 
-// P1 interpolation from the grid `coarse` to the owned fine nodes; fills the coarse level's
-// DOF map (the coarse vertices at this rank's fine nodes), coordinates and Dirichlet flags.
-// Collective.
-RCP<CrsMatrix> interpolation(const GeometricGrid& coarse, int blockSize, const RCP<const Map>& fineMap,
-                                 const std::vector<double>& fineCoordinates, const std::vector<char>& fineDirichlet,
-                                 RCP<const Map>& coarseMap, std::vector<double>& coarseCoordinates,
-                                 std::vector<char>& coarseDirichlet) {
+// The coarse level's DOF map: the coarse vertices this rank owns, those at one of its fine
+// nodes (atVertex: each fine node's coarse vertex, or -1), with their coordinates and
+// Dirichlet flags. Collective.
+RCP<const Map> coarseLevelMap(const GeometricGrid& coarse, int blockSize, const RCP<const Comm>& comm,
+                              const std::vector<double>& fineCoordinates, const std::vector<char>& fineDirichlet,
+                              std::vector<long long>& atVertex, std::vector<double>& coarseCoordinates,
+                              std::vector<char>& coarseDirichlet) {
   const int dim = coarse.dimension();
   const std::size_t numFine = fineCoordinates.size() / dim;
-  const auto comm = fineMap->getComm();
-  // The coarse vertices this rank owns: those at one of its fine nodes.
   std::vector<std::pair<long long, std::size_t>> owned;  // (coarse vertex, fine node)
-  std::vector<long long> atVertex(numFine, -1);
+  atVertex.assign(numFine, -1);
   for (std::size_t i = 0; i < numFine; ++i) {
     atVertex[i] = coarse.vertexAt(&fineCoordinates[dim * i]);
     if (atVertex[i] >= 0) owned.emplace_back(atVertex[i], i);
@@ -71,10 +69,27 @@ RCP<CrsMatrix> interpolation(const GeometricGrid& coarse, int blockSize, const R
     }
   }
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  coarseMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(dofs), 0, comm));
+  auto coarseMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(dofs), 0, comm));
   if (coarseMap->getGlobalNumElements() != static_cast<Tpetra::global_size_t>(blockSize * coarse.numVertices()))
     throw InputError("geometric multigrid: the mesh's nodes are not the vertices of a refinement of the " +
                      coarse.description() + "; use Preconditioner/hierarchy \"algebraic\"");
+  return coarseMap;
+}
+
+// P1 interpolation from the grid `coarse` to the owned fine nodes; fills the coarse level's
+// DOF map (the coarse vertices at this rank's fine nodes), coordinates and Dirichlet flags.
+// Collective.
+RCP<CrsMatrix> interpolation(const GeometricGrid& coarse, int blockSize, const RCP<const Map>& fineMap,
+                                 const std::vector<double>& fineCoordinates, const std::vector<char>& fineDirichlet,
+                                 RCP<const Map>& coarseMap, std::vector<double>& coarseCoordinates,
+                                 std::vector<char>& coarseDirichlet) {
+  const int dim = coarse.dimension();
+  const std::size_t numFine = fineCoordinates.size() / dim;
+  const auto comm = fineMap->getComm();
+  std::vector<long long> atVertex;
+  coarseMap = coarseLevelMap(coarse, blockSize, comm, fineCoordinates, fineDirichlet, atVertex, coarseCoordinates,
+                             coarseDirichlet);
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
 
   // Every fine node's simplex and weights; the Dirichlet flags of the coarse DOFs they use.
   std::vector<long long> vertices(numFine * (dim + 1));
