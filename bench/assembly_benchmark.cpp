@@ -47,7 +47,7 @@ int main(int argc, char** argv) {
   json << "{\"dim\": " << dim << ", \"degree\": " << degree << ", \"nx\": " << nx
        << ", \"n\": " << p.qp.b->getGlobalLength() << ", \"m\": " << p.qp.d->getGlobalLength()
        << ", \"nonzeros\": " << p.qp.Qmatrix()->getGlobalNumEntries() << ", \"ranks\": " << comm->getSize()
-       << ", \"serial_mesh_mib\": " << p.space->serialPhaseBytes() / (1024.0 * 1024.0)
+       << ", \"serial_mesh_mib\": " << signorini::distributedSpace(*p.space).serialPhaseBytes() / (1024.0 * 1024.0)
        << ", \"serial_mesh_peak_rss_mib\": " << p.serialMeshPeakMiB
        << ", \"setup_seconds\": " << p.setupSeconds << ", \"assembly_seconds\": " << p.assemblySeconds
        << ", \"peak_rss_mib_max_rank\": " << maxRss << ", \"peak_rss_mib_all_ranks\": " << sumRss << "}";

@@ -29,7 +29,7 @@ int main(int argc, char** argv) {
   const int repeats = argc > 4 ? std::atoi(argv[4]) : 11;
   signorini::AssembledProblem p = signorini::buildProblem(signorini::bench::clampedBox(dim, degree, nx), comm);
   const auto& K = *p.qp.Qmatrix();
-  const auto Q = signorini::matrixFreeStiffness(p.space, p.definition);
+  const auto Q = signorini::matrixFreeStiffness(signorini::distributedSpace(p.space), p.definition);
   signorini::Vector x(K.getDomainMap()), y(K.getRangeMap());
   x.randomize();
   Q->apply(x, y);  // allocates its work vectors before they are counted and timed

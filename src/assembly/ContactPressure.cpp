@@ -158,12 +158,18 @@ RCP<Vector> jacobiScaling(const CrsMatrix& M) {
 
 }  // namespace
 
-ContactPressure::ContactPressure(const DistributedSpace& ds, const ProblemDefinition& problem,
+struct ContactPressure::MultiplierBasis : ContactMultiplierBasis {
+  using ContactMultiplierBasis::ContactMultiplierBasis;
+};
+
+ContactPressure::ContactPressure(const FiniteElementSpace& feSpace, const ProblemDefinition& problem,
                                  const RCP<const Map>& constraintMap)
-    : space_(ds),
-      multipliers_(std::make_shared<ContactMultiplierBasis>(ds.space().basis(), problem.contactFormulation)),
+    : space_(feSpace),
+      multipliers_(std::make_shared<MultiplierBasis>(distributedSpace(feSpace).space().basis(),
+                                                     problem.contactFormulation)),
       weightedGap_(problem.contactFormulation == ContactFormulation::weightedGap),
       constraintMap_(constraintMap) {
+  const DistributedSpace& ds = distributedSpace(feSpace);
   const LagrangeSpace& space = ds.space();
   if (!problem.contactBoundary.empty()) facets_ = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
 
@@ -200,7 +206,7 @@ RCP<Vector> ContactPressure::nodalValues(const Vector& coefficients) const {
     return values;
   }
   // The value at node b of sum_a c_a psi_a is sum_a c_a T_ab, the same from every facet of b.
-  const LagrangeSpace& space = space_.space();
+  const LagrangeSpace& space = distributedSpace(space_).space();
   const std::vector<double> c = overlapValues(coefficients);
   Vector here(overlapMap_);
   for (const auto& [cell, facet] : facets_) {
@@ -216,7 +222,7 @@ RCP<Vector> ContactPressure::nodalValues(const Vector& coefficients) const {
 }
 
 RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
-  const LagrangeSpace& space = space_.space();
+  const LagrangeSpace& space = distributedSpace(space_).space();
   const std::vector<double> activeHere = overlapValues(active);
   Vector loadedHere(overlapMap_);
   for (const auto& [cell, facet] : facets_) {
@@ -271,9 +277,9 @@ RCP<Vector> ContactPressure::lumpedPressure(const Vector& lambda, const Vector& 
 // the lumped pressure is the better; HRZ weights do not suit P2/P3.
 RCP<Vector> ContactPressure::recover(PressureRecovery how, const Vector& lambda, const Vector& active) const {
   if (how == PressureRecovery::Auto)
-    how = space_.space().degree() > 1 ? PressureRecovery::Consistent
-          : space_.dim() == 3          ? PressureRecovery::Patch
-                                       : PressureRecovery::Lumped;
+    how = space_.degree() > 1 ? PressureRecovery::Consistent
+          : space_.dim() == 3 ? PressureRecovery::Patch
+                              : PressureRecovery::Lumped;
   switch (how) {
     case PressureRecovery::Lumped:
       return lumpedPressure(lambda, active);
@@ -309,13 +315,14 @@ std::vector<double> ContactPressure::overlapValues(const Vector& pressure) const
 
 template <class Visit>
 void ContactPressure::forEachQuadraturePoint(const Vector& pressure, Visit&& visit) const {
-  const LagrangeSpace& space = space_.space();
+  const DistributedSpace& ds = distributedSpace(space_);
+  const LagrangeSpace& space = ds.space();
   const int dim = space_.dim(), n = space.nodesPerCell();
   const std::vector<double> values = overlapValues(pressure);
   std::vector<double> coords((dim + 1) * dim);
   FacetQuadrature rule;
   for (const auto& [cell, facet] : facets_) {
-    space_.mesh().cellVertexCoordinates(cell, coords.data());
+    ds.mesh().cellVertexCoordinates(cell, coords.data());
     facetQuadrature(space.basis(), coords.data(), facet, 2 * space.degree() + 2, rule);
     const auto nodes = space.basis().facetNodes(facet);
     for (int q = 0; q < rule.size(); ++q) {
@@ -327,7 +334,7 @@ void ContactPressure::forEachQuadraturePoint(const Vector& pressure, Visit&& vis
 }
 
 std::vector<double> ContactPressure::overlapNodeValues(const Vector& values) const {
-  const auto& overlapNodes = space_.overlapSpaceNodes();
+  const auto& overlapNodes = distributedSpace(space_).overlapSpaceNodes();
   std::vector<GlobalOrdinal> wanted;
   for (long long k : overlapNodeConstraint_)
     if (k >= 0) wanted.push_back(k);

@@ -152,6 +152,22 @@ void DistributedSpace::adopt(detail::MeshPart&& part, int degree) {
   overlapDofMap_ = dofMapOf(overlap, dim(), comm_);
 }
 
+void DistributedSpace::overlapNodeCoordinates(std::size_t i, double* x) const {
+  const int d = dim();
+  std::copy_n(&space_->nodeCoordinates()[d * overlapSpaceNodes_[i]], d, x);
+}
+
+const DistributedSpace& distributedSpace(const FiniteElementSpace& space) {
+  const auto* ds = dynamic_cast<const DistributedSpace*>(&space);
+  if (!ds) throw Error("a FiniteElementSpace that the library did not make (buildProblem makes them)");
+  return *ds;
+}
+
+std::shared_ptr<const DistributedSpace> distributedSpace(const std::shared_ptr<const FiniteElementSpace>& space) {
+  distributedSpace(*space);
+  return std::static_pointer_cast<const DistributedSpace>(space);
+}
+
 std::vector<long long> DistributedSpace::boundaryNodes(int tag) const {
   const auto it = std::lower_bound(boundaryTags_.begin(), boundaryTags_.end(), tag);
   if (it == boundaryTags_.end() || *it != tag) return {};

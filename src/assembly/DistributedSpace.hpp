@@ -16,6 +16,7 @@
 #include "fe/BoxGrid.hpp"
 #include "fe/LagrangeSpace.hpp"
 #include "fe/SimplexMesh.hpp"
+#include "signorini/assembly/FiniteElementSpace.hpp"
 #include "signorini/core/TpetraTypes.hpp"
 
 namespace signorini {
@@ -24,7 +25,7 @@ class CoarseMeshLattice;
 struct RefinedLevel;
 }
 
-class DistributedSpace {
+class DistributedSpace final : public FiniteElementSpace {
  public:
   // Collective. Only rank 0's `globalMesh` is read; the other ranks may pass nullptr. Rank 0
   // lets go of the mesh once the parts are sent, so passing the only reference frees it.
@@ -45,14 +46,18 @@ class DistributedSpace {
   DistributedSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int degree,
                    detail::RefinedLevel& finest);
 
-  const RCP<const Comm>& comm() const { return comm_; }
+  const RCP<const Comm>& comm() const override { return comm_; }
   // This rank's cells as a mesh (vertices and cells renumbered locally, in global order,
   // with the boundary facets of these cells) and the P_k space on it.
   const SimplexMesh& mesh() const { return *mesh_; }
   const LagrangeSpace& space() const { return *space_; }
-  int dim() const { return mesh_->dim; }
-  long long numGlobalNodes() const { return numGlobalNodes_; }
-  long long numGlobalCells() const { return numGlobalCells_; }
+  int dim() const override { return mesh_->dim; }
+  int degree() const override { return space_->degree(); }
+  long long numGlobalNodes() const override { return numGlobalNodes_; }
+  long long numGlobalCells() const override { return numGlobalCells_; }
+  std::size_t numOverlapNodes() const override { return overlapSpaceNodes_.size(); }
+  void overlapNodeCoordinates(std::size_t i, double* x) const override;
+  long long numLocalCells() const override { return mesh_->numCells(); }
 
   // Renumbered (Tpetra) node id of a node of space().
   GlobalOrdinal globalNode(long long spaceNode) const { return nodeId_[spaceNode]; }
@@ -72,7 +77,7 @@ class DistributedSpace {
   const RCP<const Map>& ownedNodeMap() const { return ownedNodeMap_; }
   const RCP<const Map>& overlapNodeMap() const { return overlapNodeMap_; }
   // The same for the degrees of freedom.
-  const RCP<const Map>& ownedDofMap() const { return ownedDofMap_; }
+  const RCP<const Map>& ownedDofMap() const override { return ownedDofMap_; }
   const RCP<const Map>& overlapDofMap() const { return overlapDofMap_; }
 
   // Space node ids of the overlap nodes, in overlapNodeMap() order.
@@ -99,5 +104,10 @@ class DistributedSpace {
   std::vector<long long> boundaryStart_, boundaryNodes_;
   RCP<const Map> ownedNodeMap_, overlapNodeMap_, ownedDofMap_, overlapDofMap_;
 };
+
+// The DistributedSpace behind a space the library made (every FiniteElementSpace of
+// buildProblem is one); throws Error for another.
+const DistributedSpace& distributedSpace(const FiniteElementSpace& space);
+std::shared_ptr<const DistributedSpace> distributedSpace(const std::shared_ptr<const FiniteElementSpace>& space);
 
 }  // namespace signorini

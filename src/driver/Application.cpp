@@ -412,11 +412,12 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   AssembledProblem problem = buildProblem(problemList, comm, baseDirectory.empty() ? "." : baseDirectory);
   const ProblemDefinition& def = problem.definition;
   const long long n = problem.qp.b->getGlobalLength(), m = problem.qp.d->getGlobalLength();
-  const double serialMeshMiB = problem.space->serialPhaseBytes() / (1024.0 * 1024.0);
+  const DistributedSpace& space = distributedSpace(*problem.space);
+  const double serialMeshMiB = space.serialPhaseBytes() / (1024.0 * 1024.0);
   if (root) {
     out << "Signorini: problem \"" << def.name << "\": d = " << def.dim << ", P" << def.degree << ", "
         << problem.space->numGlobalCells() << " cells (";
-    if (problem.space->serialPhaseBytes() > 0)
+    if (space.serialPhaseBytes() > 0)
       out << "serial mesh phase on rank 0: " << serialMeshMiB << " MiB of arrays, ";
     else
       out << "each rank made its own part, ";
@@ -428,7 +429,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   if (!cl.exportQp.empty()) {
     writeQP(problem.qp, cl.exportQp);
     // A P2/P3 space's mesh, for the P_k -> P1 step of a run on these files.
-    if (def.degree > 1) detail::writeCells(*problem.space, cl.exportQp);
+    if (def.degree > 1) detail::writeCells(space, cl.exportQp);
     if (root) out << "Exported Q, b, A, d, coords" << (def.degree > 1 ? ", cells" : "") << " to " << cl.exportQp << "/\n";
   }
 

@@ -250,9 +250,10 @@ std::string checkField(const Field& f, std::size_t entities, const char* what) {
 
 }  // namespace
 
-void writeVtu(const DistributedSpace& space, const std::vector<NodeField>& nodeFields,
+void writeVtu(const FiniteElementSpace& feSpace, const std::vector<NodeField>& nodeFields,
               const std::vector<CellField>& cellFields, const std::string& directory,
               const std::string& basename) {
+  const DistributedSpace& space = distributedSpace(feSpace);
   const Comm& comm = *space.comm();
   const int rank = comm.getRank();
 

@@ -62,7 +62,8 @@ namespace {
 std::shared_ptr<const GeometricGrid> refinedGmshSpace(const Teuchos::ParameterList& problem, const GmshSource& gmsh,
                                                       const std::filesystem::path& file,
                                                       std::shared_ptr<SimplexMesh> mesh, const RCP<const Comm>& comm,
-                                                      AssembledProblem& result) {
+                                                      AssembledProblem& result,
+                                                      std::shared_ptr<const DistributedSpace>& space) {
   const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh));
   result.definition = readProblemDefinition(problem, lattice->dim());
   const ProblemDefinition& def = result.definition;
@@ -71,8 +72,8 @@ std::shared_ptr<const GeometricGrid> refinedGmshSpace(const Teuchos::ParameterLi
   const SimplexRefinement refinement(def.dim, gmsh.refinements);
   if (file.extension() == ".geo") lattice->placeOnGeometry(file.string(), refinement);
   detail::RefinedLevel finest = detail::refineLocally(*lattice, refinement, gmsh.refinements, true);
-  result.space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree, finest);
-  return RefinedMeshGrid::hierarchy(lattice, refinement, *result.space, finest);
+  space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree, finest);
+  return RefinedMeshGrid::hierarchy(lattice, refinement, *space, finest);
 }
 
 // The definition and the space, with the grids of a refined mesh if there are. Every rank
@@ -80,13 +81,14 @@ std::shared_ptr<const GeometricGrid> refinedGmshSpace(const Teuchos::ParameterLi
 // each rank has its part (of the mesh, or of the coarse mesh it refines); its dimension
 // decides the one the rest of the definition is read with.
 std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
-                                               const std::string& baseDirectory, AssembledProblem& result) {
+                                               const std::string& baseDirectory, AssembledProblem& result,
+                                               std::shared_ptr<const DistributedSpace>& space) {
   const GmshSource gmsh = readGmshSource(problem);
   if (gmsh.file.empty()) {
     ProblemDefinition def = readProblemDefinition(problem);
     checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree, !storesNoStiffness(def),
                     def.gridRefinedAtNodes, *comm);
-    result.space = std::make_shared<const DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
+    space = std::make_shared<const DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
     result.definition = std::move(def);
     return nullptr;
   }
@@ -94,38 +96,39 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
   std::filesystem::path file(gmsh.file);
   if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
   detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
-  if (gmsh.refinements > 0) return refinedGmshSpace(problem, gmsh, file, std::move(mesh), comm, result);
+  if (gmsh.refinements > 0) return refinedGmshSpace(problem, gmsh, file, std::move(mesh), comm, result, space);
   int dim = mesh ? mesh->dim : 0;
   Teuchos::broadcast(*comm, 0, 1, &dim);
   result.definition = readProblemDefinition(problem, dim);
   const ProblemDefinition& def = result.definition;
-  result.space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), def.degree);
-  checkMemoryFits(static_cast<double>(def.dim) * result.space->numGlobalNodes(), def.dim, def.degree,
+  space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), def.degree);
+  checkMemoryFits(static_cast<double>(def.dim) * space->numGlobalNodes(), def.dim, def.degree,
                   !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
   return nullptr;
 }
 
-// The QP on result.space, and the grids of the geometric multigrid: a box's or a refined
+// The QP on `space`, and the grids of the geometric multigrid: a box's or a refined
 // mesh's nested ones, a P_k space's own mesh, or that mesh refined at the nodes, whose
 // stiffness is no Galerkin product of Q's.
-void assembleQP(AssembledProblem& result, std::shared_ptr<const GeometricGrid> refinedGrid) {
+void assembleQP(AssembledProblem& result, const std::shared_ptr<const DistributedSpace>& space,
+                std::shared_ptr<const GeometricGrid> refinedGrid) {
   const ProblemDefinition& def = result.definition;
   const bool onlyGridStiffness = storesNoStiffness(def);
-  result.qp = assembleContactQP(*result.space, def, !onlyGridStiffness);
+  result.qp = assembleContactQP(*space, def, !onlyGridStiffness);
   if (def.matrixFreeStiffness) {
     result.qp.Qassembled = result.qp.Qmatrix();
-    result.qp.Q = matrixFreeStiffness(result.space, def);
+    result.qp.Q = matrixFreeStiffness(space, def);
   }
   if (def.gridRefinedAtNodes)
-    result.qp.grid = std::make_shared<MeshVertexGrid>(result.space, MeshVertexGrid::Refinement::atNodes);
+    result.qp.grid = std::make_shared<MeshVertexGrid>(space, MeshVertexGrid::Refinement::atNodes);
   else if (refinedGrid)
     result.qp.grid = std::move(refinedGrid);
   else if (def.meshType == "box")
     result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
   else if (def.degree > 1)
-    result.qp.grid = std::make_shared<MeshVertexGrid>(result.space);
+    result.qp.grid = std::make_shared<MeshVertexGrid>(space);
   if (onlyGridStiffness || def.gridRefinedAtNodes)
-    result.qp.gridStiffness = assembleGridStiffness(*result.space, def, *result.qp.grid);
+    result.qp.gridStiffness = assembleGridStiffness(*space, def, *result.qp.grid);
 }
 
 }  // namespace
@@ -133,6 +136,7 @@ void assembleQP(AssembledProblem& result, std::shared_ptr<const GeometricGrid> r
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                               const std::string& baseDirectory) {
   AssembledProblem result;
+  std::shared_ptr<const DistributedSpace> space;
   std::shared_ptr<const GeometricGrid> refinedGrid;  // the levels of a refined Gmsh mesh
   Teuchos::Time setup("setup"), assembly("assembly");
   {
@@ -140,7 +144,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::meshAndSpace);
     setup.start(true);
     const double residentBefore = residentMiB();
-    refinedGrid = makeSpace(problem, comm, baseDirectory, result);
+    refinedGrid = makeSpace(problem, comm, baseDirectory, result, space);
+    result.space = space;
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);
     result.setupPeakMiBPerRank.resize(comm->getSize());
@@ -151,7 +156,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: assembly"));
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::assembly);
     assembly.start(true);
-    assembleQP(result, std::move(refinedGrid));
+    assembleQP(result, space, std::move(refinedGrid));
     assembly.stop();
   }
   result.setupSeconds = maxOverRanks(*comm, setup.totalElapsedTime());

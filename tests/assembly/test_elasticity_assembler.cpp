@@ -61,7 +61,7 @@ struct Invariants {
 
 Invariants invariants(const AssembledProblem& p) {
   Vector v(p.qp.Q->getDomainMap()), Qv(p.qp.Q->getRangeMap());
-  fillField(*p.space, v);
+  fillField(distributedSpace(*p.space), v);
   p.qp.Q->apply(v, Qv);
   return {p.qp.Qmatrix()->getFrobeniusNorm(), p.qp.b->norm2(), p.qp.A->getFrobeniusNorm(),
           p.qp.d->norm2(), v.dot(Qv), p.qp.b->dot(v)};
@@ -115,7 +115,7 @@ TEST(ElasticityAssembler, PatchTestReproducesLinearFields) {
       AssembledProblem p = buildProblem(list, Tpetra::getDefaultComm());
       Vector v(p.qp.Q->getDomainMap());
       ASSERT_GT(solveLinear(p.qp, v, 1e-13), 0);
-      const auto& ds = *p.space;
+      const DistributedSpace& ds = distributedSpace(*p.space);
       double localError = 0;
       auto data = v.getData();
       for (std::size_t i = 0; i < ds.ownedNodeMap()->getNodeNumElements(); ++i) {
@@ -152,7 +152,7 @@ double manufacturedL2Error(int cells, int degree) {
   AssembledProblem p = buildProblem(list, Tpetra::getDefaultComm());
   Vector v(p.qp.Q->getDomainMap());
   EXPECT_GT(solveLinear(p.qp, v, 1e-12), 0);
-  const DistributedSpace& ds = *p.space;
+  const DistributedSpace& ds = distributedSpace(*p.space);
   Vector u(ds.overlapDofMap());
   u.doImport(v, Import(ds.ownedDofMap(), ds.overlapDofMap()), Tpetra::INSERT);
   auto ud = u.getData();

@@ -92,7 +92,7 @@ TEST(GmshProblem, BoundariesAreFoundByPhysicalNames) {
   auto comm = Tpetra::getDefaultComm();
   AssembledProblem p = rectangle(rectangleProblem(2), comm);
 
-  const DistributedSpace& ds = *p.space;
+  const DistributedSpace& ds = distributedSpace(*p.space);
   EXPECT_EQ(p.definition.dim, 2);
   EXPECT_EQ(ds.dim(), 2);
   long long ownedContactNodes = 0, contactNodes = 0;
@@ -160,7 +160,7 @@ TEST(GmshProblem, PkSpaceGoesToP1OnItsOwnMesh) {
     const RCP<const CrsMatrix> P = multigrid.prolongator(0);
     CrsMatrix PtQP(P->getDomainMap(), 0);
     Tpetra::TripleMatrixMultiply::MultiplyRAP(*P, true, Q, false, *P, false, PtQP);
-    const RCP<const CrsMatrix> grid = assembleGridStiffness(*assembled.space, assembled.definition, *qp.grid);
+    const RCP<const CrsMatrix> grid = assembleGridStiffness(distributedSpace(*assembled.space), assembled.definition, *qp.grid);
     const Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node> toCoarseRows(grid->getRowMap(), PtQP.getRowMap());
     const RCP<CrsMatrix> gridOnCoarseRows = Tpetra::importAndFillCompleteCrsMatrix<CrsMatrix>(
         grid, toCoarseRows, PtQP.getDomainMap(), PtQP.getRangeMap());
@@ -209,8 +209,8 @@ TEST(GmshProblem, RefinedAtNodesTheGridIsTheRefinedMeshsP1Space) {
 
     ProblemDefinition free = refined.definition;  // no Dirichlet rows: the energies of whole fields
     free.dirichlet.clear();
-    const RCP<const CrsMatrix> K = assembleGridStiffness(*refined.space, free, *qp.grid);
-    const RCP<const CrsMatrix> Q = assembleContactQP(*refined.space, free).Qmatrix();
+    const RCP<const CrsMatrix> K = assembleGridStiffness(distributedSpace(*refined.space), free, *qp.grid);
+    const RCP<const CrsMatrix> Q = assembleContactQP(distributedSpace(*refined.space), free).Qmatrix();
     const auto linear = [](const double* x, double* u) {
       u[0] = 0.3 + 1.1 * x[0] - 0.4 * x[1];
       u[1] = -0.2 + 0.7 * x[0] + 0.9 * x[1];
@@ -219,10 +219,10 @@ TEST(GmshProblem, RefinedAtNodesTheGridIsTheRefinedMeshsP1Space) {
       u[0] = 0.5 - x[1];
       u[1] = -0.25 + x[0];
     };
-    const double exact = energy(*Q, *refined.space, linear);
+    const double exact = energy(*Q, distributedSpace(*refined.space), linear);
     EXPECT_GT(exact, 0.0) << label;
-    EXPECT_NEAR(energy(*K, *refined.space, linear), exact, 1e-12 * exact) << label;
-    EXPECT_NEAR(energy(*K, *refined.space, rotation), 0.0, 1e-12 * exact) << label;
+    EXPECT_NEAR(energy(*K, distributedSpace(*refined.space), linear), exact, 1e-12 * exact) << label;
+    EXPECT_NEAR(energy(*K, distributedSpace(*refined.space), rotation), 0.0, 1e-12 * exact) << label;
     EXPECT_LT(K->getGlobalNumEntries(), Q->getGlobalNumEntries()) << label;  // P1 couplings only
     // Every node is a vertex of some piece: a row of its own with a positive diagonal.
     ASSERT_EQ(K->getGlobalNumRows(), 2 * static_cast<Tpetra::global_size_t>(refined.space->numGlobalNodes())) << label;

@@ -45,7 +45,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, AppliesTheAssembledStiffness) {
   const Case k = GetParam();
   auto comm = Tpetra::getDefaultComm();
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), comm);
-  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(problem.space, problem.definition);
+  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(distributedSpace(problem.space), problem.definition);
   const CrsMatrix& K = *problem.qp.Qmatrix();
   ASSERT_TRUE(Q->getDomainMap()->isSameAs(*K.getDomainMap()));
   ASSERT_TRUE(Q->getRangeMap()->isSameAs(*K.getRangeMap()));
@@ -76,7 +76,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, AppliesTheAssembledStiffness) {
 TEST_P(MatrixFreeElasticityOperatorTest, DiagonalIsTheAssembledOne) {
   const Case k = GetParam();
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), Tpetra::getDefaultComm());
-  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(problem.space, problem.definition);
+  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(distributedSpace(problem.space), problem.definition);
   const CrsMatrix& K = *problem.qp.Qmatrix();
   Vector expected(K.getRowMap()), got(K.getRowMap());
   K.getLocalDiagCopy(expected);
@@ -89,7 +89,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, DiagonalIsTheAssembledOne) {
 TEST_P(MatrixFreeElasticityOperatorTest, SelectedRowsAndPrescribedDofsAreTheAssembledOnes) {
   const Case k = GetParam();
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), Tpetra::getDefaultComm());
-  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(problem.space, problem.definition);
+  const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(distributedSpace(problem.space), problem.definition);
   const CrsMatrix& K = *problem.qp.Qmatrix();
   EXPECT_EQ(Q->prescribedDofs(), prescribedRows(K));
 

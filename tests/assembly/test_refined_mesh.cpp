@@ -236,7 +236,7 @@ TEST(RefinedMeshGeometry, NewBoundaryVerticesLieOnTheGeometry) {
     p.set("mesh: size factor", name == "half-disk-2d" ? 4.0 : 3.0);
     p.set("mesh: refinements", 2);
     const AssembledProblem problem = buildProblem(p, comm, signorini::testing::sourceDir() + "/examples/hertz");
-    const DistributedSpace& ds = *problem.space;
+    const DistributedSpace& ds = distributedSpace(*problem.space);
     const int dim = ds.dim();
     double worst = 0.0;
     long long count = 0;

@@ -10,7 +10,8 @@ A file of one module includes headers of its own module and of the modules it ma
     io        core, solver, assembly, problem   (writes what assembly computed: no mechanics)
     driver    every module
 
-Includes are rooted at src/
+An installed header names no private type: a class it declares at namespace scope without
+defining it must be defined in an installed header. Includes are rooted at src/
 or include/ (no "../"); an installed header (include/signorini/) includes installed headers
 only. The umbrella header include/signorini/signorini.hpp stands above every module.
 Prints every violation; exit status 1 if there is one.
@@ -32,6 +33,8 @@ USES = {
 }
 ORDER = list(USES)
 INCLUDE = re.compile(r'^\s*#\s*include\s+"([^"]+)"', re.M)
+FORWARD = re.compile(r'^(?:class|struct)\s+(\w+)\s*;', re.M)  # at namespace scope: not indented
+DEFINITION = re.compile(r'^\s*(?:class|struct)\s+(\w+)\b(?:\s+final)?\s*[:{]', re.M)
 
 
 def module_of_file(root, path):
@@ -82,10 +85,26 @@ def violations(root):
                         yield '%s: %s includes "%s" from %s, which %s may not use' % (rel, module, target, used, module)
 
 
+def private_types(root):
+    """Forward declarations in installed headers of classes no installed header defines."""
+    texts = {}
+    for directory, _, names in os.walk(os.path.join(root, "include", "signorini")):
+        for name in sorted(names):
+            if name.endswith(".hpp"):
+                path = os.path.join(directory, name)
+                with open(path) as f:
+                    texts[os.path.relpath(path, root)] = f.read()
+    defined = {name for text in texts.values() for name in DEFINITION.findall(text)}
+    for rel, text in sorted(texts.items()):
+        for name in FORWARD.findall(text):
+            if name not in defined:
+                yield "%s: installed header names the private type %s" % (rel, name)
+
+
 def main():
     root = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.dirname(os.path.dirname(
         os.path.abspath(__file__))))
-    found = list(violations(root))
+    found = list(violations(root)) + list(private_types(root))
     for line in found:
         print(line)
     print("module layering: %d violation(s)" % len(found))

@@ -37,9 +37,9 @@ TEST(SimplexGrid, GivesAPkSpaceThePOneStepOfItsMesh) {
       Teuchos::ParameterList problem = signorini::testing::assembledShippedProblem(name);
       problem.set("element: degree", degree);
       AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
-      p.qp.grid = std::make_shared<MeshVertexGrid>(p.space);
+      p.qp.grid = std::make_shared<MeshVertexGrid>(distributedSpace(p.space));
       const SolveResult own = InteriorPointSolver().solve(p.qp);
-      const auto grid = gridOf(*p.space);
+      const auto grid = gridOf(distributedSpace(*p.space));
       EXPECT_EQ(grid->numVertices(), p.qp.grid->numVertices()) << label;
       p.qp.grid = grid;
       const SolveResult given = InteriorPointSolver().solve(p.qp);

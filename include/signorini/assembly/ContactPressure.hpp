@@ -18,13 +18,11 @@
 #include <vector>
 
 #include "signorini/assembly/ContactStatistics.hpp"
+#include "signorini/assembly/FiniteElementSpace.hpp"
 #include "signorini/assembly/ProblemDefinition.hpp"
 #include "signorini/core/TpetraTypes.hpp"
 
 namespace signorini {
-
-class ContactMultiplierBasis;
-class DistributedSpace;
 
 /// Pressure values at quadrature points of the contact boundary (exact for degree 2k + 2),
 /// this rank's facets: points (dim coordinates each), weights (true measure), pressures.
@@ -43,7 +41,10 @@ class ContactPressure {
  public:
   /// Collective. `constraintMap` is A's range map: one constraint per contact node, as the
   /// assembler numbers them. Assembles M once.
-  ContactPressure(const DistributedSpace& space, const ProblemDefinition& problem, const RCP<const Map>& constraintMap);
+  /// `space` is the one the problem was assembled on (AssembledProblem::space) and must
+  /// outlive the recovery.
+  ContactPressure(const FiniteElementSpace& space, const ProblemDefinition& problem,
+                  const RCP<const Map>& constraintMap);
 
   /// The pressure's nodal values on the constraint map, 0 off the nodes L of the facets that
   /// have a node with active != 0. Nodal constraints: M_LL p_L = -lambda_L (paper's sign,
@@ -92,8 +93,10 @@ class ContactPressure {
   template <class Visit>
   void forEachQuadraturePoint(const Vector& pressure, Visit&& visit) const;
 
-  const DistributedSpace& space_;
-  std::shared_ptr<const ContactMultiplierBasis> multipliers_;
+  struct MultiplierBasis;  ///< the basis psi of the multipliers on the contact facets
+
+  const FiniteElementSpace& space_;
+  std::shared_ptr<const MultiplierBasis> multipliers_;
   bool weightedGap_;
   RCP<const Map> constraintMap_, overlapMap_;
   RCP<CrsMatrix> mass_, scaledMass_;

@@ -7,20 +7,19 @@
 #include <string>
 #include <vector>
 
+#include "signorini/assembly/FiniteElementSpace.hpp"
+
 namespace signorini {
 
-class DistributedSpace;
-
-/// A field given per overlap node of this rank, in overlapSpaceNodes() order, `components`
-/// values per node.
+/// A field given per overlap node of this rank (FiniteElementSpace::numOverlapNodes(), in
+/// that order), `components` values per node.
 struct NodeField {
   std::string name;
   int components = 1;
   std::vector<double> values;
 };
 
-/// A field given per cell of this rank, in space.mesh() order (space.globalCell() gives their
-/// ids in the global mesh).
+/// A field given per cell of this rank (FiniteElementSpace::numLocalCells(), in that order).
 struct CellField {
   std::string name;
   int components = 1;
@@ -34,7 +33,7 @@ struct CellField {
 /// directory is created if absent. Collective over space.comm(); every rank passes the same
 /// field names and component counts. Throws Error (on every rank) if a field has the wrong
 /// size or a file or the directory cannot be written.
-void writeVtu(const DistributedSpace& space, const std::vector<NodeField>& nodeFields,
+void writeVtu(const FiniteElementSpace& space, const std::vector<NodeField>& nodeFields,
               const std::vector<CellField>& cellFields, const std::string& directory,
               const std::string& basename = "solution");
 

@@ -9,12 +9,11 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "signorini/assembly/FiniteElementSpace.hpp"
 #include "signorini/assembly/ProblemDefinition.hpp"
 #include "signorini/solver/ContactQP.hpp"
 
 namespace signorini {
-
-class DistributedSpace;
 
 /// A distributed problem ready to solve: the QP and what output needs (the definition and
 /// the space). Move-only; shares the space with a matrix-free Q (which applies Q on it, so a
@@ -26,8 +25,8 @@ struct AssembledProblem {
   ~AssembledProblem();
 
   ProblemDefinition definition;
-  /// This rank's mesh and P_k space with their global numbering (for output and the pressure).
-  std::shared_ptr<const DistributedSpace> space;
+  /// The distributed P_k space (for output and the pressure).
+  std::shared_ptr<const FiniteElementSpace> space;
   ContactQP qp;
   double setupSeconds = 0, assemblySeconds = 0;  ///< max over ranks
   /// Rank 0's peak resident set during mesh and space, above its size before them (METIS'

@@ -412,7 +412,7 @@ TEST(GeometricMultigrid, GridStiffnessIsTheGalerkinProductOfQ) {
     D.putScalar(10.0 * diagonal.normInf());
     H.setWeights(D);
     const RCP<const CrsMatrix> C = H.contactTerm(D);
-    const RCP<const CrsMatrix> grid = assembleGridStiffness(*problem.space, problem.definition, *qp.grid);
+    const RCP<const CrsMatrix> grid = assembleGridStiffness(distributedSpace(*problem.space), problem.definition, *qp.grid);
     GeometricMultigridPreconditioner fromQ = multigrid(qp, 20, 0), fromGrid = multigrid(qp, 20, 0);
     ASSERT_GE(fromQ.geometricLevels(), 2) << label;
     fromQ.setFineStiffness(qp.Qmatrix());
