@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
   std::ostringstream json;
   json << "{\"dim\": " << dim << ", \"degree\": " << degree << ", \"nx\": " << nx
        << ", \"n\": " << p.qp.b->getGlobalLength() << ", \"m\": " << p.qp.d->getGlobalLength()
-       << ", \"nonzeros\": " << p.qp.Qmatrix()->getGlobalNumEntries() << ", \"ranks\": " << comm->getSize()
+       << ", \"nonzeros\": " << signorini::assembledStiffness(p.qp, p.multigrid)->getGlobalNumEntries() << ", \"ranks\": " << comm->getSize()
        << ", \"serial_mesh_mib\": " << signorini::distributedSpace(*p.space).serialPhaseBytes() / (1024.0 * 1024.0)
        << ", \"serial_mesh_peak_rss_mib\": " << p.serialMeshPeakMiB
        << ", \"setup_seconds\": " << p.setupSeconds << ", \"assembly_seconds\": " << p.assemblySeconds

@@ -30,7 +30,7 @@ int main(int argc, char** argv) {
   const int dim = std::atoi(argv[1]), nx = std::atoi(argv[2]);
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 5;
   const AssembledProblem p = buildProblem(bench::clampedBox(dim, 1, nx), comm);
-  const auto Q = Teuchos::rcp_const_cast<CrsMatrix>(p.qp.Qmatrix());
+  const auto Q = Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(p.qp, p.multigrid));
 
   MultiVector b(Q->getRangeMap(), 1), x(Q->getDomainMap(), 1);
   b.randomize();

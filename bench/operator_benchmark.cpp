@@ -28,7 +28,7 @@ int main(int argc, char** argv) {
   const int dim = std::atoi(argv[1]), degree = std::atoi(argv[2]), nx = std::atoi(argv[3]);
   const int repeats = argc > 4 ? std::atoi(argv[4]) : 11;
   signorini::AssembledProblem p = signorini::buildProblem(signorini::bench::clampedBox(dim, degree, nx), comm);
-  const auto& K = *p.qp.Qmatrix();
+  const auto& K = *signorini::assembledStiffness(p.qp, p.multigrid);
   const auto Q = signorini::matrixFreeStiffness(signorini::distributedSpace(p.space), p.definition);
   signorini::Vector x(K.getDomainMap()), y(K.getRangeMap());
   x.randomize();

@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
 
   try {
     AssembledProblem assembled = buildProblem(halfDiskProblem(argv[1], sizeFactor, refinements), comm);
-    const SolveResult result = InteriorPointSolver().solve(assembled.qp);
+    const SolveResult result = InteriorPointSolver().solve(assembled.qp, assembled.multigrid);
     if (!result.converged()) {
       if (root) std::fprintf(stderr, "hertz_gmsh: %s\n", result.message.c_str());
       return 1;

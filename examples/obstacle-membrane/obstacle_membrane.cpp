@@ -71,13 +71,12 @@ int main(int argc, char** argv) {
   A->fillComplete(map, map);  // domain: the unknowns; range: the constraints
 
   // 2. The QP. Q is a CrsMatrix, so the default preconditioner (MueLu) can use it; a scalar
-  //    problem needs no rigid body modes (blockSize 1).
+  //    problem needs no rigid body modes, nor anything else a MultigridInput could give.
   ContactQP qp;
   qp.Q = Q;
   qp.b = b;
   qp.A = A;
   qp.d = d;
-  qp.blockSize = 1;
 
   // 3. Solve with the default parameters (primal-dual, Mehrotra, CG + MueLu).
   const SolveResult result = InteriorPointSolver().solve(qp);

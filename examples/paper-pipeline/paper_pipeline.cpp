@@ -85,7 +85,7 @@ int main(int argc, char** argv) {
     // 3. The solve, followed by the observer.
     InteriorPointSolver solver(solverParameters);
     MainIterationPrinter printer(root);
-    const SolveResult result = solver.solve(assembled.qp, nullptr, &printer);
+    const SolveResult result = solver.solve(assembled.qp, assembled.multigrid, nullptr, &printer);
 
     // 4. Contact pressure and statistics, then the ParaView output.
     const RCP<Vector> active = activeIndicator(assembled.qp, *result.v, *result.lambda);

@@ -26,6 +26,7 @@
 #include "signorini/solver/InteriorPointSolver.hpp"
 #include "signorini/solver/IterationObserver.hpp"
 #include "signorini/solver/KKTMeasures.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 #include "signorini/solver/SimplexGrid.hpp"
 #include "signorini/solver/SolveResult.hpp"
 #include "signorini/solver/StiffnessOperator.hpp"

@@ -554,9 +554,14 @@ ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition&
   const ContactConstraints constraints = contactConstraints(ds, problem, dirichlet);
   qp.A = constraints.A;
   qp.d = constraints.d;
-  qp.coordinates = ownedNodeCoordinates(ds);
-  qp.blockSize = dim;
   return qp;
+}
+
+MultigridInput meshMultigridInput(const DistributedSpace& ds) {
+  MultigridInput multigrid;
+  multigrid.blockSize = ds.dim();
+  multigrid.coordinates = ownedNodeCoordinates(ds);
+  return multigrid;
 }
 
 }  // namespace signorini

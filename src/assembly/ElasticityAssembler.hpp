@@ -9,8 +9,9 @@
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/MatrixFreeElasticityOperator.hpp"
 #include "signorini/assembly/ProblemDefinition.hpp"
-#include "signorini/solver/ContactQP.hpp"
 #include "signorini/core/GeometricGrid.hpp"
+#include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 
 namespace signorini {
 
@@ -19,10 +20,14 @@ namespace signorini {
 ContactQP assembleContactQP(const DistributedSpace& space, const ProblemDefinition& problem,
                             bool assembleStiffness = true);
 
+// What the space gives the multigrid of every mesh: its block size (the dimension) and the
+// coordinates of the owned nodes. Grids are the problem builder's.
+MultigridInput meshMultigridInput(const DistributedSpace& space);
+
 // The P1 stiffness of `grid`, the space's mesh (a MeshVertexGrid or a BoxGrid of the same
 // cells) or, if grid.refinesFineCells(), that mesh split at the nodes (LagrangeBasis::
 // subSimplices): DOF dim * (grid vertex) + component, prescribed DOFs (those of the P_k space
-// at the vertices) eliminated to unit rows (ContactQP::gridStiffness). On the mesh's own
+// at the vertices) eliminated to unit rows (MultigridInput::gridStiffness). On the mesh's own
 // grid it is P^T Q P for Q of assembleContactQP and P the P1 interpolation from the grid that
 // the geometric multigrid uses. Rows on a one-to-one map of the vertices of each rank's
 // cells. Collective.

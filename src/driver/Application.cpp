@@ -330,8 +330,8 @@ RunParameters runParameters(const CommandLine& cl, const Comm& comm) {
 }
 
 // One solve with the iteration log on rank 0; its time is the slowest rank's.
-SolveResult solveLogged(const ContactQP& qp, const Teuchos::ParameterList& solverParameters, std::ostream& out,
-                        double& seconds) {
+SolveResult solveLogged(const ContactQP& qp, const MultigridInput& multigrid,
+                        const Teuchos::ParameterList& solverParameters, std::ostream& out, double& seconds) {
   const Comm& comm = *qp.Q->getDomainMap()->getComm();
   InteriorPointSolver solver(solverParameters);
   IterationLog log(out, comm.getRank() == 0);
@@ -341,7 +341,7 @@ SolveResult solveLogged(const ContactQP& qp, const Teuchos::ParameterList& solve
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve"));
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::solve);
-    result = solver.solve(qp, nullptr, &log);
+    result = solver.solve(qp, multigrid, nullptr, &log);
   }
   seconds = maxOverRanks(comm, solveTime.stop());
   return result;
@@ -372,17 +372,18 @@ SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostre
   const RunParameters run = runParameters(cl, *comm);
   Teuchos::Time setup("setup");
   setup.start(true);
-  const ContactQP qp = readQP(cl.qp, comm);
+  const QPFromFiles files = readQP(cl.qp, comm);
+  const ContactQP& qp = files.qp;
   const double setupSeconds = maxOverRanks(*comm, setup.stop());
   const long long n = qp.b->getGlobalLength(), m = qp.d->getGlobalLength();
   if (comm->getRank() == 0)
-    out << "Signorini: QP of " << cl.qp << "/: n = " << n << ", m = " << m << ", " << qp.blockSize
+    out << "Signorini: QP of " << cl.qp << "/: n = " << n << ", m = " << m << ", " << files.multigrid.blockSize
         << " unknowns per node, " << comm->getSize() << " MPI rank(s); read in " << setupSeconds << " s\n";
   RunSummary summary;
-  SolveResult result = solveLogged(qp, run.validated.sublist("Solver"), out, summary.solveSeconds);
+  SolveResult result = solveLogged(qp, files.multigrid, run.validated.sublist("Solver"), out, summary.solveSeconds);
   summary.problem = "qp:" + cl.qp;
   summary.method = run.validated.sublist("Solver").get<std::string>("method");
-  summary.dim = qp.blockSize;
+  summary.dim = files.multigrid.blockSize;
   summary.ranks = comm->getSize();
   summary.n = n;
   summary.m = m;
@@ -427,14 +428,14 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   }
 
   if (!cl.exportQp.empty()) {
-    writeQP(problem.qp, cl.exportQp);
+    writeQP(problem.qp, problem.multigrid, cl.exportQp);
     // A P2/P3 space's mesh, for the P_k -> P1 step of a run on these files.
     if (def.degree > 1) detail::writeCells(space, cl.exportQp);
     if (root) out << "Exported Q, b, A, d, coords" << (def.degree > 1 ? ", cells" : "") << " to " << cl.exportQp << "/\n";
   }
 
   RunSummary summary;
-  SolveResult result = solveLogged(problem.qp, params.sublist("Solver"), out, summary.solveSeconds);
+  SolveResult result = solveLogged(problem.qp, problem.multigrid, params.sublist("Solver"), out, summary.solveSeconds);
 
   const Teuchos::ParameterList& output = params.sublist("Output");
   const bool finite = isFinite(result);

@@ -206,12 +206,14 @@ std::shared_ptr<const GeometricGrid> cellGrid(const std::string& path, const Mul
 
 }  // namespace
 
-void writeQP(const ContactQP& qp, const std::string& directory) {
-  const RCP<const CrsMatrix> Q = qp.Qmatrix();
+void writeQP(const ContactQP& qp, const MultigridInput& multigrid, const std::string& directory) {
+  const RCP<const CrsMatrix> Q = assembledStiffness(qp, multigrid);
   if (Q.is_null())
-    throw InputError("writeQP needs Q as an assembled matrix (ContactQP::Q a CrsMatrix, or Qassembled); from the "
-                     "command line, set Problem/stiffness: operator to \"assembled\"");
-  if (qp.coordinates.is_null()) throw InputError("writeQP needs the node coordinates (ContactQP::coordinates)");
+    throw InputError("writeQP needs Q as an assembled matrix (ContactQP::Q a CrsMatrix, or "
+                     "MultigridInput::assembledQ); from the command line, set Problem/stiffness: operator to "
+                     "\"assembled\"");
+  if (multigrid.coordinates.is_null())
+    throw InputError("writeQP needs the node coordinates (MultigridInput::coordinates)");
   const Comm& comm = *Q->getComm();
   detail::runOnRoot(comm, [&] {
     std::error_code error;
@@ -222,7 +224,7 @@ void writeQP(const ContactQP& qp, const std::string& directory) {
   Writer::writeSparseFile(directory + "/A.mtx", qp.A, "A", "contact constraints A v <= d");
   Writer::writeDenseFile(directory + "/b.mtx", qp.b, "b", "load vector");
   Writer::writeDenseFile(directory + "/d.mtx", qp.d, "d", "contact gaps");
-  Writer::writeDenseFile(directory + "/coords.mtx", qp.coordinates, "coords",
+  Writer::writeDenseFile(directory + "/coords.mtx", multigrid.coordinates, "coords",
                          "node coordinates; DOF dim*node+c is component c of node node");
 }
 
@@ -243,7 +245,7 @@ void detail::writeCells(const DistributedSpace& space, const std::string& direct
                          "P1 cells of the mesh: the node numbers (from 0) of each cell's vertices");
 }
 
-ContactQP readQP(const std::string& directory, const RCP<const Comm>& comm) {
+QPFromFiles readQP(const std::string& directory, const RCP<const Comm>& comm) {
   const QPSizes sizes = checkedSizes(directory, *comm);
   const auto file = [&](const char* name) { return directory + "/" + name; };
   // Whole nodes on every rank, an equal share of them; their DOFs contiguous, node-interlaced.
@@ -252,9 +254,11 @@ ContactQP readQP(const std::string& directory, const RCP<const Comm>& comm) {
       rcp(new Map(sizes.n, sizes.dim * nodeMap->getNodeNumElements(), 0, comm));
   RCP<const Map> constraintMap = rcp(new Map(sizes.m, 0, comm));
 
-  ContactQP qp;
-  qp.blockSize = static_cast<int>(sizes.dim);
-  qp.coordinates = readOrRefuse(file("coords.mtx"), [&] { return Reader::readDenseFile(file("coords.mtx"), comm, nodeMap); });
+  QPFromFiles files;
+  ContactQP& qp = files.qp;
+  MultigridInput& multigrid = files.multigrid;
+  multigrid.blockSize = static_cast<int>(sizes.dim);
+  multigrid.coordinates = readOrRefuse(file("coords.mtx"), [&] { return Reader::readDenseFile(file("coords.mtx"), comm, nodeMap); });
   RCP<const Map> noColumnMap;
   qp.Q = readOrRefuse(file("Q.mtx"),
                       [&] { return Reader::readSparseFile(file("Q.mtx"), dofMap, noColumnMap, dofMap, dofMap); });
@@ -276,8 +280,8 @@ ContactQP readQP(const std::string& directory, const RCP<const Comm>& comm) {
   d->doImport(*evenD, move, Tpetra::INSERT);
   qp.A = A;
   qp.d = d;
-  qp.grid = cellGrid(file("cells.mtx"), *qp.coordinates, qp.blockSize);
-  return qp;
+  multigrid.grid = cellGrid(file("cells.mtx"), *multigrid.coordinates, multigrid.blockSize);
+  return files;
 }
 
 }  // namespace signorini

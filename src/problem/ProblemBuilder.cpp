@@ -115,20 +115,22 @@ void assembleQP(AssembledProblem& result, const std::shared_ptr<const Distribute
   const ProblemDefinition& def = result.definition;
   const bool onlyGridStiffness = storesNoStiffness(def);
   result.qp = assembleContactQP(*space, def, !onlyGridStiffness);
+  MultigridInput& multigrid = result.multigrid;
+  multigrid = meshMultigridInput(*space);
   if (def.matrixFreeStiffness) {
-    result.qp.Qassembled = result.qp.Qmatrix();
+    multigrid.assembledQ = assembledStiffness(result.qp, multigrid);
     result.qp.Q = matrixFreeStiffness(space, def);
   }
   if (def.gridRefinedAtNodes)
-    result.qp.grid = std::make_shared<MeshVertexGrid>(space, MeshVertexGrid::Refinement::atNodes);
+    multigrid.grid = std::make_shared<MeshVertexGrid>(space, MeshVertexGrid::Refinement::atNodes);
   else if (refinedGrid)
-    result.qp.grid = std::move(refinedGrid);
+    multigrid.grid = std::move(refinedGrid);
   else if (def.meshType == "box")
-    result.qp.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
+    multigrid.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
   else if (def.degree > 1)
-    result.qp.grid = std::make_shared<MeshVertexGrid>(space);
+    multigrid.grid = std::make_shared<MeshVertexGrid>(space);
   if (onlyGridStiffness || def.gridRefinedAtNodes)
-    result.qp.gridStiffness = assembleGridStiffness(*space, def, *result.qp.grid);
+    multigrid.gridStiffness = assembleGridStiffness(*space, def, *multigrid.grid);
 }
 
 }  // namespace

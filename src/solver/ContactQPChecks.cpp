@@ -46,9 +46,9 @@ void checkStiffness(const Operator& Q) {
 
 }  // namespace
 
-void checkContactQP(const ContactQP& qp) {
+void checkContactQP(const ContactQP& qp, const MultigridInput& multigrid) {
   if (qp.Q.is_null() || qp.b.is_null() || qp.A.is_null() || qp.d.is_null()) refuse("Q, b, A and d must all be set");
-  if (qp.blockSize < 1 || qp.blockSize > 3) refuse("blockSize must be 1, 2 or 3 (unknowns per node)");
+  if (multigrid.blockSize < 1 || multigrid.blockSize > 3) refuse("MultigridInput::blockSize must be 1, 2 or 3 (unknowns per node)");
   const Map& domain = *qp.Q->getDomainMap();
   if (!qp.b->getMap()->isSameAs(domain)) refuse("b must live on Q's domain map");
   if (!qp.A->getDomainMap()->isSameAs(domain)) refuse("A's domain map must be Q's domain map");
@@ -61,9 +61,9 @@ void checkContactQP(const ContactQP& qp) {
     qp.A->apply(ones, Aones);
     if (!std::isfinite(Aones.norm1())) refuse("A has an entry that is not finite");
   }
-  const long long split = firstSplitNode(domain, qp.blockSize);
+  const long long split = firstSplitNode(domain, multigrid.blockSize);
   if (split >= 0)
-    refuse("Q's domain map splits the " + std::to_string(qp.blockSize) + " unknowns of a node (at global index " +
+    refuse("Q's domain map splits the " + std::to_string(multigrid.blockSize) + " unknowns of a node (at global index " +
            std::to_string(split) + "): every rank must hold whole nodes, unknown blockSize * node + component; "
            "build the map by nodes (signorini::readQP does) rather than by an even split of the unknowns");
   checkStiffness(*qp.Q);

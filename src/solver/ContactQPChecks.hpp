@@ -4,10 +4,11 @@
 // MueLu or Belos: the pieces present, their maps consistent, whole nodes on every rank, the
 // entries finite, Q symmetric (checked on a random pair of vectors).
 #include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 
 namespace signorini {
 
 // Throws InputError (on every rank) naming the member and what to change. Collective.
-void checkContactQP(const ContactQP& qp);
+void checkContactQP(const ContactQP& qp, const MultigridInput& multigrid);
 
 }  // namespace signorini

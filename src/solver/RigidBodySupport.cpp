@@ -70,8 +70,8 @@ RCP<MultiVector> combine(const MultiVector& U, const Dense& Y, int count) {
 
 // The stiffness scale of Q: its mean diagonal entry, or the Rayleigh quotient of a random
 // vector (the same in expectation) when Q is an operator only.
-double stiffnessScale(const ContactQP& qp) {
-  const StiffnessParts stiffness(qp);
+double stiffnessScale(const ContactQP& qp, const MultigridInput& multigrid) {
+  const StiffnessParts stiffness(qp, multigrid);
   if (stiffness.available()) return stiffness.diagonal()->meanValue();
   Vector x(qp.Q->getDomainMap());
   x.randomize();
@@ -103,8 +103,8 @@ std::string vectorText(const double* v, int dim, bool keepSign) {
 // "a translation along (0, 1)" or "a rotation about an axis along (0, 0, 1)" for the rigid
 // motion u (blockSize components per node); a direction of either sign unless `keepSign`. The axis of u(x) = t + w x (x - x0) solves
 // J w = sum (x - x0) x (u - u0), J the inertia tensor of the nodes about their centroid x0.
-std::string describeMotion(const Vector& u, const ContactQP& qp, bool keepSign) {
-  const int dim = qp.blockSize;
+std::string describeMotion(const Vector& u, const MultigridInput& multigrid, bool keepSign) {
+  const int dim = multigrid.blockSize;
   const Comm& comm = *u.getMap()->getComm();
   auto data = u.getData();
   const std::size_t nodes = u.getLocalLength() / dim;
@@ -116,10 +116,10 @@ std::string describeMotion(const Vector& u, const ContactQP& qp, bool keepSign) 
   double meanSquare = 0;
   for (int c = 0; c < dim; ++c) meanSquare += mean[c] * mean[c];
   if (square - numNodes * meanSquare <= 1e-10 * square) return "a translation along " + vectorText(mean, dim, keepSign);
-  if (dim != 3 || qp.coordinates.is_null()) return "a rotation";
+  if (dim != 3 || multigrid.coordinates.is_null()) return "a rotation";
 
   Teuchos::ArrayRCP<const double> x[3];
-  for (int c = 0; c < 3; ++c) x[c] = qp.coordinates->getData(c);
+  for (int c = 0; c < 3; ++c) x[c] = multigrid.coordinates->getData(c);
   double centroid[3];
   for (int c = 0; c < 3; ++c) centroid[c] = sumOverEntries(comm, nodes, [&](std::size_t i) { return x[c][i]; }) / numNodes;
   Dense inertia(9, 0.0), moment(3, 0.0), localInertia(9, 0.0), localMoment(3, 0.0);
@@ -182,8 +182,8 @@ RCP<Vector> motionTheLoadPullsFree(const ContactQP& qp, const MultiVector& F) {
 
 }  // namespace
 
-RCP<const MultiVector> checkRigidBodyMotionsHeld(const ContactQP& qp) {
-  const RCP<const MultiVector> modes = qp.nearNullspace();
+RCP<const MultiVector> checkRigidBodyMotionsHeld(const ContactQP& qp, const MultigridInput& multigrid) {
+  const RCP<const MultiVector> modes = multigrid.nearNullspace(qp);
   if (modes.is_null() || modes->getNumVectors() == 0) return Teuchos::null;
   const MultiVector& R = *modes;
   const int k = static_cast<int>(R.getNumVectors());
@@ -192,20 +192,20 @@ RCP<const MultiVector> checkRigidBodyMotionsHeld(const ContactQP& qp) {
   // theta = rᵀQr / rᵀr: ~0 for the motions no prescribed displacement removes.
   const Eigen energy = symmetricEigen(innerProducts(R, QR), innerProducts(R, R), k);
   if (energy.values.empty()) return Teuchos::null;  // dependent modes: nothing to conclude from them
-  const double scale = stiffnessScale(qp);
+  const double scale = stiffnessScale(qp, multigrid);
   int free = 0;
   while (free < k && energy.values[free] <= kFree * scale) ++free;
   if (free == 0) return Teuchos::null;
   const RCP<const MultiVector> F = combine(R, energy.vectors, free);  // orthonormal columns
 
   if (const RCP<Vector> r = motionNoConstraintStops(qp, *F))
-    throw InputError("the body is free to move by " + describeMotion(*r, qp, false) +
+    throw InputError("the body is free to move by " + describeMotion(*r, multigrid, false) +
                      ": no prescribed displacement removes it and no contact constraint stops it "
                      "(frictionless contact holds a body only in the obstacle's direction); prescribe "
                      "displacements that remove it on a boundary (Problem/Dirichlet), for instance the "
                      "normal component on a symmetry plane");
   if (const RCP<Vector> r = motionTheLoadPullsFree(qp, *F))
-    throw InputError("the load pulls the body off the obstacle by " + describeMotion(*r, qp, true) +
+    throw InputError("the load pulls the body off the obstacle by " + describeMotion(*r, multigrid, true) +
                      ", which no prescribed displacement removes and no contact constraint resists: the "
                      "problem has no equilibrium; prescribe a displacement that holds the body "
                      "(Problem/Dirichlet) or check the direction of the load");

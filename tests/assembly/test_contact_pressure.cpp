@@ -91,7 +91,7 @@ TEST(ContactPressure, VanishesOffTheLoadedFacets) {
   Vector x(p.qp.A->getRangeMap());  // node x coordinate per constraint: -A applied to (x, 0) displacements
   {
     Vector displacement(p.qp.A->getDomainMap());
-    auto coords = p.qp.coordinates->getData(0);
+    auto coords = p.multigrid.coordinates->getData(0);
     auto u = displacement.getDataNonConst();
     for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(coords.size()); ++i) u[2 * i + 1] = -coords[i];
     p.qp.A->apply(displacement, x);

@@ -113,7 +113,7 @@ TEST(GmshProblem, BoundariesAreFoundByPhysicalNames) {
   }
 
   // The body sags onto the foundation: it converges, with contact somewhere.
-  SolveResult r = InteriorPointSolver().solve(p.qp);
+  SolveResult r = InteriorPointSolver().solve(p.qp, p.multigrid);
   EXPECT_TRUE(r.converged()) << r.message;
   EXPECT_GT(r.activeConstraints, 0);
   EXPECT_LT(r.objective, 0.0);
@@ -125,12 +125,14 @@ TEST(GmshProblem, BoundariesAreFoundByPhysicalNames) {
 struct ThreePaths {
   SolveResult algebraic, geometric, matrixFree;
 };
-ThreePaths solveThreeWays(const ContactQP& assembled, const ContactQP& matrixFree, const std::string& label) {
-  EXPECT_TRUE(matrixFree.Qmatrix().is_null()) << label;
+ThreePaths solveThreeWays(const AssembledProblem& assembled, const AssembledProblem& matrixFree,
+                          const std::string& label) {
+  EXPECT_TRUE(assembledStiffness(matrixFree.qp, matrixFree.multigrid).is_null()) << label;
   Teuchos::ParameterList algebraic;
   algebraic.sublist("Preconditioner").set("hierarchy", "algebraic");
-  ThreePaths r{InteriorPointSolver(algebraic).solve(assembled), InteriorPointSolver().solve(assembled),
-               InteriorPointSolver().solve(matrixFree)};
+  ThreePaths r{InteriorPointSolver(algebraic).solve(assembled.qp, assembled.multigrid),
+               InteriorPointSolver().solve(assembled.qp, assembled.multigrid),
+               InteriorPointSolver().solve(matrixFree.qp, matrixFree.multigrid)};
   EXPECT_TRUE(r.algebraic.converged() && r.geometric.converged() && r.matrixFree.converged()) << label;
   const double reference = r.algebraic.objective;
   EXPECT_NEAR(r.geometric.objective, reference, 1e-9 * std::fabs(reference)) << label;
@@ -151,16 +153,17 @@ TEST(GmshProblem, PkSpaceGoesToP1OnItsOwnMesh) {
     problem.set("stiffness: operator", "assembled");
     const AssembledProblem assembled = rectangle(problem, comm);
     const ContactQP& qp = assembled.qp;
-    ASSERT_TRUE(qp.grid != nullptr) << label;
+    const MultigridInput& mg = assembled.multigrid;
+    ASSERT_TRUE(mg.grid != nullptr) << label;
 
-    const CrsMatrix& Q = *qp.Qmatrix();
-    const GeometricMultigridPreconditioner multigrid(*qp.grid, Q.getRowMap(), prescribedRows(Q), *qp.coordinates,
+    const CrsMatrix& Q = *assembledStiffness(qp, mg);
+    const GeometricMultigridPreconditioner multigrid(*mg.grid, Q.getRowMap(), prescribedRows(Q), *mg.coordinates,
                                                      2, 1, 0, Teuchos::ParameterList(), Teuchos::ParameterList(), 3);
     ASSERT_EQ(multigrid.geometricLevels(), 1) << label;
     const RCP<const CrsMatrix> P = multigrid.prolongator(0);
     CrsMatrix PtQP(P->getDomainMap(), 0);
     Tpetra::TripleMatrixMultiply::MultiplyRAP(*P, true, Q, false, *P, false, PtQP);
-    const RCP<const CrsMatrix> grid = assembleGridStiffness(distributedSpace(*assembled.space), assembled.definition, *qp.grid);
+    const RCP<const CrsMatrix> grid = assembleGridStiffness(distributedSpace(*assembled.space), assembled.definition, *mg.grid);
     const Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node> toCoarseRows(grid->getRowMap(), PtQP.getRowMap());
     const RCP<CrsMatrix> gridOnCoarseRows = Tpetra::importAndFillCompleteCrsMatrix<CrsMatrix>(
         grid, toCoarseRows, PtQP.getDomainMap(), PtQP.getRangeMap());
@@ -168,7 +171,7 @@ TEST(GmshProblem, PkSpaceGoesToP1OnItsOwnMesh) {
     EXPECT_LT(difference->getFrobeniusNorm(), 1e-12 * PtQP.getFrobeniusNorm()) << label;
 
     problem.set("stiffness: operator", "matrix-free");
-    const ThreePaths solves = solveThreeWays(qp, rectangle(problem, comm).qp, label);
+    const ThreePaths solves = solveThreeWays(assembled, rectangle(problem, comm), label);
     EXPECT_LT(solves.geometric.krylovIterations, solves.algebraic.krylovIterations) << label;
   }
 }
@@ -203,14 +206,16 @@ TEST(GmshProblem, RefinedAtNodesTheGridIsTheRefinedMeshsP1Space) {
     problem.set("stiffness: P1 grid", "refined at nodes");
     const AssembledProblem refined = rectangle(problem, comm);
     const ContactQP& qp = refined.qp;
-    ASSERT_TRUE(qp.grid != nullptr && qp.grid->refinesFineCells()) << label;
-    EXPECT_EQ(qp.grid->numVertices(), refined.space->numGlobalNodes()) << label;
-    ASSERT_FALSE(qp.gridStiffness.is_null()) << label;
+    const MultigridInput& mg = refined.multigrid;
+    ASSERT_TRUE(mg.grid != nullptr && mg.grid->refinesFineCells()) << label;
+    EXPECT_EQ(mg.grid->numVertices(), refined.space->numGlobalNodes()) << label;
+    ASSERT_FALSE(mg.gridStiffness.is_null()) << label;
 
     ProblemDefinition free = refined.definition;  // no Dirichlet rows: the energies of whole fields
     free.dirichlet.clear();
-    const RCP<const CrsMatrix> K = assembleGridStiffness(distributedSpace(*refined.space), free, *qp.grid);
-    const RCP<const CrsMatrix> Q = assembleContactQP(distributedSpace(*refined.space), free).Qmatrix();
+    const RCP<const CrsMatrix> K = assembleGridStiffness(distributedSpace(*refined.space), free, *mg.grid);
+    const RCP<const CrsMatrix> Q =
+        Teuchos::rcp_dynamic_cast<const CrsMatrix>(assembleContactQP(distributedSpace(*refined.space), free).Q);
     const auto linear = [](const double* x, double* u) {
       u[0] = 0.3 + 1.1 * x[0] - 0.4 * x[1];
       u[1] = -0.2 + 0.7 * x[0] + 0.9 * x[1];
@@ -235,7 +240,7 @@ TEST(GmshProblem, RefinedAtNodesTheGridIsTheRefinedMeshsP1Space) {
     EXPECT_GT(globalSmallest, 0.0) << label;
 
     problem.set("stiffness: operator", "matrix-free");
-    solveThreeWays(qp, rectangle(problem, comm).qp, label);
+    solveThreeWays(refined, rectangle(problem, comm), label);
   }
 }
 

@@ -46,7 +46,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, AppliesTheAssembledStiffness) {
   auto comm = Tpetra::getDefaultComm();
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), comm);
   const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(distributedSpace(problem.space), problem.definition);
-  const CrsMatrix& K = *problem.qp.Qmatrix();
+  const CrsMatrix& K = *assembledStiffness(problem.qp, problem.multigrid);
   ASSERT_TRUE(Q->getDomainMap()->isSameAs(*K.getDomainMap()));
   ASSERT_TRUE(Q->getRangeMap()->isSameAs(*K.getRangeMap()));
 
@@ -77,7 +77,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, DiagonalIsTheAssembledOne) {
   const Case k = GetParam();
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), Tpetra::getDefaultComm());
   const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(distributedSpace(problem.space), problem.definition);
-  const CrsMatrix& K = *problem.qp.Qmatrix();
+  const CrsMatrix& K = *assembledStiffness(problem.qp, problem.multigrid);
   Vector expected(K.getRowMap()), got(K.getRowMap());
   K.getLocalDiagCopy(expected);
   Q->getLocalDiagCopy(got);
@@ -90,7 +90,7 @@ TEST_P(MatrixFreeElasticityOperatorTest, SelectedRowsAndPrescribedDofsAreTheAsse
   const Case k = GetParam();
   AssembledProblem problem = buildProblem(clampedBox(k.dim, k.degree), Tpetra::getDefaultComm());
   const RCP<MatrixFreeElasticityOperator> Q = matrixFreeStiffness(distributedSpace(problem.space), problem.definition);
-  const CrsMatrix& K = *problem.qp.Qmatrix();
+  const CrsMatrix& K = *assembledStiffness(problem.qp, problem.multigrid);
   EXPECT_EQ(Q->prescribedDofs(), prescribedRows(K));
 
   // Every third DOF: rows of free and prescribed DOFs, owned next to other ranks' DOFs.
@@ -129,8 +129,8 @@ TEST(MatrixFreeElasticityOperator, SolvesThePaperProblemsToTheAssembledOptimalVa
     definition.set("stiffness: operator", "matrix-free");
     const AssembledProblem matrixFree = buildProblem(definition, comm);
     ASSERT_TRUE(Teuchos::rcp_dynamic_cast<const MatrixFreeElasticityOperator>(matrixFree.qp.Q) != Teuchos::null);
-    const SolveResult a = InteriorPointSolver(Teuchos::ParameterList()).solve(assembled.qp);
-    const SolveResult f = InteriorPointSolver(Teuchos::ParameterList()).solve(matrixFree.qp);
+    const SolveResult a = InteriorPointSolver(Teuchos::ParameterList()).solve(assembled.qp, assembled.multigrid);
+    const SolveResult f = InteriorPointSolver(Teuchos::ParameterList()).solve(matrixFree.qp, matrixFree.multigrid);
     ASSERT_TRUE(a.converged() && f.converged()) << name;
     EXPECT_NEAR(f.objective, a.objective, 1e-9 * std::fabs(a.objective)) << name;
     EXPECT_LE(std::abs(f.outerIterations - a.outerIterations), 1) << name;
@@ -150,10 +150,10 @@ TEST(MatrixFreeElasticityOperator, SolvesP2AndP3BoxesWithoutAssemblingQ) {
     const AssembledProblem assembled = buildProblem(definition, comm);
     definition.set("stiffness: operator", "matrix-free");
     const AssembledProblem matrixFree = buildProblem(definition, comm);
-    EXPECT_TRUE(matrixFree.qp.Qmatrix().is_null()) << name;
-    ASSERT_FALSE(matrixFree.qp.gridStiffness.is_null()) << name;
-    const SolveResult a = InteriorPointSolver(Teuchos::ParameterList()).solve(assembled.qp);
-    const SolveResult f = InteriorPointSolver(Teuchos::ParameterList()).solve(matrixFree.qp);
+    EXPECT_TRUE(assembledStiffness(matrixFree.qp, matrixFree.multigrid).is_null()) << name;
+    ASSERT_FALSE(matrixFree.multigrid.gridStiffness.is_null()) << name;
+    const SolveResult a = InteriorPointSolver(Teuchos::ParameterList()).solve(assembled.qp, assembled.multigrid);
+    const SolveResult f = InteriorPointSolver(Teuchos::ParameterList()).solve(matrixFree.qp, matrixFree.multigrid);
     ASSERT_TRUE(a.converged() && f.converged()) << name;
     EXPECT_NEAR(f.objective, a.objective, 1e-9 * std::fabs(a.objective)) << name;
     EXPECT_LE(f.krylovIterations, 1.5 * a.krylovIterations) << name;
@@ -167,10 +167,11 @@ TEST(MatrixFreeElasticityOperator, OutlivesTheProblem) {
   definition.set("element: degree", 2);
   definition.set("body force: y", "-0.05");
   definition.set("stiffness: operator", "matrix-free");
-  const ContactQP qp = buildProblem(definition, Tpetra::getDefaultComm()).qp;
-  const SolveResult r = InteriorPointSolver(Teuchos::ParameterList()).solve(qp);
+  const AssembledProblem problem = buildProblem(definition, Tpetra::getDefaultComm());
+  const ContactQP& qp = problem.qp;
+  const SolveResult r = InteriorPointSolver(Teuchos::ParameterList()).solve(qp, problem.multigrid);
   ASSERT_TRUE(r.converged()) << r.message;
-  EXPECT_LT(differenceToReference(definition, qp, *r.v), 1e-7);
+  EXPECT_LT(differenceToReference(definition, problem.multigrid, *r.v), 1e-7);
 }
 
 // Preconditioners that would need Q assembled are refused with a message, not run.
@@ -181,7 +182,7 @@ TEST(MatrixFreeElasticityOperator, RefusesAnAlgebraicHierarchyWithoutQ) {
   const AssembledProblem problem = buildProblem(definition, Tpetra::getDefaultComm());
   Teuchos::ParameterList solver;
   solver.sublist("Preconditioner").set("hierarchy", "algebraic");
-  EXPECT_THROW(InteriorPointSolver(solver).solve(problem.qp), InputError);
+  EXPECT_THROW(InteriorPointSolver(solver).solve(problem.qp, problem.multigrid), InputError);
 }
 
 }  // namespace

@@ -116,9 +116,9 @@ TEST_P(RefinedMesh, SolvesTheProblemOfTheMeshGmshRefines) {
       EXPECT_EQ(refined.space->numGlobalCells(), whole.space->numGlobalCells()) << label;
       EXPECT_EQ(refined.qp.d->getGlobalLength(), whole.qp.d->getGlobalLength()) << label;
       // Every refinement is a grid, the coarse mesh the coarsest.
-      EXPECT_EQ(gridLevels(refined.qp.grid.get()), refinements + 1) << label;
+      EXPECT_EQ(gridLevels(refined.multigrid.grid.get()), refinements + 1) << label;
 
-      const SolveResult a = InteriorPointSolver().solve(refined.qp), b = InteriorPointSolver().solve(whole.qp);
+      const SolveResult a = InteriorPointSolver().solve(refined.qp, refined.multigrid), b = InteriorPointSolver().solve(whole.qp, whole.multigrid);
       ASSERT_TRUE(a.converged() && b.converged()) << label << ": " << a.message << " / " << b.message;
       if (dim == 2) {
         EXPECT_NEAR(a.objective, b.objective, 1e-9 * std::fabs(b.objective)) << label;
@@ -146,9 +146,9 @@ TEST_P(RefinedMesh, InterpolationKeepsLinearFields) {
   Teuchos::ParameterList definition = problem(dim, "coarse.msh", 3, 1);
   definition.sublist("Dirichlet").remove("top");  // no prescribed DOFs: every row interpolates
   const AssembledProblem p = buildProblem(definition, comm, base);
-  const CrsMatrix& Q = *p.qp.Qmatrix();
-  const GeometricMultigridPreconditioner multigrid(*p.qp.grid, Q.getRowMap(), std::vector<char>(Q.getNodeNumRows(), 0),
-                                                   *p.qp.coordinates, dim, 1, 0, Teuchos::ParameterList(),
+  const CrsMatrix& Q = *assembledStiffness(p.qp, p.multigrid);
+  const GeometricMultigridPreconditioner multigrid(*p.multigrid.grid, Q.getRowMap(), std::vector<char>(Q.getNodeNumRows(), 0),
+                                                   *p.multigrid.coordinates, dim, 1, 0, Teuchos::ParameterList(),
                                                    Teuchos::ParameterList(), 3);
   ASSERT_EQ(multigrid.geometricLevels(), 3);
   // u(x) = (1 + x + 2y + 3z, ...) with a different slope per component, at the nodes of a
@@ -160,7 +160,7 @@ TEST_P(RefinedMesh, InterpolationKeepsLinearFields) {
       const GlobalOrdinal dof = map.getGlobalElement(i);
       double x[3] = {0, 0, 0};
       if (isFine) {
-        for (int c = 0; c < dim; ++c) x[c] = p.qp.coordinates->getData(c)[i / dim];
+        for (int c = 0; c < dim; ++c) x[c] = p.multigrid.coordinates->getData(c)[i / dim];
       } else {
         grid.vertexCoordinates(dof / dim, x);
       }
@@ -169,7 +169,7 @@ TEST_P(RefinedMesh, InterpolationKeepsLinearFields) {
     }
     return u;
   };
-  const GeometricGrid* finer = p.qp.grid.get();
+  const GeometricGrid* finer = p.multigrid.grid.get();
   for (int level = 0; level < 3; ++level, finer = finer->coarser().get()) {
     const RCP<const CrsMatrix> P = multigrid.prolongator(level);
     const auto coarse = linear(*P->getDomainMap(), *finer->coarser(), false);
@@ -207,13 +207,13 @@ TEST_P(RefinedMesh, PassesThePatchTest) {
       for (int c = 0; c < dim; ++c)
         p.sublist("Dirichlet").sublist(boundary).set(std::string("displacement: ") + "xyz"[c], field[c]);
     const AssembledProblem problem = buildProblem(p, comm, base);
-    const SolveResult r = InteriorPointSolver().solve(problem.qp);
+    const SolveResult r = InteriorPointSolver().solve(problem.qp, problem.multigrid);
     ASSERT_TRUE(r.converged()) << r.message;
     auto v = r.v->getData();
     double worst = 0.0;
     for (long i = 0; i < static_cast<long>(v.size()); ++i) {
       double x[3] = {0, 0, 0};
-      for (int c = 0; c < dim; ++c) x[c] = problem.qp.coordinates->getData(c)[i / dim];
+      for (int c = 0; c < dim; ++c) x[c] = problem.multigrid.coordinates->getData(c)[i / dim];
       worst = std::max(worst, std::fabs(v[i] - exact(static_cast<int>(i % dim), x)));
     }
     EXPECT_LT(worst, 1e-7) << "P" << degree;  // the iterative solve's accuracy on a field of size 0.1

@@ -28,8 +28,8 @@ std::string familyLoad(double scale, double length) {
 
 SolveResult solve(const Teuchos::ParameterList& problem, double* difference = nullptr) {
   const AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
-  SolveResult r = InteriorPointSolver(Teuchos::ParameterList()).solve(p.qp);
-  if (difference) *difference = r.converged() ? signorini::testing::differenceToReference(problem, p.qp, *r.v) : 0.0;
+  SolveResult r = InteriorPointSolver(Teuchos::ParameterList()).solve(p.qp, p.multigrid);
+  if (difference) *difference = r.converged() ? signorini::testing::differenceToReference(problem, p.multigrid, *r.v) : 0.0;
   return r;
 }
 

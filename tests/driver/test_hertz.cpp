@@ -58,7 +58,7 @@ ContactSolution solveExample(const std::string& example, int degree, const std::
   problem.set("element: degree", degree);
   problem.sublist("Contact").set("formulation", formulation);
   AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm(), directory);
-  const SolveResult r = InteriorPointSolver(Teuchos::ParameterList()).solve(p.qp);
+  const SolveResult r = InteriorPointSolver(Teuchos::ParameterList()).solve(p.qp, p.multigrid);
   EXPECT_TRUE(r.converged()) << r.message;
 
   const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());

@@ -40,7 +40,7 @@ TEST(UniformCompression, ContactPressureIsTheAppliedTraction) {
 
       Teuchos::ParameterList params;
       params.set("kkt: tolerance", 1e-11);
-      SolveResult r = InteriorPointSolver(params).solve(p.qp);
+      SolveResult r = InteriorPointSolver(params).solve(p.qp, p.multigrid);
       ASSERT_TRUE(r.converged()) << what << ": " << r.message;
       // The whole bottom touches the plane. P2 vertices of triangles carry no consistent
       // nodal force: their constraints are degenerate (lambda = 0 and gap = 0 at the

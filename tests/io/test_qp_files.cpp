@@ -42,7 +42,7 @@ AssembledProblem written(const std::string& name, const std::string& dir) {
   Teuchos::ParameterList problem = testing::shippedProblem("paper/" + name);
   problem.set("stiffness: operator", "assembled");
   AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
-  writeQP(p.qp, dir);
+  writeQP(p.qp, p.multigrid, dir);
   return p;
 }
 
@@ -51,15 +51,16 @@ TEST(QPFiles, RoundTripReachesTheSameOptimumOnEveryRankCount) {
   for (const char* name : {"M", "H", "B"}) {
     const std::string dir = scratch(std::string("round-trip-") + name, *comm);
     const AssembledProblem direct = written(name, dir);
-    const ContactQP read = readQP(dir, comm);
-    EXPECT_EQ(read.blockSize, direct.qp.blockSize) << name;
+    const QPFromFiles files = readQP(dir, comm);
+    const ContactQP& read = files.qp;
+    EXPECT_EQ(files.multigrid.blockSize, direct.multigrid.blockSize) << name;
     EXPECT_EQ(read.b->getGlobalLength(), direct.qp.b->getGlobalLength()) << name;
     EXPECT_EQ(read.d->getGlobalLength(), direct.qp.d->getGlobalLength()) << name;
     // Whole nodes on every rank: the DOF count of each rank is a multiple of the block size.
-    EXPECT_EQ(read.Q->getDomainMap()->getNodeNumElements() % read.blockSize, 0u) << name;
-    EXPECT_FALSE(read.nearNullspace().is_null()) << name << ": no rigid body modes from the coordinates";
-    const SolveResult a = InteriorPointSolver(Teuchos::ParameterList()).solve(direct.qp);
-    const SolveResult b = InteriorPointSolver(Teuchos::ParameterList()).solve(read);
+    EXPECT_EQ(read.Q->getDomainMap()->getNodeNumElements() % files.multigrid.blockSize, 0u) << name;
+    EXPECT_FALSE(files.multigrid.nearNullspace(read).is_null()) << name << ": no rigid body modes from the coordinates";
+    const SolveResult a = InteriorPointSolver(Teuchos::ParameterList()).solve(direct.qp, direct.multigrid);
+    const SolveResult b = InteriorPointSolver(Teuchos::ParameterList()).solve(read, files.multigrid);
     ASSERT_TRUE(a.converged() && b.converged()) << name << ": " << b.message;
     EXPECT_LT(std::abs(a.objective - b.objective), 1e-10 * std::abs(a.objective)) << name;
     EXPECT_LE(std::abs(a.outerIterations - b.outerIterations), 1) << name;
@@ -77,10 +78,11 @@ TEST(QPFiles, NodalConstraintsLiveWithTheirNodes) {
   if (comm->getRank() == 0) {
     Teuchos::ParameterList problem = testing::shippedProblem("paper/H");
     problem.set("stiffness: operator", "assembled");
-    writeQP(testing::buildSerial(problem).qp, dir);
+    const AssembledProblem serial = testing::buildSerial(problem);
+    writeQP(serial.qp, serial.multigrid, dir);
   }
   comm->barrier();
-  const ContactQP read = readQP(dir, comm);
+  const ContactQP read = readQP(dir, comm).qp;
   const Map& unknowns = *read.Q->getDomainMap();
   long long elsewhere = 0;
   for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(read.A->getNodeNumRows()); ++i) {

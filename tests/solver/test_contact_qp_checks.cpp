@@ -19,9 +19,12 @@
 namespace signorini {
 namespace {
 
-std::string checkMessage(const ContactQP& qp) {
+// `qp` checked as a 2D QP (paper/M's unknowns per node) or with another block size.
+std::string checkMessage(const ContactQP& qp, int blockSize = 2) {
+  MultigridInput multigrid;
+  multigrid.blockSize = blockSize;
   try {
-    checkContactQP(qp);
+    checkContactQP(qp, multigrid);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -40,15 +43,14 @@ TEST(ContactQPChecks, MissingAndMisplacedPiecesAreNamed) {
   qp.d = rcp(new Vector(qp.Q->getDomainMap()));
   EXPECT_NE(checkMessage(qp).find("d must live on A's range map"), std::string::npos);
   qp = problemM();
-  qp.blockSize = 0;
-  EXPECT_NE(checkMessage(qp).find("blockSize must be"), std::string::npos);
+  EXPECT_NE(checkMessage(qp, 0).find("blockSize must be"), std::string::npos);
 }
 
 // Q plus a multiple of an asymmetric matrix E (one entry), and a Q with a NaN entry, are
 // refused; so is an A with an infinite entry.
 TEST(ContactQPChecks, AsymmetricOrNonFiniteEntriesAreRefused) {
   const ContactQP qp = problemM();
-  const RCP<const CrsMatrix> Q = qp.Qmatrix();
+  const RCP<const CrsMatrix> Q = Teuchos::rcp_dynamic_cast<const CrsMatrix>(qp.Q, true);
   const auto perturbed = [&](double value, bool symmetric) {
     auto E = rcp(new CrsMatrix(Q->getRowMap(), 2));
     const GlobalOrdinal first = Q->getRowMap()->getMinAllGlobalIndex();
@@ -87,7 +89,7 @@ TEST(ContactQPChecks, ANodeSplitBetweenRanksIsRefused) {
   // Q, b and A on the even split, the way a plain Matrix Market read makes them.
   Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node> toEven(qp.Q->getDomainMap(), even);
   auto Qeven = rcp(new CrsMatrix(even, 0));
-  Qeven->doImport(*qp.Qmatrix(), toEven, Tpetra::INSERT);
+  Qeven->doImport(*Teuchos::rcp_dynamic_cast<const CrsMatrix>(qp.Q, true), toEven, Tpetra::INSERT);
   Qeven->fillComplete(even, even);
   auto beven = rcp(new Vector(even));
   beven->doImport(*qp.b, toEven, Tpetra::INSERT);
@@ -100,7 +102,9 @@ TEST(ContactQPChecks, ANodeSplitBetweenRanksIsRefused) {
   const std::string message = checkMessage(split);
   EXPECT_NE(message.find("splits the 2 unknowns of a node"), std::string::npos) << message;
   EXPECT_NE(message.find("readQP"), std::string::npos) << message;
-  EXPECT_THROW(InteriorPointSolver(Teuchos::ParameterList()).solve(split), InputError);
+  MultigridInput twoPerNode;
+  twoPerNode.blockSize = 2;
+  EXPECT_THROW(InteriorPointSolver(Teuchos::ParameterList()).solve(split, twoPerNode), InputError);
 }
 
 }  // namespace

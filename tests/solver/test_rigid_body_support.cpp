@@ -18,9 +18,9 @@ using namespace signorini;
 using signorini::testing::boxProblem;
 using signorini::testing::contactBoxProblem;
 
-std::string checkMessage(const ContactQP& qp) {
+std::string checkMessage(const AssembledProblem& p) {
   try {
-    checkRigidBodyMotionsHeld(qp);
+    checkRigidBodyMotionsHeld(p.qp, p.multigrid);
   } catch (const InputError& e) {
     return e.what();
   }
@@ -28,7 +28,7 @@ std::string checkMessage(const ContactQP& qp) {
 }
 
 std::string checkMessage(const Teuchos::ParameterList& problem) {
-  return checkMessage(buildProblem(problem, Tpetra::getDefaultComm()).qp);
+  return checkMessage(buildProblem(problem, Tpetra::getDefaultComm()));
 }
 
 // A 2D box whose bottom is in contact and whose sides may slide vertically only (u_x = 0 on
@@ -70,9 +70,10 @@ TEST(RigidBodySupport, BodyPressedOntoTheObstacleIsHeldByTheContact) {
 }
 
 TEST(RigidBodySupport, LoadPullingTheBodyOffIsRefusedByTheSolver) {
-  const ContactQP qp = buildProblem(rollerBox("1"), Tpetra::getDefaultComm()).qp;
+  const AssembledProblem problem = buildProblem(rollerBox("1"), Tpetra::getDefaultComm());
+  const ContactQP& qp = problem.qp;
   try {
-    InteriorPointSolver(Teuchos::ParameterList()).solve(qp);
+    InteriorPointSolver(Teuchos::ParameterList()).solve(qp, problem.multigrid);
     ADD_FAILURE() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("pulls the body off the obstacle by a translation along (0, 1)"),
@@ -83,32 +84,32 @@ TEST(RigidBodySupport, LoadPullingTheBodyOffIsRefusedByTheSolver) {
 
 TEST(RigidBodySupport, RotationIsNamedByItsAxis) {
   // A free 3D body whose rigid body modes are the rotation about z alone.
-  ContactQP qp = buildProblem(boxProblem(3, 2, 1), Tpetra::getDefaultComm()).qp;
+  AssembledProblem p = buildProblem(boxProblem(3, 2, 1), Tpetra::getDefaultComm());
   const int aboutZ = 5;
-  qp.nullspace = qp.nearNullspace()->subCopy(Teuchos::tuple<std::size_t>(aboutZ));
-  const std::string message = checkMessage(qp);
+  p.multigrid.nullspace = p.multigrid.nearNullspace(p.qp)->subCopy(Teuchos::tuple<std::size_t>(aboutZ));
+  const std::string message = checkMessage(p);
   EXPECT_NE(message.find("free to move by a rotation about an axis along (0, 0, 1)"), std::string::npos) << message;
 }
 
 TEST(RigidBodySupport, QpWithoutModesIsNotChecked) {
-  ContactQP qp = buildProblem(boxProblem(2, 2, 1), Tpetra::getDefaultComm()).qp;
-  qp.nullspace = Teuchos::null;
-  qp.coordinates = Teuchos::null;
-  EXPECT_EQ(checkMessage(qp), "");
+  AssembledProblem p = buildProblem(boxProblem(2, 2, 1), Tpetra::getDefaultComm());
+  p.multigrid.nullspace = Teuchos::null;
+  p.multigrid.coordinates = Teuchos::null;
+  EXPECT_EQ(checkMessage(p), "");
 }
 
 TEST(RigidBodySupport, ModesAreMadeFromCoordinatesOfQsNodesOnly) {
-  ContactQP qp = buildProblem(boxProblem(2, 2, 1), Tpetra::getDefaultComm()).qp;
-  qp.nullspace = Teuchos::null;
-  ASSERT_FALSE(qp.nearNullspace().is_null());
-  EXPECT_EQ(qp.nearNullspace()->getNumVectors(), 3u);
+  AssembledProblem p = buildProblem(boxProblem(2, 2, 1), Tpetra::getDefaultComm());
+  p.multigrid.nullspace = Teuchos::null;
+  ASSERT_FALSE(p.multigrid.nearNullspace(p.qp).is_null());
+  EXPECT_EQ(p.multigrid.nearNullspace(p.qp)->getNumVectors(), 3u);
   // One coordinate row more than Q's nodes on rank 0: no modes, on every rank.
   const auto comm = Tpetra::getDefaultComm();
-  const std::size_t rows = qp.coordinates->getLocalLength() + (comm->getRank() == 0 ? 1 : 0);
-  qp.coordinates = Teuchos::rcp(new MultiVector(
+  const std::size_t rows = p.multigrid.coordinates->getLocalLength() + (comm->getRank() == 0 ? 1 : 0);
+  p.multigrid.coordinates = Teuchos::rcp(new MultiVector(
       Teuchos::rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(), rows, 0, comm)), 2));
-  EXPECT_TRUE(qp.nearNullspace().is_null());
-  EXPECT_EQ(checkMessage(qp), "");
+  EXPECT_TRUE(p.multigrid.nearNullspace(p.qp).is_null());
+  EXPECT_EQ(checkMessage(p), "");
 }
 
 }  // namespace

@@ -37,12 +37,12 @@ TEST(SimplexGrid, GivesAPkSpaceThePOneStepOfItsMesh) {
       Teuchos::ParameterList problem = signorini::testing::assembledShippedProblem(name);
       problem.set("element: degree", degree);
       AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
-      p.qp.grid = std::make_shared<MeshVertexGrid>(distributedSpace(p.space));
-      const SolveResult own = InteriorPointSolver().solve(p.qp);
+      p.multigrid.grid = std::make_shared<MeshVertexGrid>(distributedSpace(p.space));
+      const SolveResult own = InteriorPointSolver().solve(p.qp, p.multigrid);
       const auto grid = gridOf(distributedSpace(*p.space));
-      EXPECT_EQ(grid->numVertices(), p.qp.grid->numVertices()) << label;
-      p.qp.grid = grid;
-      const SolveResult given = InteriorPointSolver().solve(p.qp);
+      EXPECT_EQ(grid->numVertices(), p.multigrid.grid->numVertices()) << label;
+      p.multigrid.grid = grid;
+      const SolveResult given = InteriorPointSolver().solve(p.qp, p.multigrid);
       ASSERT_TRUE(own.converged() && given.converged()) << label;
       EXPECT_NEAR(given.objective, own.objective, 1e-10 * std::fabs(own.objective)) << label;
       EXPECT_EQ(given.krylovIterations, own.krylovIterations) << label;

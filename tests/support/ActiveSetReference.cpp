@@ -24,7 +24,7 @@ namespace signorini::testing {
 // its unknown, and the system of an active set is Q with those unknowns eliminated
 // symmetrically, which is SPD. It is solved by a sparse Cholesky factorization (CHOLMOD).
 ReferenceSolution activeSetSolve(const ContactQP& qp, int maxIterations) {
-  const auto Q = qp.Qmatrix();
+  const auto Q = Teuchos::rcp_dynamic_cast<const CrsMatrix>(qp.Q);
   if (Q.is_null()) throw Error("activeSetSolve needs Q as a CrsMatrix");
   const auto comm = Q->getComm();
   if (comm->getSize() != 1) throw Error("activeSetSolve needs a one-rank communicator");
@@ -120,7 +120,7 @@ namespace {
 
 // The displacements of a QP's nodes on rank 0, keyed by the node's coordinates (rounded far
 // below the mesh spacing): the rank count renumbers the nodes, not their places. Collective.
-std::map<std::array<long long, 3>, std::array<double, 3>> displacementsByPlace(const ContactQP& qp, const Vector& v) {
+std::map<std::array<long long, 3>, std::array<double, 3>> displacementsByPlace(const MultigridInput& multigrid, const Vector& v) {
   const RCP<const Comm> comm = v.getMap()->getComm();
   const bool root = comm->getRank() == 0;
   const auto gatherToRoot = [&](const MultiVector& x) {
@@ -130,9 +130,9 @@ std::map<std::array<long long, 3>, std::array<double, 3>> displacementsByPlace(c
     gathered.doImport(x, Import(x.getMap(), onRoot), Tpetra::INSERT);
     return gathered;
   };
-  const MultiVector coordinates = gatherToRoot(*qp.coordinates), displacements = gatherToRoot(v);
+  const MultiVector coordinates = gatherToRoot(*multigrid.coordinates), displacements = gatherToRoot(v);
   std::map<std::array<long long, 3>, std::array<double, 3>> byPlace;
-  const int dim = qp.blockSize;
+  const int dim = multigrid.blockSize;
   for (std::size_t node = 0; node < coordinates.getLocalLength(); ++node) {
     std::array<long long, 3> place{0, 0, 0};
     std::array<double, 3> u{0, 0, 0};
@@ -147,15 +147,15 @@ std::map<std::array<long long, 3>, std::array<double, 3>> displacementsByPlace(c
 
 }  // namespace
 
-double differenceToReference(const Teuchos::ParameterList& problem, const ContactQP& qp, const Vector& v) {
-  const auto mine = displacementsByPlace(qp, v);
+double differenceToReference(const Teuchos::ParameterList& problem, const MultigridInput& multigrid, const Vector& v) {
+  const auto mine = displacementsByPlace(multigrid, v);
   double difference = 0;
   if (v.getMap()->getComm()->getRank() == 0) {
     Teuchos::ParameterList assembled = problem;
     assembled.set("stiffness: operator", "assembled");  // the reference factors Q
     const AssembledProblem serial = buildSerial(assembled);
     const ReferenceSolution reference = activeSetSolve(serial.qp);
-    const auto theirs = displacementsByPlace(serial.qp, *reference.v);
+    const auto theirs = displacementsByPlace(serial.multigrid, *reference.v);
     double largest = 0;
     for (const auto& [place, u] : theirs) {
       const auto found = mine.find(place);

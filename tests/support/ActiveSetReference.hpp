@@ -7,6 +7,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 
 namespace signorini::testing {
 
@@ -20,11 +21,12 @@ struct ReferenceSolution {
 
 ReferenceSolution activeSetSolve(const ContactQP& qp, int maxIterations = 100);
 
-// max |v - v_ref| / max |v_ref| for v, the solution of the QP `qp` built from `problem` on
+// max |v - v_ref| / max |v_ref| for v, the solution of the QP built from `problem` (whose
+// coordinates `multigrid` holds) on
 // any rank count, and v_ref the active-set reference of the same problem assembled and solved
 // on rank 0 alone; compared node by node at the nodes' coordinates, since the rank count
 // renumbers the nodes. The same on every rank; infinite if the reference did not converge.
 // Collective.
-double differenceToReference(const Teuchos::ParameterList& problem, const ContactQP& qp, const Vector& v);
+double differenceToReference(const Teuchos::ParameterList& problem, const MultigridInput& multigrid, const Vector& v);
 
 }  // namespace signorini::testing

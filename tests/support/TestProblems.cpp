@@ -47,9 +47,10 @@ Teuchos::ParameterList contactBoxProblem(int dim, int cells) {
   return p;
 }
 
-int solveLinear(const ContactQP& qp, Vector& x, double tol) {
-  MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nearNullspace(), qp.coordinates);
-  amg.compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
+int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol) {
+  MueLuPreconditioner amg(Teuchos::ParameterList(), multigrid.blockSize, multigrid.nearNullspace(qp),
+                          multigrid.coordinates);
+  amg.compute(Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(qp, multigrid)));
   KrylovSolver cg;
   x.putScalar(0.0);
   KrylovResult r = cg.solve(qp.Q, amg.getOperator(), qp.b, Teuchos::rcpFromRef(x), tol, 2000);

@@ -8,6 +8,7 @@
 #include "assembly/DistributedSpace.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 
 namespace signorini::testing {
 
@@ -27,7 +28,7 @@ Teuchos::ParameterList boxProblem(int dim, int cells, int degree);
 Teuchos::ParameterList contactBoxProblem(int dim, int cells);
 
 // Solves Q x = b by CG + MueLu to a relative residual of tol; returns the iterations.
-int solveLinear(const ContactQP& qp, Vector& x, double tol);
+int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol);
 
 // Assembles on a one-rank communicator (every rank its own copy): the reference for
 // rank-count independence.

@@ -12,6 +12,7 @@
 #include "signorini/assembly/FiniteElementSpace.hpp"
 #include "signorini/assembly/ProblemDefinition.hpp"
 #include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 
 namespace signorini {
 
@@ -28,6 +29,7 @@ struct AssembledProblem {
   /// The distributed P_k space (for output and the pressure).
   std::shared_ptr<const FiniteElementSpace> space;
   ContactQP qp;
+  MultigridInput multigrid;  ///< the mesh's coordinates and, where it has them, its grids
   double setupSeconds = 0, assemblySeconds = 0;  ///< max over ranks
   /// Rank 0's peak resident set during mesh and space, above its size before them (METIS'
   /// and the hash tables' transient buffers included): the serial phase's real cost when it

@@ -13,6 +13,7 @@
 
 #include "signorini/solver/ContactQP.hpp"
 #include "signorini/solver/IterationObserver.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 #include "signorini/solver/SolveResult.hpp"
 
 namespace signorini {
@@ -27,12 +28,13 @@ class InteriorPointSolver {
   /// `params` is validated here (unknown names, types and ranges); throws InputError.
   explicit InteriorPointSolver(const Teuchos::ParameterList& params = Teuchos::ParameterList());
 
-  /// Solves from `initialGuess` (zero if null; on Q's domain map). The observer, if any, sees
-  /// every Newton step. Collective over the communicator of qp's maps; the result owns new
-  /// vectors v and lambda. Throws InputError for a parameter that does not fit the QP (an
-  /// AMG for a matrix-free Q); solver failures are reported in the result's status.
-  SolveResult solve(const ContactQP& qp, const Vector* initialGuess = nullptr,
-                    IterationObserver* observer = nullptr) const;
+  /// Solves from `initialGuess` (zero if null; on Q's domain map), preconditioned with what
+  /// `multigrid` gives. The observer, if any, sees every Newton step. Collective over the
+  /// communicator of qp's maps; the result owns new vectors v and lambda. Throws InputError
+  /// for a QP that is incomplete or inconsistent, or a parameter that does not fit it (an AMG
+  /// for a matrix-free Q); solver failures are reported in the result's status.
+  SolveResult solve(const ContactQP& qp, const MultigridInput& multigrid = MultigridInput(),
+                    const Vector* initialGuess = nullptr, IterationObserver* observer = nullptr) const;
 
   const Teuchos::ParameterList& parameters() const { return params_; }
 

@@ -2,7 +2,7 @@
 /// \file
 /// A GeometricGrid made from any simplex mesh a caller has: the P1 grid of its triangles or
 /// tetrahedra, for the geometric multigrid's P_k -> P1 step on a QP assembled by another
-/// finite element code (ContactQP::grid). Below it MueLu takes over.
+/// finite element code (MultigridInput::grid). Below it MueLu takes over.
 #include <memory>
 #include <string>
 #include <vector>

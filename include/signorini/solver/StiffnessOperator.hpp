@@ -3,7 +3,7 @@
 /// A stiffness matrix Q that is applied without being stored (matrix-free), with the few
 /// parts of it the preconditioners need: its diagonal, its prescribed DOFs and its rows on
 /// the contact DOFs. A ContactQP whose Q is one of these needs no assembled Q for the
-/// geometric multigrid (with ContactQP::gridStiffness for a P_k space, k > 1) and the
+/// geometric multigrid (with MultigridInput::gridStiffness for a P_k space, k > 1) and the
 /// contact correction.
 #include <vector>
 

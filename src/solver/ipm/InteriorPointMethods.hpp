@@ -7,6 +7,7 @@
 #include <Teuchos_Time.hpp>
 
 #include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 #include "signorini/solver/IterationObserver.hpp"
 #include "signorini/solver/SolveResult.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
@@ -21,12 +22,15 @@ enum class StartingPoint { Shift, Relaxed };
 
 // `freeMotions`: the rigid body motions no prescribed displacement removes, along which Q is
 // singular and only the contact holds the body (checkRigidBodyMotionsHeld); null if none.
-SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
+SolveResult solvePrimalDual(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& params,
+                            const Vector* v0,
                             IterationObserver& observer, const RCP<const MultiVector>& freeMotions);
-SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
+SolveResult solvePrimalBarrier(const ContactQP& qp, const MultigridInput& multigrid,
+                               const Teuchos::ParameterList& params, const Vector* v0,
                                IterationObserver& observer, const RCP<const MultiVector>& freeMotions);
 // No constraints (m = 0): one Krylov solve of Q v = b to the KKT tolerance, whichever method.
-SolveResult solveUnconstrained(const ContactQP& qp, const Teuchos::ParameterList& params, const Vector* v0,
+SolveResult solveUnconstrained(const ContactQP& qp, const MultigridInput& multigrid,
+                               const Teuchos::ParameterList& params, const Vector* v0,
                                IterationObserver& observer);
 
 // The 2-norms of A's rows, on its range map (1 for an empty row): the scale of each
@@ -48,7 +52,7 @@ struct ProblemScales {
   int krylovIterations = 0;
 };
 // `newton` must have its weights set to zero (H = Q); they are zero again on return.
-ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0,
+ProblemScales problemScales(const ContactQP& qp, const MultigridInput& multigrid, NewtonSystemSolver& newton, const Vector& v0,
                             bool freeWithoutContact);
 
 // Adds the end-of-solve data (objective, multipliers, KKT measures, active set) to `result`.

@@ -154,18 +154,18 @@ void checkRepresentableScale(const ContactQP& qp) {
 InteriorPointSolver::InteriorPointSolver(const Teuchos::ParameterList& params)
     : params_(validatedParameters(params, validParameters(), "Solver")) {}
 
-SolveResult InteriorPointSolver::solve(const ContactQP& qp, const Vector* initialGuess,
-                                       IterationObserver* observer) const {
+SolveResult InteriorPointSolver::solve(const ContactQP& qp, const MultigridInput& multigrid,
+                                       const Vector* initialGuess, IterationObserver* observer) const {
   IterationObserver silent;
   IterationObserver& obs = observer ? *observer : silent;
-  checkContactQP(qp);
+  checkContactQP(qp, multigrid);
   checkRepresentableScale(qp);
-  const RCP<const MultiVector> freeMotions = checkRigidBodyMotionsHeld(qp);
+  const RCP<const MultiVector> freeMotions = checkRigidBodyMotionsHeld(qp, multigrid);
   if (qp.A->getRangeMap()->getGlobalNumElements() == 0)
-    return detail::solveUnconstrained(qp, params_, initialGuess, obs);
+    return detail::solveUnconstrained(qp, multigrid, params_, initialGuess, obs);
   if (choice<Method>(params_, "method") == Method::Primal)
-    return detail::solvePrimalBarrier(qp, params_, initialGuess, obs, freeMotions);
-  return detail::solvePrimalDual(qp, params_, initialGuess, obs, freeMotions);
+    return detail::solvePrimalBarrier(qp, multigrid, params_, initialGuess, obs, freeMotions);
+  return detail::solvePrimalDual(qp, multigrid, params_, initialGuess, obs, freeMotions);
 }
 
 namespace detail {
@@ -209,7 +209,8 @@ RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0) {
   return v;
 }
 
-ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, const Vector& v0,
+ProblemScales problemScales(const ContactQP& qp, const MultigridInput& multigrid, NewtonSystemSolver& newton,
+                            const Vector& v0,
                             bool freeWithoutContact) {
   // r = b - Q v0; Q w = r roughly; v_hat = v0 + w.
   Vector r(*qp.b, Teuchos::Copy), w(qp.Q->getDomainMap());
@@ -217,7 +218,7 @@ ProblemScales problemScales(const ContactQP& qp, NewtonSystemSolver& newton, con
   ProblemScales scales;
   // Q is singular when only the contact holds the body: then estimate with every constraint
   // held by a spring of its own stiffness q_i.
-  const StiffnessParts stiffness(qp);
+  const StiffnessParts stiffness(qp, multigrid);
   const bool springs = qp.A->getGlobalNumRows() > 0 && stiffness.available() && freeWithoutContact;
   if (springs) newton.setWeights(*constraintStiffness(*stiffness.diagonal(), *qp.A));
   scales.krylovIterations = newton.solve(r, w, 1e-2 * r.norm2()).iterations;

@@ -120,7 +120,7 @@ struct GammaRule {
 // solved by inner damped Newton steps to ||grad psi|| < zeta_k.
 class PrimalBarrierMethod {
  public:
-  PrimalBarrierMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+  PrimalBarrierMethod(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& p, const Vector* v0,
                       const RCP<const MultiVector>& freeMotions);
   SolveResult run(IterationObserver& observer, Teuchos::Time& timer);
 
@@ -136,6 +136,7 @@ class PrimalBarrierMethod {
   void extrapolate(double previousMu, double dvarsigma);
 
   const ContactQP& qp_;
+  const MultigridInput& multigrid_;
   const Teuchos::ParameterList& p_;
   const bool freeWithoutContact_;
   const long long m_;
@@ -161,9 +162,10 @@ class PrimalBarrierMethod {
   double slope_ = 0;            // g^T dv of the current direction
 };
 
-PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& p, const Vector* v0,
                                    const RCP<const MultiVector>& freeMotions)
     : qp_(qp),
+      multigrid_(multigrid),
       p_(p),
       freeWithoutContact_(!freeMotions.is_null()),
       m_(qp.A->getRangeMap()->getGlobalNumElements()),
@@ -177,7 +179,7 @@ PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const Teuchos::Par
       extrapolate_(p.get<bool>("primal: extrapolation")),
       gammaRule_(p),
       forcing_(forcingRule(p, 0.1 * stop_.tolerance * bnorm_)),
-      newton_(qp, p),
+      newton_(qp, multigrid, p),
       v_(initialDisplacement(qp, v0)),
       s_(qp.A->getRangeMap()), y_(s_.getMap()), lambda_(s_.getMap()), D_(s_.getMap()), Adv_(s_.getMap()),
       minusAdv_(s_.getMap()),
@@ -186,7 +188,7 @@ PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const Teuchos::Par
 // A strictly feasible start, the first barrier parameter and inner tolerance.
 void PrimalBarrierMethod::start() {
   newton_.setWeights(D_);
-  const ProblemScales scales = problemScales(qp_, newton_, *v_, freeWithoutContact_);
+  const ProblemScales scales = problemScales(qp_, multigrid_, newton_, *v_, freeWithoutContact_);
   result_.krylovIterations += scales.krylovIterations;
   displacementScale_ = scales.displacement;
   const double margin = p_.get<double>("primal: starting margin") * scales.displacement;
@@ -400,13 +402,14 @@ void PrimalBarrierMethod::extrapolate(double previousMu, double dvarsigma) {
 
 }  // namespace
 
-SolveResult solvePrimalBarrier(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+SolveResult solvePrimalBarrier(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& p,
+                            const Vector* v0,
                                IterationObserver& observer, const RCP<const MultiVector>& freeMotions) {
   Teuchos::Time timer("primal");
   timer.start(true);
   observer.onStart("primal (Algorithm 3.1)", qp.Q->getDomainMap()->getGlobalNumElements(),
                    qp.A->getRangeMap()->getGlobalNumElements());
-  PrimalBarrierMethod method(qp, p, v0, freeMotions);
+  PrimalBarrierMethod method(qp, multigrid, p, v0, freeMotions);
   return method.run(observer, timer);
 }
 

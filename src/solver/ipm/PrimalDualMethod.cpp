@@ -35,7 +35,7 @@ void forEach(Vector& out, F f) {
 // finish may end the solve (ActiveSetFinish).
 class PrimalDualMethod {
  public:
-  PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+  PrimalDualMethod(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& p, const Vector* v0,
                    const RCP<const MultiVector>& freeMotions);
   SolveResult run(IterationObserver& observer, Teuchos::Time& timer);
 
@@ -55,6 +55,7 @@ class PrimalDualMethod {
   void report(const KKTMeasures& kkt, IterationObserver& observer, Teuchos::Time& timer);
 
   const ContactQP& qp_;
+  const MultigridInput& multigrid_;
   const Teuchos::ParameterList& p_;
   const RCP<const MultiVector> freeMotions_;  // null: Q holds every rigid body motion
   const long long m_;
@@ -84,9 +85,10 @@ class PrimalDualMethod {
   bool havePending_ = false;
 };
 
-PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& p, const Vector* v0,
                                    const RCP<const MultiVector>& freeMotions)
     : qp_(qp),
+      multigrid_(multigrid),
       p_(p),
       freeMotions_(freeMotions),
       m_(qp.A->getRangeMap()->getGlobalNumElements()),
@@ -98,7 +100,7 @@ PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::Parameter
       stop_(p),
       bnorm_(qp.b->norm2()),
       forcing_(forcingRule(p, 0.1 * stop_.tolerance * bnorm_)),
-      newton_(qp, p, freeMotions),
+      newton_(qp, multigrid, p, freeMotions),
       finish_(p.get<bool>("primal-dual: active-set finish") && m_ > 0
                   ? std::make_unique<ActiveSetFinish>(qp, newton_, stop_.tolerance)
                   : nullptr),
@@ -116,7 +118,7 @@ PrimalDualMethod::PrimalDualMethod(const ContactQP& qp, const Teuchos::Parameter
 // gap and its movement are; nodal rows all have the same.
 void PrimalDualMethod::start() {
   newton_.setWeights(D_);
-  const ProblemScales scales = problemScales(qp_, newton_, *v_, !freeMotions_.is_null());
+  const ProblemScales scales = problemScales(qp_, multigrid_, newton_, *v_, !freeMotions_.is_null());
   result_.krylovIterations += scales.krylovIterations;
   qp_.A->apply(*v_, Av_);
   {
@@ -398,13 +400,14 @@ void PrimalDualMethod::report(const KKTMeasures& kkt, IterationObserver& observe
 
 }  // namespace
 
-SolveResult solvePrimalDual(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+SolveResult solvePrimalDual(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& p,
+                            const Vector* v0,
                             IterationObserver& observer, const RCP<const MultiVector>& freeMotions) {
   Teuchos::Time timer("primal-dual");
   timer.start(true);
   observer.onStart("primal-dual (" + p.get<std::string>("primal-dual: centering") + " centering)",
                    qp.Q->getDomainMap()->getGlobalNumElements(), qp.A->getRangeMap()->getGlobalNumElements());
-  PrimalDualMethod method(qp, p, v0, freeMotions);
+  PrimalDualMethod method(qp, multigrid, p, v0, freeMotions);
   return method.run(observer, timer);
 }
 

@@ -9,13 +9,14 @@
 
 namespace signorini::detail {
 
-SolveResult solveUnconstrained(const ContactQP& qp, const Teuchos::ParameterList& p, const Vector* v0,
+SolveResult solveUnconstrained(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& p,
+                               const Vector* v0,
                                IterationObserver& observer) {
   Teuchos::Time timer("linear solve");
   timer.start(true);
   observer.onStart("linear solve (no constraints)", qp.Q->getDomainMap()->getGlobalNumElements(), 0);
   SolveResult result;
-  NewtonSystemSolver newton(qp, p);
+  NewtonSystemSolver newton(qp, multigrid, p);
   newton.setWeights(Vector(qp.A->getRangeMap()));
   RCP<Vector> v = initialDisplacement(qp, v0);
   Vector r(*qp.b, Teuchos::Copy), dv(qp.Q->getDomainMap());

@@ -136,10 +136,11 @@ Teuchos::ParameterList newtonParameters(const Teuchos::ParameterList& solver) {
 
 }  // namespace
 
-NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params,
+NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const MultigridInput& multigrid,
+                                       const Teuchos::ParameterList& params,
                                        RCP<const MultiVector> freeMotions)
     : params_(newtonParameters(params)),
-      H_(rcp(new BarrierHessianOperator(qp.Q, qp.A, qp.Qmatrix()))),
+      H_(rcp(new BarrierHessianOperator(qp.Q, qp.A, assembledStiffness(qp, multigrid)))),
       krylov_(params_.sublist("Krylov")),
       strategy_(choice<PreconditionerType>(params_.sublist("Preconditioner"), "type")),
       maxIterations_(params_.sublist("Krylov").get<int>("maximum iterations")),
@@ -153,25 +154,25 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
                        "or \"amg of H\"");
     return;
   }
-  const StiffnessParts stiffness(qp);
+  const StiffnessParts stiffness(qp, multigrid);
   if (!stiffness.available())
     throw InputError("Preconditioner/type \"" + prec.get<std::string>("type") + "\" needs Q assembled or as a "
                      "StiffnessOperator; use \"none\" for another matrix-free Q");
-  const bool assembled = !qp.Qmatrix().is_null();
+  const bool assembled = !assembledStiffness(qp, multigrid).is_null();
   Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: preconditioner construction"));
   const Teuchos::ParameterList& muelu = prec.sublist("MueLu");
   const Hierarchy hierarchy = choice<Hierarchy>(prec, "hierarchy");
-  const bool haveGrid = qp.grid && !qp.coordinates.is_null();
+  const bool haveGrid = multigrid.grid && !multigrid.coordinates.is_null();
   if (hierarchy == Hierarchy::Geometric || (hierarchy == Hierarchy::Auto && haveGrid)) {
-    makeGeometric(qp, prec, stiffness);
+    makeGeometric(qp, multigrid, prec, stiffness);
   } else {
-    amg_ = std::make_unique<MueLuPreconditioner>(muelu, qp.blockSize, qp.nearNullspace(), qp.coordinates);
+    amg_ = std::make_unique<MueLuPreconditioner>(muelu, multigrid.blockSize, multigrid.nearNullspace(qp), multigrid.coordinates);
     // A rebuild of MueLu's hierarchy is a whole setup: only when constraints switch.
     rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.9);
   }
   if (!assembled && !geometric_)
     throw InputError("a matrix-free Q is preconditioned by Preconditioner/type \"amg of H\" on geometric levels "
-                     "alone (degree 2 or 3; from a library, ContactQP::grid and gridStiffness); set "
+                     "alone (degree 2 or 3; from a library, MultigridInput::grid and gridStiffness); set "
                      "Problem/stiffness: operator to \"assembled\"");
   if (correction_ != ContactCorrection::None) {
     const RCP<const CrsMatrix> contactRows = stiffness.contactRows(*qp.A);
@@ -187,36 +188,36 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const Teuchos::Param
     freeMotionCorrection_ = rcp(new FreeMotionCorrection(H_, freeMotions));
   reuseHierarchy_ = muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none";
   if (strategy_ == PreconditionerType::AmgOfQ) {
-    amg_->compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
+    amg_->compute(Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(qp, multigrid)));
     amgReady_ = true;
   }
 }
 
-void NewtonSystemSolver::makeGeometric(const ContactQP& qp, const Teuchos::ParameterList& prec,
-                                       const StiffnessParts& stiffness) {
-  const bool assembled = !qp.Qmatrix().is_null();
-  if (!qp.grid || qp.coordinates.is_null())
-    throw InputError("Preconditioner/hierarchy \"geometric\" needs a grid: ContactQP::grid (a GeometricGrid, "
-                     "e.g. a signorini::SimplexGrid of the caller's mesh) and ContactQP::coordinates; the problem "
+void NewtonSystemSolver::makeGeometric(const ContactQP& qp, const MultigridInput& multigrid,
+                                       const Teuchos::ParameterList& prec, const StiffnessParts& stiffness) {
+  const bool assembled = !assembledStiffness(qp, multigrid).is_null();
+  if (!multigrid.grid || multigrid.coordinates.is_null())
+    throw InputError("Preconditioner/hierarchy \"geometric\" needs a grid: MultigridInput::grid (a GeometricGrid, "
+                     "e.g. a signorini::SimplexGrid of the caller's mesh) and MultigridInput::coordinates; the problem "
                      "builder gives one for a box mesh, a refined Gmsh mesh (Problem/mesh: refinements) or "
                      "a degree of 2 or 3");
   // Without Q assembled the fine level cannot be factored: the P_k -> P1 level is taken
   // however few unknowns the P1 grid has.
   long long coarsestSize = prec.get<int>("geometric: coarsest size");
-  if (!assembled) coarsestSize = std::min(coarsestSize, qp.blockSize * qp.grid->numVertices());
+  if (!assembled) coarsestSize = std::min(coarsestSize, multigrid.blockSize * multigrid.grid->numVertices());
   auto geometric = std::make_unique<GeometricMultigridPreconditioner>(
-      *qp.grid, qp.Q->getDomainMap(), stiffness.prescribedDofs(), *qp.coordinates, qp.blockSize,
+      *multigrid.grid, qp.Q->getDomainMap(), stiffness.prescribedDofs(), *multigrid.coordinates, multigrid.blockSize,
       coarsestSize, prec.get<int>("geometric: direct solve size"),
       prec.sublist("Ifpack2"), prec.sublist("MueLu"), prec.get<int>("geometric: eigenvalue update steps"));
   if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() > 0 &&
-      (assembled || !qp.gridStiffness.is_null())) {
+      (assembled || !multigrid.gridStiffness.is_null())) {
     geometric_ = geometric.get();
-    filteredH_ = rcp(new BarrierHessianOperator(qp.Q, qp.A, qp.Qmatrix()));
+    filteredH_ = rcp(new BarrierHessianOperator(qp.Q, qp.A, assembledStiffness(qp, multigrid)));
     diagonalOfQ_ = stiffness.diagonal();
-    if (!qp.gridStiffness.is_null())
-      geometric_->setGridStiffness(*qp.gridStiffness);
+    if (!multigrid.gridStiffness.is_null())
+      geometric_->setGridStiffness(*multigrid.gridStiffness);
     else
-      geometric_->setFineStiffness(qp.Qmatrix());
+      geometric_->setFineStiffness(assembledStiffness(qp, multigrid));
     geometric_->setFineStiffnessOperator(qp.Q, *diagonalOfQ_);
   }
   // A single grid factored exactly is H's inverse: a contact correction would add nothing,

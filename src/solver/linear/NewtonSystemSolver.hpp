@@ -18,13 +18,14 @@
 // multigrid's levels are MueLu's (MueLuPreconditioner) or, on a box mesh, geometric ones
 // above MueLu's (GeometricMultigridPreconditioner): "hierarchy". A matrix-free Q (a
 // StiffnessOperator, not assembled) takes "amg of H" on geometric levels, with the grid's P1
-// stiffness (ContactQP::gridStiffness) for a P_k space, and its contact rows for the contact
+// stiffness (MultigridInput::gridStiffness) for a P_k space, and its contact rows for the contact
 // correction.
 #include <memory>
 
 #include <Teuchos_ParameterList.hpp>
 
 #include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 #include "solver/linear/BarrierHessianOperator.hpp"
 #include "solver/linear/InitialGuessProjection.hpp"
 #include "solver/linear/KrylovSolver.hpp"
@@ -51,7 +52,7 @@ class NewtonSystemSolver {
   // entries are the caller's. `freeMotions`: rigid body motions only the contact holds
   // (checkRigidBodyMotionsHeld), solved for exactly around the preconditioner
   // (FreeMotionCorrection); null if none. Throws InputError.
-  NewtonSystemSolver(const ContactQP& qp, const Teuchos::ParameterList& params,
+  NewtonSystemSolver(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& params,
                      RCP<const MultiVector> freeMotions = Teuchos::null);
 
   // Sets D and refreshes the preconditioner as its strategy says.
@@ -103,8 +104,9 @@ class NewtonSystemSolver {
 
   // The geometric hierarchy for Q + A^T D' A, D' = `filtered`, without assembling it.
   void buildGeometricForSum(const Vector& filtered);
-  // amg_ on the geometric levels of qp.grid (Preconditioner/hierarchy geometric or auto).
-  void makeGeometric(const ContactQP& qp, const Teuchos::ParameterList& prec, const StiffnessParts& stiffness);
+  // amg_ on the geometric levels of multigrid.grid (Preconditioner/hierarchy geometric or auto).
+  void makeGeometric(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& prec,
+                     const StiffnessParts& stiffness);
 };
 
 // q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i, on A's row map, from

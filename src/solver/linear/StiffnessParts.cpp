@@ -8,8 +8,8 @@
 
 namespace signorini {
 
-StiffnessParts::StiffnessParts(const ContactQP& qp)
-    : matrix_(qp.Qmatrix()), stiffness_(Teuchos::rcp_dynamic_cast<const StiffnessOperator>(qp.Q)) {}
+StiffnessParts::StiffnessParts(const ContactQP& qp, const MultigridInput& multigrid)
+    : matrix_(assembledStiffness(qp, multigrid)), stiffness_(Teuchos::rcp_dynamic_cast<const StiffnessOperator>(qp.Q)) {}
 
 void StiffnessParts::require() const {
   if (!available())

@@ -1,17 +1,18 @@
 #pragma once
 // What the preconditioners and scale estimates read of the stiffness Q besides its action:
 // its diagonal, its prescribed DOFs and its rows on the contact DOFs, taken from Q assembled
-// (ContactQP::Qmatrix()) or, when Q is matrix-free, from its StiffnessOperator.
+// (assembledStiffness()) or, when Q is matrix-free, from its StiffnessOperator.
 #include <vector>
 
 #include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/MultigridInput.hpp"
 #include "signorini/solver/StiffnessOperator.hpp"
 
 namespace signorini {
 
 class StiffnessParts {
  public:
-  explicit StiffnessParts(const ContactQP& qp);
+  StiffnessParts(const ContactQP& qp, const MultigridInput& multigrid);
 
   // Whether Q is assembled or a StiffnessOperator (else nothing below is available).
   bool available() const { return !matrix_.is_null() || !stiffness_.is_null(); }

@@ -61,7 +61,7 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
 
   // What computeForSum() takes for Q: the fine matrix itself (its Galerkin product P^T Q P
   // is formed when needed; Q must stay valid), or, for a P_k fine space (k > 1), the grid's
-  // P1 stiffness (ContactQP::gridStiffness: DOF blockSize * vertex + component of the
+  // P1 stiffness (MultigridInput::gridStiffness: DOF blockSize * vertex + component of the
   // constructor's grid, any one-to-one row map; copied) in place of P^T Q P, which it equals
   // on the mesh's own grid, so that Q need not be assembled.
   void setFineStiffness(const RCP<const CrsMatrix>& Q);

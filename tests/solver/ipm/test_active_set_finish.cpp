@@ -18,17 +18,18 @@ namespace {
 using namespace signorini;
 using namespace signorini::testing;
 
-SolveResult solve(const ContactQP& qp, bool finish) {
+SolveResult solve(const AssembledProblem& problem, bool finish) {
   Teuchos::ParameterList params;
   params.set("primal-dual: active-set finish", finish);
-  return InteriorPointSolver(params).solve(qp);
+  return InteriorPointSolver(params).solve(problem.qp, problem.multigrid);
 }
 
 // A 2D and a 3D problem whose last iterations are the barrier's linear tail.
 TEST(ActiveSetFinish, EndsTheSolveAtTheOptimumOfTheBarrierIterations) {
   for (const char* name : {"K", "L"}) {
-    const ContactQP qp = buildProblem(shippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm()).qp;
-    const SolveResult with = solve(qp, true), without = solve(qp, false);
+    const AssembledProblem problem = buildProblem(shippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm());
+    const ContactQP& qp = problem.qp;
+    const SolveResult with = solve(problem, true), without = solve(problem, false);
     ASSERT_TRUE(with.converged() && without.converged()) << name << ": " << with.message << " / " << without.message;
     EXPECT_TRUE(with.finishedOnActiveSet) << name;
     EXPECT_GE(with.activeSetFinishAttempts, 1) << name;
@@ -59,8 +60,9 @@ TEST(ActiveSetFinish, EndsTheSolveAtTheOptimumOfTheBarrierIterations) {
 // The finished point's multipliers are the contact forces: none of the wrong sign, none on a
 // constraint with a gap.
 TEST(ActiveSetFinish, MultipliersAreCompressiveAndComplementary) {
-  const ContactQP qp = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm()).qp;
-  const SolveResult r = solve(qp, true);
+  const AssembledProblem problem = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm());
+  const ContactQP& qp = problem.qp;
+  const SolveResult r = solve(problem, true);
   ASSERT_TRUE(r.finishedOnActiveSet);
   Vector c(qp.A->getRangeMap());
   qp.A->apply(*r.v, c);

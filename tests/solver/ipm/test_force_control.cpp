@@ -39,7 +39,7 @@ ControlledRun solve(const Teuchos::ParameterList& problem, const std::string& me
   Teuchos::ParameterList solver;
   solver.set("method", method);
   ControlledRun run;
-  run.result = InteriorPointSolver(solver).solve(p.qp);
+  run.result = InteriorPointSolver(solver).solve(p.qp, p.multigrid);
   run.dim = p.definition.dim;
   const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
   const RCP<Vector> active = activeIndicator(p.qp, *run.result.v, *run.result.lambda);

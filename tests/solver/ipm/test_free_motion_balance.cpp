@@ -44,7 +44,7 @@ std::vector<double> imbalance(const ContactQP& qp, const MultiVector& F, const V
 TEST(FreeMotionBalance, MultipliersBalanceThePressingLoad) {
   for (int dim : {2, 3}) {
     const AssembledProblem p = pressedBox(dim, "-3");
-    const RCP<const MultiVector> F = checkRigidBodyMotionsHeld(p.qp);
+    const RCP<const MultiVector> F = checkRigidBodyMotionsHeld(p.qp, p.multigrid);
     ASSERT_FALSE(F.is_null()) << "dim " << dim;
     Vector y(p.qp.A->getRangeMap());
     y.randomize(0.1, 10.0);  // unrelated to the load
@@ -73,7 +73,7 @@ TEST(FreeMotionBalance, MultipliersBalanceThePressingLoad) {
 
 TEST(FreeMotionBalance, WithoutLoadAlongTheFreeMotionsNothingChanges) {
   const AssembledProblem p = pressedBox(2, "0");
-  const RCP<const MultiVector> F = checkRigidBodyMotionsHeld(p.qp);
+  const RCP<const MultiVector> F = checkRigidBodyMotionsHeld(p.qp, p.multigrid);
   ASSERT_FALSE(F.is_null());
   Vector y(p.qp.A->getRangeMap());
   y.putScalar(2.0);

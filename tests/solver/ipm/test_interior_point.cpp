@@ -99,7 +99,7 @@ TEST(InteriorPoint, KnownSolutionsToRoundOff) {
       const double tol = 1e-13;
       params.set("kkt: tolerance", tol);
       IterationLog log(std::cout, std::getenv("SIGNORINI_TEST_LOG") != nullptr);
-      SolveResult r = InteriorPointSolver(params).solve(known.qp, nullptr, &log);
+      SolveResult r = InteriorPointSolver(params).solve(known.qp, MultigridInput(), nullptr, &log);
       ASSERT_TRUE(r.converged()) << name << " " << pattern << ": " << r.message;
       Vector dv(*r.v, Teuchos::Copy);
       dv.update(-1.0, *known.vStar, 1.0);
@@ -123,7 +123,7 @@ TEST(InteriorPoint, DegenerateKnownSolutionToTheSquareRootOfTheTolerance) {
     const double tol = 1e-13;
     params.set("kkt: tolerance", tol);
     IterationLog log(std::cout, std::getenv("SIGNORINI_TEST_LOG") != nullptr);
-    SolveResult r = InteriorPointSolver(params).solve(known.qp, nullptr, &log);
+    SolveResult r = InteriorPointSolver(params).solve(known.qp, MultigridInput(), nullptr, &log);
     ASSERT_TRUE(r.converged()) << name << ": " << r.message;
     Vector dv(*r.v, Teuchos::Copy);
     dv.update(-1.0, *known.vStar, 1.0);
@@ -164,7 +164,7 @@ void expectFamilyMatchesReference(const std::string& name, const std::vector<std
   const double reference = referenceObjective(problem);
   AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
   for (const std::string& m : methods) {
-    SolveResult r = InteriorPointSolver(method(m)).solve(p.qp);
+    SolveResult r = InteriorPointSolver(method(m)).solve(p.qp, p.multigrid);
     if (std::getenv("SIGNORINI_TEST_LOG")) std::cout << name << " " << m << ": " << r.seconds << " s\n";
     EXPECT_TRUE(r.converged()) << name << " " << m << ": " << r.message;
     EXPECT_LE(r.kkt.worst(), 1e-8) << name << " " << m;
@@ -190,12 +190,14 @@ TEST(InteriorPoint, ResultsDoNotDependOnTheRankCount) {
   for (const char* name : {"M", "H", "B", "E"})
     for (const char* m : {"primal-dual", "primal"}) {
       const Teuchos::ParameterList problem = shippedProblem(std::string("paper/") + name);
-      const ContactQP qp = buildProblem(problem, comm).qp;
-      const ContactQP serialQP = buildSerial(problem).qp;
+      const AssembledProblem assembled = buildProblem(problem, comm);
+      const ContactQP& qp = assembled.qp;
+      const AssembledProblem serialProblem = buildSerial(problem);
+      const ContactQP& serialQP = serialProblem.qp;
       EXPECT_EQ(qp.Q->getDomainMap()->getGlobalNumElements(), serialQP.Q->getDomainMap()->getGlobalNumElements());
       EXPECT_EQ(qp.A->getGlobalNumRows(), serialQP.A->getGlobalNumRows());
-      SolveResult parallel = InteriorPointSolver(method(m)).solve(qp);
-      SolveResult serial = InteriorPointSolver(method(m)).solve(serialQP);
+      SolveResult parallel = InteriorPointSolver(method(m)).solve(qp, assembled.multigrid);
+      SolveResult serial = InteriorPointSolver(method(m)).solve(serialQP, serialProblem.multigrid);
       ASSERT_TRUE(parallel.converged() && serial.converged()) << name << " " << m;
       EXPECT_LT(relativeDifference(parallel.objective, serial.objective), 1e-10) << name << " " << m;
       EXPECT_LE(std::abs(parallel.outerIterations - serial.outerIterations), 1) << name << " " << m;
@@ -231,7 +233,7 @@ TEST(InteriorPoint, InfeasibleInitialGuessIsAccepted) {
   }
   const double reference = referenceObjective(problem);
   for (const char* m : {"primal-dual", "primal"}) {
-    SolveResult r = InteriorPointSolver(method(m)).solve(p.qp, &guess);
+    SolveResult r = InteriorPointSolver(method(m)).solve(p.qp, p.multigrid, &guess);
     EXPECT_TRUE(r.converged()) << m << ": " << r.message;
     EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << m;
   }
@@ -260,21 +262,21 @@ TEST(InteriorPoint, ForcingRulesAndKrylovSolversAreSelectable) {
       Teuchos::ParameterList params = method(m);
       params.set("forcing: type", forcing);
       params.set("forcing: eta", std::string(forcing) == "relative" ? 1e-10 : 0.01);
-      SolveResult r = InteriorPointSolver(params).solve(p.qp);
+      SolveResult r = InteriorPointSolver(params).solve(p.qp, p.multigrid);
       EXPECT_TRUE(r.converged()) << forcing << " " << m << ": " << r.message;
       EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << forcing << " " << m;
     }
   {
     Teuchos::ParameterList params = method("primal-dual");
     params.set("primal-dual: corrector from predictor", false);  // the default is true
-    SolveResult r = InteriorPointSolver(params).solve(p.qp);
+    SolveResult r = InteriorPointSolver(params).solve(p.qp, p.multigrid);
     EXPECT_TRUE(r.converged()) << "corrector from zero: " << r.message;
     EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << "corrector from zero";
   }
   for (const char* krylov : {"MINRES", "GMRES"}) {
     Teuchos::ParameterList params = method("primal-dual");
     params.sublist("Krylov").set("solver", krylov);
-    SolveResult r = InteriorPointSolver(params).solve(p.qp);
+    SolveResult r = InteriorPointSolver(params).solve(p.qp, p.multigrid);
     EXPECT_TRUE(r.converged()) << krylov << ": " << r.message;
     EXPECT_LT(relativeDifference(r.objective, reference), 1e-8) << krylov;
   }
@@ -303,7 +305,7 @@ TEST(InteriorPoint, ConvergedMessageNamesTheTolerance) {
   for (const char* m : {"primal-dual", "primal"}) {
     Teuchos::ParameterList params = method(m);
     params.set("kkt: tolerance", 1e-7);
-    SolveResult r = InteriorPointSolver(params).solve(p.qp);
+    SolveResult r = InteriorPointSolver(params).solve(p.qp, p.multigrid);
     EXPECT_TRUE(r.converged()) << m << ": " << r.message;
     EXPECT_EQ(r.message, "every relative KKT measure is below 1e-07") << m;
   }
@@ -317,9 +319,9 @@ TEST(InteriorPoint, NoConstraintsIsOneLinearSolve) {
   const AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
   ASSERT_EQ(p.qp.A->getRangeMap()->getGlobalNumElements(), 0u);
   Vector reference(p.qp.Q->getDomainMap());
-  ASSERT_GT(solveLinear(p.qp, reference, 1e-12 * p.qp.b->norm2()), 0);
+  ASSERT_GT(solveLinear(p.qp, p.multigrid, reference, 1e-12 * p.qp.b->norm2()), 0);
   for (const char* name : {"primal-dual", "primal"}) {
-    const SolveResult r = InteriorPointSolver(method(name)).solve(p.qp);
+    const SolveResult r = InteriorPointSolver(method(name)).solve(p.qp, p.multigrid);
     ASSERT_TRUE(r.converged()) << name << ": " << r.message;
     EXPECT_EQ(r.newtonSteps, 1) << name;
     EXPECT_EQ(r.outerIterations, 0) << name;

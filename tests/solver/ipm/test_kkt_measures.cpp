@@ -29,7 +29,7 @@ double sum(const Vector& x) {
 
 TEST(ActiveSetCriterion, DoesNotDependOnTheScaleOfAConstraintRow) {
   const AssembledProblem p = buildProblem(signorini::testing::shippedProblem("paper/K"), Tpetra::getDefaultComm());
-  const SolveResult r = InteriorPointSolver().solve(p.qp);
+  const SolveResult r = InteriorPointSolver().solve(p.qp, p.multigrid);
   ASSERT_TRUE(r.converged()) << r.message;
   const RCP<Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
   const double activeCount = sum(*active);

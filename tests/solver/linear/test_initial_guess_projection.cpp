@@ -22,7 +22,9 @@ using namespace signorini;
 using namespace signorini::testing;
 
 struct Fixture {
-  ContactQP qp = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp;
+  AssembledProblem problem = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm());
+  const ContactQP& qp = problem.qp;
+  const MultigridInput& multigrid = problem.multigrid;
   BarrierHessianOperator H{qp.Q, qp.A};  // Q until weights are set: symmetric positive definite
   RCP<Vector> random() const {
     auto v = rcp(new Vector(qp.Q->getDomainMap()));
@@ -149,7 +151,7 @@ TEST(InitialGuessProjection, NewtonSystemSolverStartsFromEarlierSolutions) {
   for (int keep : {0, 2}) {
     Teuchos::ParameterList params = NewtonSystemSolver::validParameters();
     params.sublist("Krylov").set("initial guess: previous solutions", keep);
-    NewtonSystemSolver newton(f.qp, params);
+    NewtonSystemSolver newton(f.qp, f.multigrid, params);
     newton.setWeights(D);
     const KrylovResult first = newton.solve(r, x, 1e-10 * r.norm2());
     ASSERT_TRUE(first.converged);
@@ -189,7 +191,7 @@ TEST(InitialGuessProjection, ContactCorrectedStartIsExactOnTheContactDofs) {
     // paper/M is small enough to be factored whole, which needs no contact correction: MueLu
     // instead keeps one.
     params.sublist("Preconditioner").set("geometric: direct solve size", 0);
-    NewtonSystemSolver newton(f.qp, params);
+    NewtonSystemSolver newton(f.qp, f.multigrid, params);
     newton.setWeights(D);
     const KrylovResult result = newton.solve(r, x, 1e-8 * r.norm2());
     ASSERT_TRUE(result.converged);

@@ -26,7 +26,7 @@ using namespace signorini::testing;
 // ones next to the zone's edge, which keep 1.
 Vector contactZoneWeights(const ContactQP& qp, int step) {
   Vector diagonal(qp.Q->getRangeMap()), D(qp.A->getRangeMap());
-  qp.Qmatrix()->getLocalDiagCopy(diagonal);
+  Teuchos::rcp_dynamic_cast<const CrsMatrix>(qp.Q, true)->getLocalDiagCopy(diagonal);
   const double scale = diagonal.normInf();
   const GlobalOrdinal half = static_cast<GlobalOrdinal>(qp.A->getGlobalNumRows() / 2);
   auto d = D.getDataNonConst();
@@ -39,14 +39,15 @@ Vector contactZoneWeights(const ContactQP& qp, int step) {
 
 // CG iterations of the solves of H x = r to 1e-8 ||r|| from zero, one per step of
 // fallingMuWeights, with a hierarchy rebuilt at every step.
-std::vector<int> cgCounts(const ContactQP& qp, const Teuchos::ParameterList& preconditioner, const Vector& r,
-                          int steps) {
+std::vector<int> cgCounts(const AssembledProblem& problem, const Teuchos::ParameterList& preconditioner,
+                          const Vector& r, int steps) {
+  const ContactQP& qp = problem.qp;
   Teuchos::ParameterList params = NewtonSystemSolver::validParameters();
   params.sublist("Preconditioner").set("amg of H: rebuild tolerance", 0.0);  // either hierarchy
   params.sublist("Preconditioner").setParameters(preconditioner);
   params.sublist("Krylov").set("initial guess: previous solutions", 0);  // the preconditioner alone
   params.sublist("Krylov").set("initial guess: contact correction", false);
-  NewtonSystemSolver solver(qp, params);
+  NewtonSystemSolver solver(qp, problem.multigrid, params);
   std::vector<int> counts;
   for (int step = 0; step < steps; ++step) {
     solver.setWeights(contactZoneWeights(qp, step));
@@ -89,8 +90,8 @@ TEST(NewtonSystemSolver, FilteredAmgKeepsCgCountsFlatAsWeightsGrow) {
       }
       filtered.set("amg of H: weight cap", 10.0);
       unfiltered.set("amg of H: weight cap", 0.0);
-      const std::vector<int> capped = cgCounts(problem.qp, filtered, r, steps);
-      const std::vector<int> whole = cgCounts(problem.qp, unfiltered, r, steps);
+      const std::vector<int> capped = cgCounts(problem, filtered, r, steps);
+      const std::vector<int> whole = cgCounts(problem, unfiltered, r, steps);
       const std::string what = std::string(hierarchy) + " " + std::to_string(dim) + "D: filtered " + show(capped) +
                                "/ unfiltered " + show(whole);
       const int cappedMax = *std::max_element(capped.begin(), capped.end());
@@ -111,7 +112,7 @@ TEST(NewtonSystemSolver, OneGridFactoredExactlyIsAnExactPreconditioner) {
     ASSERT_LT(problem.qp.Q->getDomainMap()->getGlobalNumElements(), 2500u);
     Vector r(problem.qp.Q->getRangeMap());
     r.randomize();
-    const std::vector<int> counts = cgCounts(problem.qp, Teuchos::ParameterList(), r, 12);
+    const std::vector<int> counts = cgCounts(problem, Teuchos::ParameterList(), r, 12);
     EXPECT_LE(*std::max_element(counts.begin(), counts.end()), 2) << dim << "D: " << show(counts);
   }
 }
@@ -121,13 +122,14 @@ TEST(NewtonSystemSolver, OneGridFactoredExactlyIsAnExactPreconditioner) {
 // main iterations as cheap as its first: 3-5 CG iterations in the last against 4 in the
 // first, on 1-3 ranks, where the AMG of H needs 7 and 17-18 in the last three against 22-23.
 TEST(NewtonSystemSolver, FilteredAmgKeepsTheLastNewtonStepsCheap) {
-  const ContactQP qp = buildProblem(shippedProblem("paper/G"), Tpetra::getDefaultComm()).qp;
+  const AssembledProblem problem = buildProblem(shippedProblem("paper/G"), Tpetra::getDefaultComm());
+  const ContactQP& qp = problem.qp;
   int lastThree[2];
   std::string counts;
   for (int k = 0; k < 2; ++k) {
     Teuchos::ParameterList params;
     params.sublist("Preconditioner").set("amg of H: weight cap", k == 0 ? 10.0 : 0.0);
-    const SolveResult r = InteriorPointSolver(params).solve(qp);
+    const SolveResult r = InteriorPointSolver(params).solve(qp, problem.multigrid);
     ASSERT_TRUE(r.converged()) << r.message;
     ASSERT_GE(r.outerIterations, 4);
     std::vector<int> perIteration(r.outerIterations, 0);

@@ -20,7 +20,7 @@ using RowMatrix = Tpetra::RowMatrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
 
 TEST(ChebyshevSmoother, AppliesIfpack2sPolynomial) {
   const AssembledProblem problem = buildProblem(contactBoxProblem(2, 8), Tpetra::getDefaultComm());
-  const RCP<const CrsMatrix> Q = problem.qp.Qmatrix();
+  const RCP<const CrsMatrix> Q = assembledStiffness(problem.qp, problem.multigrid);
   auto inverseDiagonal = rcp(new Vector(Q->getRowMap()));
   Q->getLocalDiagCopy(*inverseDiagonal);
   inverseDiagonal->reciprocal(*inverseDiagonal);

@@ -64,7 +64,7 @@ WeightedProblem weightedProblem(const Case& c, ContactSubspaceBlocks blocks = Co
   WeightedProblem s{buildProblem(problem, Tpetra::getDefaultComm()), {}, {}};
   const ContactQP& qp = s.problem.qp;
   s.H = rcp(new BarrierHessianOperator(qp.Q, qp.A));
-  s.S = rcp(new ContactSubspaceSolver(*qp.Qmatrix(), *qp.A, blocks));
+  s.S = rcp(new ContactSubspaceSolver(*assembledStiffness(qp, s.problem.multigrid), *qp.A, blocks));
   Vector D(qp.A->getRangeMap());
   D.randomize(1.0, 1e8);  // from free to firmly active constraints
   s.H->setWeights(D);
@@ -143,16 +143,17 @@ TEST(ContactSubspaceSolver, AutoBlocksKeepTheKrylovCounts) {
   for (const Case& c : {Case{"H", "nodal"}, Case{"B", "weighted gap"}, Case{"J", "nodal"}}) {
     Teuchos::ParameterList problem = shippedProblem(std::string("paper/") + c.name);
     problem.sublist("Contact").set("formulation", c.formulation);
-    const ContactQP qp = buildProblem(problem, Tpetra::getDefaultComm()).qp;
+    const AssembledProblem assembled = buildProblem(problem, Tpetra::getDefaultComm());
+    const ContactQP& qp = assembled.qp;
     if (std::string(c.formulation) == "nodal") {
-      const StiffnessParts stiffness(qp);
+      const StiffnessParts stiffness(qp, assembled.multigrid);
       EXPECT_TRUE(ContactSubspaceSolver(*stiffness.contactRows(*qp.A), *qp.A, ContactSubspaceBlocks::Auto).perRank());
     }
     SolveResult results[2];
     for (int k = 0; k < 2; ++k) {
       Teuchos::ParameterList params;
       params.sublist("Preconditioner").set("contact correction: blocks", k == 0 ? "gathered" : "auto");
-      results[k] = InteriorPointSolver(params).solve(qp);
+      results[k] = InteriorPointSolver(params).solve(qp, assembled.multigrid);
       ASSERT_TRUE(results[k].converged()) << describe(c) << ": " << results[k].message;
     }
     EXPECT_LE(results[1].krylovIterations, 1.1 * results[0].krylovIterations + 1) << describe(c);
@@ -169,7 +170,8 @@ TEST(SubspaceCorrectedPreconditioner, SymmetricPositiveDefiniteAndExactOnTheSubs
     WeightedProblem s = weightedProblem(c);
     const std::string name = describe(c);
     const ContactQP& qp = s.problem.qp;
-    MueLuPreconditioner amg(Teuchos::ParameterList(), qp.blockSize, qp.nearNullspace(), qp.coordinates);
+    const MultigridInput& mg = s.problem.multigrid;
+    MueLuPreconditioner amg(Teuchos::ParameterList(), mg.blockSize, mg.nearNullspace(qp), mg.coordinates);
     amg.compute(s.H->assemble());
     for (const ContactCorrection combination : {ContactCorrection::Additive, ContactCorrection::Multiplicative}) {
       const char* combinationName = combination == ContactCorrection::Additive ? "additive" : "multiplicative";
@@ -193,7 +195,7 @@ TEST(SubspaceCorrectedPreconditioner, SymmetricPositiveDefiniteAndExactOnTheSubs
       EXPECT_LT(Mx.norm2(), 1e-10 * x.norm2()) << name;
       // The same M^-1 with both residuals taken from H P P^T instead of H.
       SubspaceCorrectedPreconditioner sliced(s.H, amg.getOperator(), s.S, combination,
-                                             s.H->onContactColumns(*s.problem.qp.Qmatrix()));
+                                             s.H->onContactColumns(*assembledStiffness(s.problem.qp, s.problem.multigrid)));
       Vector slicedMu(qp.Q->getDomainMap());
       sliced.apply(u, slicedMu);
       slicedMu.update(-1.0, Mu, 1.0);
@@ -208,7 +210,7 @@ TEST(BarrierHessianOperator, ContactColumnsGiveHOnTheSubspace) {
     WeightedProblem s = weightedProblem(c);
     const std::string name = describe(c);
     const ContactQP& qp = s.problem.qp;
-    const RCP<BarrierHessianOperator> HP = s.H->onContactColumns(*s.problem.qp.Qmatrix());
+    const RCP<BarrierHessianOperator> HP = s.H->onContactColumns(*assembledStiffness(s.problem.qp, s.problem.multigrid));
     const Vector indicator = contactIndicator(qp);
     Vector x(qp.Q->getDomainMap()), Hx(qp.Q->getDomainMap()), HPx(qp.Q->getDomainMap());
     x.randomize();
@@ -235,7 +237,8 @@ TEST(BarrierHessianOperator, ContactColumnsGiveHOnTheSubspace) {
 // Every preconditioner configuration converges to the same solution, in no more Krylov
 // iterations per Newton system with the contact correction than without.
 TEST(SubspaceCorrectedPreconditioner, EveryConfigurationReachesTheSameSolution) {
-  const ContactQP qp = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm()).qp;
+  const AssembledProblem problem = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm());
+  const ContactQP& qp = problem.qp;
   double reference = 0;
   int withoutCorrection = 0;
   for (const char* type : {"amg of H", "amg of Q"})
@@ -246,7 +249,7 @@ TEST(SubspaceCorrectedPreconditioner, EveryConfigurationReachesTheSameSolution) 
         params.sublist("Preconditioner").set("type", type);
         params.sublist("Preconditioner").set("contact correction", correction);
         params.sublist("Preconditioner").set("amg of H: rebuild tolerance", rebuild);
-        const SolveResult r = InteriorPointSolver(params).solve(qp);
+        const SolveResult r = InteriorPointSolver(params).solve(qp, problem.multigrid);
         const std::string what = std::string(type) + " / " + correction + " / " + std::to_string(rebuild);
         ASSERT_TRUE(r.converged()) << what << ": " << r.message;
         if (reference == 0) reference = r.objective;
@@ -265,11 +268,12 @@ TEST(SubspaceCorrectedPreconditioner, EveryConfigurationReachesTheSameSolution) 
 }
 
 TEST(SubspaceCorrectedPreconditioner, NeedsAnAmg) {
-  const ContactQP qp = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp;
+  const AssembledProblem problem = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm());
+  const ContactQP& qp = problem.qp;
   Teuchos::ParameterList params;
   params.sublist("Preconditioner").set("type", "none");
   params.sublist("Preconditioner").set("contact correction", "multiplicative");
-  EXPECT_THROW(InteriorPointSolver(params).solve(qp), InputError);
+  EXPECT_THROW(InteriorPointSolver(params).solve(qp, problem.multigrid), InputError);
 }
 
 }  // namespace

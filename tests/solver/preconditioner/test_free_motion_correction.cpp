@@ -45,14 +45,15 @@ struct Corrected {
 Corrected corrected() {
   Corrected c{rollerBox(), {}, {}, {}, {}};
   const ContactQP& qp = c.problem.qp;
-  c.F = checkRigidBodyMotionsHeld(qp);
+  const MultigridInput& mg = c.problem.multigrid;
+  c.F = checkRigidBodyMotionsHeld(qp, mg);
   c.H = rcp(new BarrierHessianOperator(qp.Q, qp.A));
   Vector D(qp.A->getRangeMap());
   D.randomize(1e-8, 1e4);
   c.H->setWeights(D);
   c.M = rcp(new FreeMotionCorrection(c.H, c.F));
-  c.amg = std::make_shared<MueLuPreconditioner>(Teuchos::ParameterList(), qp.blockSize, qp.nearNullspace(),
-                                                  qp.coordinates);
+  c.amg = std::make_shared<MueLuPreconditioner>(Teuchos::ParameterList(), mg.blockSize, mg.nearNullspace(qp),
+                                                  mg.coordinates);
   c.amg->compute(c.H->assemble());
   c.M->setInner(c.amg->getOperator());
   return c;
@@ -60,7 +61,7 @@ Corrected corrected() {
 
 TEST(FreeMotionCorrection, TheProblemHasOneFreeMotion) {
   const AssembledProblem p = rollerBox();
-  const RCP<const MultiVector> F = checkRigidBodyMotionsHeld(p.qp);
+  const RCP<const MultiVector> F = checkRigidBodyMotionsHeld(p.qp, p.multigrid);
   ASSERT_FALSE(F.is_null());
   EXPECT_EQ(F->getNumVectors(), 1u);
 }

@@ -35,7 +35,7 @@ void expectInverse(const CrsMatrix& A, const Operator& inverse, double tolerance
 TEST(GatheredDirectSolver, AppliesTheInverseOnEveryRankCount) {
   for (int dim : {2, 3}) {
     const AssembledProblem problem = buildProblem(contactBoxProblem(dim, dim == 2 ? 8 : 4), Tpetra::getDefaultComm());
-    const auto Q = Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix());
+    const auto Q = Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(problem.qp, problem.multigrid));
     GatheredDirectSolver solver;
     solver.compute(Q);
     expectInverse(*Q, *solver.getOperator(), 1e-10);
@@ -51,7 +51,7 @@ TEST(GatheredDirectSolver, AppliesTheInverseOnEveryRankCount) {
 // A matrix that is not positive definite is factored by LU instead of Cholesky.
 TEST(GatheredDirectSolver, FactorsAnIndefiniteMatrixByLU) {
   const AssembledProblem problem = buildProblem(contactBoxProblem(2, 8), Tpetra::getDefaultComm());
-  const auto Q = Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix());
+  const auto Q = Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(problem.qp, problem.multigrid));
   const RCP<CrsMatrix> negated = Tpetra::MatrixMatrix::add(-1.0, false, *Q, 0.0, false, *Q);
   GatheredDirectSolver solver;
   solver.compute(negated);

@@ -41,11 +41,11 @@ AssembledProblem box(int dim, int cells, int degree, bool clamped = true) {
 
 // `directSolveSize` 0: MueLu below the coarsest grid; the levels end at the first grid with at
 // most `directSolveSize` unknowns.
-GeometricMultigridPreconditioner multigrid(const ContactQP& qp, long long coarsestSize = 200,
+GeometricMultigridPreconditioner multigrid(const ContactQP& qp, const MultigridInput& mg, long long coarsestSize = 200,
                                            int eigenvalueUpdateSteps = 3, long long directSolveSize = 100) {
-  return GeometricMultigridPreconditioner(*qp.grid, qp.Qmatrix()->getRowMap(),
-                                          prescribedRows(*qp.Qmatrix()),
-                                          *qp.coordinates, qp.blockSize, coarsestSize, directSolveSize,
+  return GeometricMultigridPreconditioner(*mg.grid, assembledStiffness(qp, mg)->getRowMap(),
+                                          prescribedRows(*assembledStiffness(qp, mg)),
+                                          *mg.coordinates, mg.blockSize, coarsestSize, directSolveSize,
                                           Teuchos::ParameterList(), Teuchos::ParameterList(), eigenvalueUpdateSteps);
 }
 
@@ -77,7 +77,7 @@ struct ContactBox {
   }
   Vector weights(int step) {
     Vector diagonal(problem.qp.Q->getRangeMap()), D(problem.qp.A->getRangeMap());
-    problem.qp.Qmatrix()->getLocalDiagCopy(diagonal);
+    assembledStiffness(problem.qp, problem.multigrid)->getLocalDiagCopy(diagonal);
     const double scale = diagonal.normInf();
     auto d = D.getDataNonConst();
     for (std::size_t i = 0; i < D.getLocalLength(); ++i) {
@@ -106,16 +106,16 @@ struct ContactBox {
 
 TEST(GeometricMultigrid, LevelsFollowTheGrids) {
   // 2D P1, 16 cells: grids of 16, 8, 4 cells; the 2-cell grid (18 unknowns) is below 50.
-  EXPECT_EQ(multigrid(box(2, 16, 1).qp, 50, 5, 0).levelSizes(), (std::vector<long long>{578, 162, 50}));
+  EXPECT_EQ(multigrid(box(2, 16, 1).qp, box(2, 16, 1).multigrid, 50, 5, 0).levelSizes(), (std::vector<long long>{578, 162, 50}));
   // P2 goes to P1 on its own mesh first.
-  EXPECT_EQ(multigrid(box(2, 4, 2).qp, 20, 5, 0).levelSizes(), (std::vector<long long>{162, 50}));
-  EXPECT_EQ(multigrid(box(3, 4, 1).qp, 20, 5, 0).levelSizes(), (std::vector<long long>{375, 81, 24}));
+  EXPECT_EQ(multigrid(box(2, 4, 2).qp, box(2, 4, 2).multigrid, 20, 5, 0).levelSizes(), (std::vector<long long>{162, 50}));
+  EXPECT_EQ(multigrid(box(3, 4, 1).qp, box(3, 4, 1).multigrid, 20, 5, 0).levelSizes(), (std::vector<long long>{375, 81, 24}));
   // An odd count coarsens too: 5 cells, then 3 (boxes of widths 2/5, 2/5 and 1/5), 2 and 1.
-  EXPECT_EQ(multigrid(box(2, 5, 1).qp, 1, 5, 0).levelSizes(), (std::vector<long long>{72, 32, 18, 8}));
-  EXPECT_EQ(multigrid(box(3, 3, 1).qp, 20, 5, 0).levelSizes(), (std::vector<long long>{192, 81, 24}));
+  EXPECT_EQ(multigrid(box(2, 5, 1).qp, box(2, 5, 1).multigrid, 1, 5, 0).levelSizes(), (std::vector<long long>{72, 32, 18, 8}));
+  EXPECT_EQ(multigrid(box(3, 3, 1).qp, box(3, 3, 1).multigrid, 20, 5, 0).levelSizes(), (std::vector<long long>{192, 81, 24}));
   // The first grid the direct solver takes is the last.
-  EXPECT_EQ(multigrid(box(2, 16, 1).qp, 50, 5, 162).levelSizes(), (std::vector<long long>{578, 162}));
-  EXPECT_EQ(multigrid(box(2, 16, 1).qp, 50, 5, 161).levelSizes(), (std::vector<long long>{578, 162, 50}));
+  EXPECT_EQ(multigrid(box(2, 16, 1).qp, box(2, 16, 1).multigrid, 50, 5, 162).levelSizes(), (std::vector<long long>{578, 162}));
+  EXPECT_EQ(multigrid(box(2, 16, 1).qp, box(2, 16, 1).multigrid, 50, 5, 161).levelSizes(), (std::vector<long long>{578, 162, 50}));
 }
 
 // P u_c = u at every fine DOF for a linear field u that vanishes on the clamped face (and
@@ -129,7 +129,8 @@ TEST(GeometricMultigrid, InterpolationIsExactForLinearFields) {
                         Case{3, 4, 2, false}, Case{2, 7, 1, true}, Case{3, 3, 1, false}}) {
     const AssembledProblem problem = box(c.dim, c.cells, c.degree, c.clamped);
     const ContactQP& qp = problem.qp;
-    const GeometricMultigridPreconditioner gmg = multigrid(qp, 1);
+    const MultigridInput& mg = problem.multigrid;
+    const GeometricMultigridPreconditioner gmg = multigrid(qp, mg, 1);
     ASSERT_GE(gmg.geometricLevels(), 1);
     // The field: u_a(x) = (1 - x_top) (a + 1 + x_0 - 2 x_1) when clamped, (a + 1 + x_0 - 2 x_1 + 3 x_top) when free.
     auto field = [&](const double* x, int a) {
@@ -137,23 +138,23 @@ TEST(GeometricMultigrid, InterpolationIsExactForLinearFields) {
       return c.clamped ? (1.0 - top) * (a + 1) : linear + 3 * top;
     };
     RCP<const CrsMatrix> P = gmg.prolongator(0);
-    const auto coarse = c.degree == 1 ? qp.grid->coarser() : qp.grid;
+    const auto coarse = c.degree == 1 ? mg.grid->coarser() : mg.grid;
     Vector uc(P->getDomainMap()), u(P->getRangeMap());
     {
       auto d = uc.getDataNonConst();
       for (std::size_t k = 0; k < uc.getLocalLength(); ++k) {
         const GlobalOrdinal dof = P->getDomainMap()->getGlobalElement(k);
         double x[3];
-        coarse->vertexCoordinates(dof / qp.blockSize, x);
-        d[k] = field(x, static_cast<int>(dof % qp.blockSize));
+        coarse->vertexCoordinates(dof / mg.blockSize, x);
+        d[k] = field(x, static_cast<int>(dof % mg.blockSize));
       }
     }
     P->apply(uc, u);
     auto ud = u.getData();
     double worst = 0.0;
-    for (std::size_t i = 0; i < qp.coordinates->getLocalLength(); ++i) {
+    for (std::size_t i = 0; i < mg.coordinates->getLocalLength(); ++i) {
       double x[3];
-      for (int a = 0; a < c.dim; ++a) x[a] = qp.coordinates->getData(a)[i];
+      for (int a = 0; a < c.dim; ++a) x[a] = mg.coordinates->getData(a)[i];
       for (int a = 0; a < c.dim; ++a) worst = std::max(worst, std::abs(ud[c.dim * i + a] - field(x, a)));
     }
     EXPECT_LT(worst, 1e-12) << c.dim << "D P" << c.degree << " nx " << c.cells;
@@ -182,16 +183,16 @@ TEST(GeometricMultigrid, CgCountsDoNotGrowWithTheMesh) {
   for (const Case& c : {Case{2, 32, 1, 1, 16}, Case{2, 64, 1, 2, 16}, Case{2, 16, 2, 1, 16}, Case{3, 8, 1, 1, 11},
                         Case{3, 16, 1, 2, 11}}) {
     const AssembledProblem problem = box(c.dim, c.cells, c.degree);
-    GeometricMultigridPreconditioner gmg = multigrid(problem.qp, 200, 5, 1000);
-    gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
+    GeometricMultigridPreconditioner gmg = multigrid(problem.qp, problem.multigrid, 200, 5, 1000);
+    gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(problem.qp, problem.multigrid)));
     EXPECT_EQ(gmg.geometricLevels(), c.levels);
     EXPECT_TRUE(gmg.directCoarsestSolve());
     const KrylovResult r = solve(problem.qp, gmg);
     EXPECT_LE(r.iterations, c.maxIterations) << c.dim << "D P" << c.degree << " nx " << c.cells;
     if (c.dim == 2 && c.cells == 64) {
-      MueLuPreconditioner amg(Teuchos::ParameterList(), problem.qp.blockSize, problem.qp.nearNullspace(),
-                              problem.qp.coordinates);
-      amg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
+      MueLuPreconditioner amg(Teuchos::ParameterList(), problem.multigrid.blockSize, problem.multigrid.nearNullspace(problem.qp),
+                              problem.multigrid.coordinates);
+      amg.compute(Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(problem.qp, problem.multigrid)));
       EXPECT_GT(solve(problem.qp, amg).iterations, r.iterations + 2) << "smoothed aggregation alone";
     }
   }
@@ -201,8 +202,8 @@ TEST(GeometricMultigrid, CgCountsDoNotGrowWithTheMesh) {
 TEST(GeometricMultigrid, CycleIsSymmetric) {
   const AssembledProblem problem = box(3, 8, 1);
   for (long long directSolveSize : {0, 100}) {
-    GeometricMultigridPreconditioner gmg = multigrid(problem.qp, 50, 5, directSolveSize);
-    gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
+    GeometricMultigridPreconditioner gmg = multigrid(problem.qp, problem.multigrid, 50, 5, directSolveSize);
+    gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(problem.qp, problem.multigrid)));
     ASSERT_EQ(gmg.geometricLevels(), 2);
     EXPECT_EQ(gmg.directCoarsestSolve(), directSolveSize > 0);
     Vector x(problem.qp.Q->getDomainMap()), y(x.getMap()), Mx(x.getMap()), My(x.getMap());
@@ -220,11 +221,12 @@ TEST(GeometricMultigrid, CycleIsSymmetric) {
 TEST(GeometricMultigrid, SmallCoarsestGridIsSolvedExactly) {
   const AssembledProblem problem = box(2, 5, 1);  // the 3-cell grid (32 unknowns) is below 40: one level
   const ContactQP& qp = problem.qp;
-  EXPECT_FALSE(multigrid(qp, 40, 5, 71).directCoarsestSolve());  // 72 unknowns
-  GeometricMultigridPreconditioner gmg = multigrid(qp, 40, 5, 72);
+  const MultigridInput& mg = problem.multigrid;
+  EXPECT_FALSE(multigrid(qp, mg, 40, 5, 71).directCoarsestSolve());  // 72 unknowns
+  GeometricMultigridPreconditioner gmg = multigrid(qp, mg, 40, 5, 72);
   ASSERT_EQ(gmg.geometricLevels(), 0);
   ASSERT_TRUE(gmg.directCoarsestSolve());
-  gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(qp.Qmatrix()));
+  gmg.compute(Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(qp, mg)));
   Vector x(qp.Q->getDomainMap()), Qx(x.getMap()), MQx(x.getMap());
   x.randomize();
   qp.Q->apply(x, Qx);
@@ -263,21 +265,22 @@ TEST(GeometricMultigrid, UpdatedCoarseMatricesEqualFreshProducts) {
   for (int dim : {2, 3}) {
     ContactBox box(dim, dim == 2 ? 16 : 8);
     const ContactQP& qp = box.problem.qp;
+    const MultigridInput& mg = box.problem.multigrid;
     // Fresh eigenvalue estimates at every build, so that the cycles can be compared below.
-    GeometricMultigridPreconditioner updated = multigrid(qp, 50, 0);
+    GeometricMultigridPreconditioner updated = multigrid(qp, mg, 50, 0);
     ASSERT_GE(updated.geometricLevels(), 2);
     updated.compute(box.hessian(0));
     const RCP<const CrsMatrix> firstCoarse = updated.levelMatrix(1);
     const RCP<CrsMatrix> H2 = box.hessian(2);
     updated.compute(H2);
     EXPECT_EQ(updated.levelMatrix(1).get(), firstCoarse.get()) << dim << "D: not updated in place";
-    GeometricMultigridPreconditioner fresh = multigrid(qp, 50);
+    GeometricMultigridPreconditioner fresh = multigrid(qp, mg, 50);
     fresh.compute(H2);
     expectTheSameLevels(updated, fresh, std::to_string(dim) + "D");
 
     // The same through update(): H changed in place, with the change that
     // BarrierHessianOperator reports, instead of a new matrix compared with the last one.
-    GeometricMultigridPreconditioner inPlace = multigrid(qp, 50, 0);
+    GeometricMultigridPreconditioner inPlace = multigrid(qp, mg, 50, 0);
     const RCP<CrsMatrix> H = box.hessian(0);
     inPlace.compute(H);
     const RCP<const CrsMatrix> inPlaceCoarse = inPlace.levelMatrix(1);
@@ -288,7 +291,7 @@ TEST(GeometricMultigrid, UpdatedCoarseMatricesEqualFreshProducts) {
     expectTheSameLevels(inPlace, fresh, std::to_string(dim) + "D, update()");
 
     // A fine matrix on another graph is not an update: the levels are computed afresh.
-    updated.compute(Tpetra::MatrixMatrix::add(1.0, false, *H2, 0.0, false, *qp.Qmatrix()));
+    updated.compute(Tpetra::MatrixMatrix::add(1.0, false, *H2, 0.0, false, *assembledStiffness(qp, mg)));
     EXPECT_NE(updated.levelMatrix(1).get(), firstCoarse.get()) << dim << "D";
   }
 }
@@ -301,12 +304,13 @@ TEST(GeometricMultigrid, FineOperatorGivesTheHierarchyOfTheAssembledSum) {
   for (int dim : {2, 3}) {
     ContactBox box(dim, dim == 2 ? 16 : 8);
     const ContactQP& qp = box.problem.qp;
+    const MultigridInput& mg = box.problem.multigrid;
     Vector diagonalOfQ(qp.Q->getRangeMap());
-    qp.Qmatrix()->getLocalDiagCopy(diagonalOfQ);
+    assembledStiffness(qp, mg)->getLocalDiagCopy(diagonalOfQ);
     // Fresh eigenvalue estimates at every build, so that the cycles can be compared.
-    GeometricMultigridPreconditioner sum = multigrid(qp, 50, 0);
+    GeometricMultigridPreconditioner sum = multigrid(qp, mg, 50, 0);
     ASSERT_GE(sum.geometricLevels(), 2);
-    sum.setFineStiffness(qp.Qmatrix());
+    sum.setFineStiffness(assembledStiffness(qp, mg));
     RCP<const CrsMatrix> firstCoarse;
     for (int step : {0, 2, 7}) {
       const std::string label = std::to_string(dim) + "D step " + std::to_string(step);
@@ -314,7 +318,7 @@ TEST(GeometricMultigrid, FineOperatorGivesTheHierarchyOfTheAssembledSum) {
       sum.computeForSum(Teuchos::rcpFromRef(box.H), terms.diagonal, terms.C);
       if (firstCoarse.is_null()) firstCoarse = sum.levelMatrix(1);
       EXPECT_EQ(sum.levelMatrix(1).get(), firstCoarse.get()) << label << ": not updated in place";
-      GeometricMultigridPreconditioner assembled = multigrid(qp, 50, 0);
+      GeometricMultigridPreconditioner assembled = multigrid(qp, mg, 50, 0);
       assembled.compute(box.H.assemble());
       expectSameCoarseMatrices(sum, assembled, label);
       Vector x(qp.Q->getDomainMap()), a(x.getMap()), b(x.getMap());
@@ -337,12 +341,12 @@ TEST(GeometricMultigrid, FineOperatorGivesTheHierarchyOfTheAssembledSum) {
 TEST(GeometricMultigrid, UpdatedEigenvalueEstimatesKeepTheCgCounts) {
   for (int dim : {2, 3}) {
     ContactBox box(dim, dim == 2 ? 32 : 8);
-    GeometricMultigridPreconditioner updated = multigrid(box.problem.qp, 50);
+    GeometricMultigridPreconditioner updated = multigrid(box.problem.qp, box.problem.multigrid, 50);
     ASSERT_GE(updated.geometricLevels(), 2);
     for (int step = 0; step <= 12; ++step) {
       const RCP<CrsMatrix> H = box.hessian(step);
       updated.compute(H);
-      GeometricMultigridPreconditioner fresh = multigrid(box.problem.qp, 50);
+      GeometricMultigridPreconditioner fresh = multigrid(box.problem.qp, box.problem.multigrid, 50);
       fresh.compute(H);
       auto b = rcp(new Vector(H->getRangeMap()));
       b->randomize();
@@ -360,8 +364,8 @@ TEST(GeometricMultigrid, UpdatedEigenvalueEstimatesKeepTheCgCounts) {
   // One or two steps from the previous Ritz vector are too few to trust (the parameter's
   // validator rejects them too).
   const AssembledProblem problem = box(2, 8, 1);
-  EXPECT_THROW(multigrid(problem.qp, 50, 1), Error);
-  EXPECT_THROW(multigrid(problem.qp, 50, 2), Error);
+  EXPECT_THROW(multigrid(problem.qp, problem.multigrid, 50, 1), Error);
+  EXPECT_THROW(multigrid(problem.qp, problem.multigrid, 50, 2), Error);
 }
 
 // Given Q as an operator, the fine smoother of every H = Q + C takes Q's eigenvalue bound,
@@ -372,11 +376,12 @@ TEST(GeometricMultigrid, StiffnessEigenvalueBoundsEverySum) {
   for (int dim : {2, 3}) {
     ContactBox box(dim, dim == 2 ? 32 : 8);
     const ContactQP& qp = box.problem.qp;
+    const MultigridInput& mg = box.problem.multigrid;
     Vector diagonalOfQ(qp.Q->getRangeMap());
-    qp.Qmatrix()->getLocalDiagCopy(diagonalOfQ);
-    GeometricMultigridPreconditioner bounded = multigrid(qp, 50), fresh = multigrid(qp, 50, 0);
+    assembledStiffness(qp, mg)->getLocalDiagCopy(diagonalOfQ);
+    GeometricMultigridPreconditioner bounded = multigrid(qp, mg, 50), fresh = multigrid(qp, mg, 50, 0);
     ASSERT_GE(bounded.geometricLevels(), 2);
-    for (GeometricMultigridPreconditioner* m : {&bounded, &fresh}) m->setFineStiffness(qp.Qmatrix());
+    for (GeometricMultigridPreconditioner* m : {&bounded, &fresh}) m->setFineStiffness(assembledStiffness(qp, mg));
     bounded.setFineStiffnessOperator(qp.Q, diagonalOfQ);
     for (int step = 0; step <= 12; ++step) {
       const std::string label = std::to_string(dim) + "D step " + std::to_string(step);
@@ -406,16 +411,17 @@ TEST(GeometricMultigrid, GridStiffnessIsTheGalerkinProductOfQ) {
     definition.set("element: degree", degree);
     const AssembledProblem problem = buildProblem(definition, Tpetra::getDefaultComm());
     const ContactQP& qp = problem.qp;
+    const MultigridInput& mg = problem.multigrid;
     BarrierHessianOperator H(qp.Q, qp.A);
     Vector D(qp.A->getRangeMap()), diagonal(qp.Q->getRangeMap());
-    qp.Qmatrix()->getLocalDiagCopy(diagonal);
+    assembledStiffness(qp, mg)->getLocalDiagCopy(diagonal);
     D.putScalar(10.0 * diagonal.normInf());
     H.setWeights(D);
     const RCP<const CrsMatrix> C = H.contactTerm(D);
-    const RCP<const CrsMatrix> grid = assembleGridStiffness(distributedSpace(*problem.space), problem.definition, *qp.grid);
-    GeometricMultigridPreconditioner fromQ = multigrid(qp, 20, 0), fromGrid = multigrid(qp, 20, 0);
+    const RCP<const CrsMatrix> grid = assembleGridStiffness(distributedSpace(*problem.space), problem.definition, *mg.grid);
+    GeometricMultigridPreconditioner fromQ = multigrid(qp, mg, 20, 0), fromGrid = multigrid(qp, mg, 20, 0);
     ASSERT_GE(fromQ.geometricLevels(), 2) << label;
-    fromQ.setFineStiffness(qp.Qmatrix());
+    fromQ.setFineStiffness(assembledStiffness(qp, mg));
     fromGrid.setGridStiffness(*grid);
     fromQ.computeForSum(Teuchos::rcpFromRef(H), diagonal, C);
     fromGrid.computeForSum(Teuchos::rcpFromRef(H), diagonal, C);
@@ -426,11 +432,11 @@ TEST(GeometricMultigrid, GridStiffnessIsTheGalerkinProductOfQ) {
 // A grid that the mesh does not refine is an input error, not a wrong preconditioner.
 TEST(GeometricMultigrid, RejectsAGridTheMeshDoesNotRefine) {
   const AssembledProblem problem = box(2, 8, 1);
-  BoxGrid wrong = dynamic_cast<const BoxGrid&>(*problem.qp.grid);
+  BoxGrid wrong = dynamic_cast<const BoxGrid&>(*problem.multigrid.grid);
   wrong.cells = {6, 6, 1};  // halved: vertices at thirds, which the 8-cell mesh lacks
-  const CrsMatrix& Q = *problem.qp.Qmatrix();
+  const CrsMatrix& Q = *assembledStiffness(problem.qp, problem.multigrid);
   EXPECT_THROW(GeometricMultigridPreconditioner(wrong, Q.getRowMap(), prescribedRows(Q),
-                                                *problem.qp.coordinates, 2, 1, 0, Teuchos::ParameterList(),
+                                                *problem.multigrid.coordinates, 2, 1, 0, Teuchos::ParameterList(),
                                                 Teuchos::ParameterList(), 5),
                InputError);
 }
@@ -440,11 +446,11 @@ TEST(GeometricMultigrid, RejectsAGridTheMeshDoesNotRefine) {
 // inside Ifpack2.
 TEST(GeometricMultigrid, SmootherParametersAreCheckedForTheirTypes) {
   const AssembledProblem problem = box(2, 8, 1);
-  const CrsMatrix& Q = *problem.qp.Qmatrix();
+  const CrsMatrix& Q = *assembledStiffness(problem.qp, problem.multigrid);
   const auto make = [&](const Teuchos::ParameterList& smoother) {
-    GeometricMultigridPreconditioner p(*problem.qp.grid, Q.getRowMap(), prescribedRows(Q), *problem.qp.coordinates, 2,
+    GeometricMultigridPreconditioner p(*problem.multigrid.grid, Q.getRowMap(), prescribedRows(Q), *problem.multigrid.coordinates, 2,
                                        1, 0, smoother, Teuchos::ParameterList(), 3);
-    p.compute(Teuchos::rcp_const_cast<CrsMatrix>(problem.qp.Qmatrix()));
+    p.compute(Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(problem.qp, problem.multigrid)));
   };
   Teuchos::ParameterList whole;
   whole.set("chebyshev: ratio eigenvalue", 20);
@@ -464,13 +470,13 @@ TEST(GeometricMultigrid, SmootherParametersAreCheckedForTheirTypes) {
 // every Newton step (one setup per main iteration and one for the start), MueLu's hierarchy
 // alone only when constraints switch.
 TEST(GeometricMultigrid, InteriorPointSolutionAgreesWithTheAlgebraicHierarchy) {
-  const ContactQP qp = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm()).qp;
+  const AssembledProblem problem = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm());
   double objective[2];
   int i = 0;
   for (const char* hierarchy : {"algebraic", "geometric"}) {
     Teuchos::ParameterList params;
     params.sublist("Preconditioner").set("hierarchy", hierarchy);
-    const SolveResult r = InteriorPointSolver(params).solve(qp);
+    const SolveResult r = InteriorPointSolver(params).solve(problem.qp, problem.multigrid);
     ASSERT_TRUE(r.converged()) << hierarchy << ": " << r.message;
     objective[i++] = r.objective;
     if (std::string(hierarchy) == "geometric") EXPECT_EQ(r.preconditionerSetups, r.outerIterations + 1);
@@ -480,13 +486,13 @@ TEST(GeometricMultigrid, InteriorPointSolutionAgreesWithTheAlgebraicHierarchy) {
 }
 
 TEST(GeometricMultigrid, NeedsABoxMesh) {
-  ContactQP qp = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm()).qp;
-  qp.grid.reset();
+  AssembledProblem problem = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm());
+  problem.multigrid.grid.reset();
   Teuchos::ParameterList params;
   params.sublist("Preconditioner").set("hierarchy", "geometric");
-  EXPECT_THROW(InteriorPointSolver(params).solve(qp), InputError);
+  EXPECT_THROW(InteriorPointSolver(params).solve(problem.qp, problem.multigrid), InputError);
   params.sublist("Preconditioner").set("hierarchy", "auto");  // falls back to MueLu alone
-  EXPECT_TRUE(InteriorPointSolver(params).solve(qp).converged());
+  EXPECT_TRUE(InteriorPointSolver(params).solve(problem.qp, problem.multigrid).converged());
 }
 
 }  // namespace
