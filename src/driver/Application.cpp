@@ -27,6 +27,7 @@
 #include "core/ParameterValidation.hpp"
 #include "core/RootTask.hpp"
 #include "driver/HugePages.hpp"
+#include "io/OutputSpace.hpp"
 #include "io/QPCells.hpp"
 #include "io/RunSummary.hpp"
 #include "io/XmlEscape.hpp"
@@ -434,10 +435,12 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     if (root) out << "Exported Q, b, A, d, coords" << (def.degree > 1 ? ", cells" : "") << " to " << cl.exportQp << "/\n";
   }
 
+  const Teuchos::ParameterList& output = params.sublist("Output");
+  if (output.get<bool>("write solution"))
+    detail::checkOutputSpace(directory, detail::estimatedSolutionBytes(*problem.space), *comm);
   RunSummary summary;
   SolveResult result = solveLogged(problem.qp, problem.multigrid, params.sublist("Solver"), out, summary.solveSeconds);
 
-  const Teuchos::ParameterList& output = params.sublist("Output");
   const bool finite = isFinite(result);
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: output"));
