@@ -312,10 +312,13 @@ std::optional<ContactStatistics> writeSolutionOutputs(const AssembledProblem& pr
 
 namespace {
 
-// The user's parameters (the XML file, if any, then the --set overrides), validated, and the
-// output directory, checked before anything is built.
+// The user's parameters (the XML file, if any, then the --set overrides) and what the driver
+// reads of them: each list is validated once, by its reader. The top level and Output here;
+// Solver by the solver, made here, so that its mistakes stop the run before anything is built;
+// Problem by buildProblem, before the mesh. The output directory is checked here too.
 struct RunParameters {
-  Teuchos::ParameterList user, validated;
+  Teuchos::ParameterList user, output;
+  std::optional<InteriorPointSolver> solver;
   std::string directory;
 };
 
@@ -324,17 +327,22 @@ RunParameters runParameters(const CommandLine& cl, const Comm& comm) {
   const Teuchos::ParameterList valid = validTopLevelParameters();
   if (!cl.input.empty()) run.user = readParameterFile(cl.input, comm);
   for (const std::string& assignment : cl.overrides) applyOverride(run.user, assignment, valid);
-  run.validated = validatedParameters(run.user, valid, "");
-  run.directory = cl.output.empty() ? run.validated.sublist("Output").get<std::string>("directory") : cl.output;
+  Teuchos::ParameterList topLevel = run.user, validTopLevel = valid;
+  for (const char* readElsewhere : {"Problem", "Solver"}) {
+    validTopLevel.set(readElsewhere, Teuchos::ParameterList());
+    if (topLevel.isSublist(readElsewhere)) topLevel.set(readElsewhere, Teuchos::ParameterList());
+  }
+  run.output = validatedParameters(topLevel, validTopLevel, "").sublist("Output");
+  run.solver.emplace(run.user.sublist("Solver"));
+  run.directory = cl.output.empty() ? run.output.get<std::string>("directory") : cl.output;
   checkOutputDirectory(run.directory, comm);
   return run;
 }
 
 // One solve with the iteration log on rank 0; its time is the slowest rank's.
-SolveResult solveLogged(const ContactQP& qp, const MultigridInput& multigrid,
-                        const Teuchos::ParameterList& solverParameters, std::ostream& out, double& seconds) {
+SolveResult solveLogged(const ContactQP& qp, const MultigridInput& multigrid, const InteriorPointSolver& solver,
+                        std::ostream& out, double& seconds) {
   const Comm& comm = *qp.Q->getDomainMap()->getComm();
-  InteriorPointSolver solver(solverParameters);
   IterationLog log(out, comm.getRank() == 0);
   Teuchos::Time solveTime("solve");
   solveTime.start(true);
@@ -381,9 +389,9 @@ SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostre
     out << "Signorini: QP of " << cl.qp << "/: n = " << n << ", m = " << m << ", " << files.multigrid.blockSize
         << " unknowns per node, " << comm->getSize() << " MPI rank(s); read in " << setupSeconds << " s\n";
   RunSummary summary;
-  SolveResult result = solveLogged(qp, files.multigrid, run.validated.sublist("Solver"), out, summary.solveSeconds);
+  SolveResult result = solveLogged(qp, files.multigrid, *run.solver, out, summary.solveSeconds);
   summary.problem = "qp:" + cl.qp;
-  summary.method = run.validated.sublist("Solver").get<std::string>("method");
+  summary.method = run.solver->parameters().get<std::string>("method");
   summary.dim = files.multigrid.blockSize;
   summary.ranks = comm->getSize();
   summary.n = n;
@@ -391,7 +399,7 @@ SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostre
   summary.result = &result;
   summary.setupSeconds = setupSeconds;
   summary.totalSeconds = maxOverRanks(*comm, total.stop());
-  writeRunSummary(summary, cl, run.validated.sublist("Output"), run.directory, false, *comm, out);
+  writeRunSummary(summary, cl, run.output, run.directory, false, *comm, out);
   return result;
 }
 
@@ -403,7 +411,6 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   total.start(true);
   const bool root = comm->getRank() == 0;
   RunParameters run = runParameters(cl, *comm);
-  const Teuchos::ParameterList& params = run.validated;
   const std::string& directory = run.directory;
 
   const std::string baseDirectory = std::filesystem::path(cl.input).parent_path().string();
@@ -435,11 +442,11 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     if (root) out << "Exported Q, b, A, d, coords" << (def.degree > 1 ? ", cells" : "") << " to " << cl.exportQp << "/\n";
   }
 
-  const Teuchos::ParameterList& output = params.sublist("Output");
+  const Teuchos::ParameterList& output = run.output;
   if (output.get<bool>("write solution"))
     detail::checkOutputSpace(directory, detail::estimatedSolutionBytes(*problem.space), *comm);
   RunSummary summary;
-  SolveResult result = solveLogged(problem.qp, problem.multigrid, params.sublist("Solver"), out, summary.solveSeconds);
+  SolveResult result = solveLogged(problem.qp, problem.multigrid, *run.solver, out, summary.solveSeconds);
 
   const bool finite = isFinite(result);
   {
@@ -451,7 +458,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
       out << "Solution not written: the solve ended in non-finite numbers (" << toString(result.status) << ")\n";
     total.stop();
     summary.problem = def.name;
-    summary.method = params.sublist("Solver").get<std::string>("method");
+    summary.method = run.solver->parameters().get<std::string>("method");
     summary.dim = def.dim;
     summary.degree = def.degree;
     summary.ranks = comm->getSize();

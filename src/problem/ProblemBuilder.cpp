@@ -21,7 +21,9 @@
 #include "core/RootTask.hpp"
 #include "fe/BoxGrid.hpp"
 #include "fe/GmshMesh.hpp"
+#include "core/ParameterValidation.hpp"
 #include "problem/MemoryEstimate.hpp"
+#include "problem/ValidatedProblem.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/problem/ProblemParameters.hpp"
 
@@ -65,7 +67,7 @@ std::shared_ptr<const GeometricGrid> refinedGmshSpace(const Teuchos::ParameterLi
                                                       AssembledProblem& result,
                                                       std::shared_ptr<const DistributedSpace>& space) {
   const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh));
-  result.definition = readProblemDefinition(problem, lattice->dim());
+  result.definition = detail::definitionOf(problem, lattice->dim());
   const ProblemDefinition& def = result.definition;
   checkMemoryFits(static_cast<double>(def.dim) * lattice->numPoints(def.degree << gmsh.refinements), def.dim,
                   def.degree, !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
@@ -76,16 +78,17 @@ std::shared_ptr<const GeometricGrid> refinedGmshSpace(const Teuchos::ParameterLi
   return RefinedMeshGrid::hierarchy(lattice, refinement, *space, finest);
 }
 
-// The definition and the space, with the grids of a refined mesh if there are. Every rank
+// The definition of the validated `problem` list and the space, with the grids of a refined
+// mesh if there are. Every rank
 // makes its own part of a box mesh. A Gmsh mesh is read by rank 0 alone, once, and freed once
 // each rank has its part (of the mesh, or of the coarse mesh it refines); its dimension
 // decides the one the rest of the definition is read with.
 std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                                                const std::string& baseDirectory, AssembledProblem& result,
                                                std::shared_ptr<const DistributedSpace>& space) {
-  const GmshSource gmsh = readGmshSource(problem);
+  const GmshSource gmsh = detail::gmshSourceOf(problem);
   if (gmsh.file.empty()) {
-    ProblemDefinition def = readProblemDefinition(problem);
+    ProblemDefinition def = detail::definitionOf(problem, 0);
     checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree, !storesNoStiffness(def),
                     def.gridRefinedAtNodes, *comm);
     space = std::make_shared<const DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
@@ -99,7 +102,7 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
   if (gmsh.refinements > 0) return refinedGmshSpace(problem, gmsh, file, std::move(mesh), comm, result, space);
   int dim = mesh ? mesh->dim : 0;
   Teuchos::broadcast(*comm, 0, 1, &dim);
-  result.definition = readProblemDefinition(problem, dim);
+  result.definition = detail::definitionOf(problem, dim);
   const ProblemDefinition& def = result.definition;
   space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), def.degree);
   checkMemoryFits(static_cast<double>(def.dim) * space->numGlobalNodes(), def.dim, def.degree,
@@ -146,7 +149,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::meshAndSpace);
     setup.start(true);
     const double residentBefore = residentMiB();
-    refinedGrid = makeSpace(problem, comm, baseDirectory, result, space);
+    refinedGrid = makeSpace(validatedParameters(problem, validProblemParameters(), "Problem"), comm, baseDirectory,
+                            result, space);
     result.space = space;
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);

@@ -7,6 +7,7 @@
 #include <Teuchos_StandardParameterEntryValidators.hpp>
 
 #include "core/ParameterValidation.hpp"
+#include "problem/ValidatedProblem.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
@@ -197,15 +198,21 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
 }  // namespace
 
 GmshSource readGmshSource(const ParameterList& user) {
-  const ParameterList p = validatedParameters(user, validProblemParameters(), "Problem");
+  return detail::gmshSourceOf(validatedParameters(user, validProblemParameters(), "Problem"));
+}
+
+ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) {
+  return detail::definitionOf(validatedParameters(user, validProblemParameters(), "Problem"), meshDim);
+}
+
+GmshSource detail::gmshSourceOf(const ParameterList& p) {
   if (p.get<std::string>("mesh: type") != "gmsh") return {};
   const std::string file = p.get<std::string>("mesh: file");
   if (file.empty()) throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
   return {file, p.get<double>("mesh: size factor"), p.get<int>("mesh: refinements")};
 }
 
-ProblemDefinition readProblemDefinition(const ParameterList& user, int meshDim) {
-  const ParameterList p = validatedParameters(user, validProblemParameters(), "Problem");
+ProblemDefinition detail::definitionOf(const ParameterList& p, int meshDim) {
   ProblemDefinition def;
   def.name = p.get<std::string>("name");
   def.meshType = p.get<std::string>("mesh: type");

@@ -126,12 +126,11 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
 
 namespace {
 
-// The "Krylov" and "Preconditioner" sublists of a "Solver" list, validated.
+// The "Krylov" and "Preconditioner" sublists of a validated "Solver" list.
 Teuchos::ParameterList newtonParameters(const Teuchos::ParameterList& solver) {
   Teuchos::ParameterList own;
-  for (const char* name : {"Krylov", "Preconditioner"})
-    if (solver.isSublist(name)) own.set(name, solver.sublist(name));
-  return validatedParameters(own, NewtonSystemSolver::validParameters(), "Solver");
+  for (const char* name : {"Krylov", "Preconditioner"}) own.set(name, solver.sublist(name));
+  return own;
 }
 
 }  // namespace

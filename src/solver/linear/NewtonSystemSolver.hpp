@@ -48,7 +48,8 @@ class NewtonSystemSolver {
   // Sublists "Krylov" (see KrylovSolver) and "Preconditioner".
   static Teuchos::ParameterList validParameters();
 
-  // Reads the "Krylov" and "Preconditioner" sublists of `params`, validated here; other
+  // Reads the "Krylov" and "Preconditioner" sublists of `params`, a list validated against
+  // validParameters() (InteriorPointSolver's, or one that the caller validated); other
   // entries are the caller's. `freeMotions`: rigid body motions only the contact holds
   // (checkRigidBodyMotionsHeld), solved for exactly around the preconditioner
   // (FreeMotionCorrection); null if none. Throws InputError.

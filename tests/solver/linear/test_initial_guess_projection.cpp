@@ -11,6 +11,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/core/Error.hpp"
+#include "core/ParameterValidation.hpp"
 #include "solver/linear/BarrierHessianOperator.hpp"
 #include "solver/linear/InitialGuessProjection.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
@@ -149,9 +150,10 @@ TEST(InitialGuessProjection, NewtonSystemSolverStartsFromEarlierSolutions) {
   D.randomize(1.0, 1e6);
   r.randomize();
   for (int keep : {0, 2}) {
-    Teuchos::ParameterList params = NewtonSystemSolver::validParameters();
-    params.sublist("Krylov").set("initial guess: previous solutions", keep);
-    NewtonSystemSolver newton(f.qp, f.multigrid, params);
+    Teuchos::ParameterList user;
+    user.sublist("Krylov").set("initial guess: previous solutions", keep);
+    NewtonSystemSolver newton(f.qp, f.multigrid,
+                              validatedParameters(user, NewtonSystemSolver::validParameters(), "Solver"));
     newton.setWeights(D);
     const KrylovResult first = newton.solve(r, x, 1e-10 * r.norm2());
     ASSERT_TRUE(first.converged);
@@ -184,14 +186,15 @@ TEST(InitialGuessProjection, ContactCorrectedStartIsExactOnTheContactDofs) {
   int fromZero = 0;
   for (const char* start : {"zero", "gathered", "per rank"}) {
     const bool corrected = std::string(start) != "zero";
-    Teuchos::ParameterList params = NewtonSystemSolver::validParameters();
-    params.sublist("Krylov").set("initial guess: previous solutions", 0);
-    params.sublist("Krylov").set("initial guess: contact correction", corrected);
-    params.sublist("Preconditioner").set("contact correction: blocks", corrected ? start : "gathered");
+    Teuchos::ParameterList user;
+    user.sublist("Krylov").set("initial guess: previous solutions", 0);
+    user.sublist("Krylov").set("initial guess: contact correction", corrected);
+    user.sublist("Preconditioner").set("contact correction: blocks", corrected ? start : "gathered");
     // paper/M is small enough to be factored whole, which needs no contact correction: MueLu
     // instead keeps one.
-    params.sublist("Preconditioner").set("geometric: direct solve size", 0);
-    NewtonSystemSolver newton(f.qp, f.multigrid, params);
+    user.sublist("Preconditioner").set("geometric: direct solve size", 0);
+    NewtonSystemSolver newton(f.qp, f.multigrid,
+                              validatedParameters(user, NewtonSystemSolver::validParameters(), "Solver"));
     newton.setWeights(D);
     const KrylovResult result = newton.solve(r, x, 1e-8 * r.norm2());
     ASSERT_TRUE(result.converged);

@@ -12,6 +12,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/solver/InteriorPointSolver.hpp"
+#include "core/ParameterValidation.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
 #include "support/TestProblems.hpp"
 
@@ -42,12 +43,13 @@ Vector contactZoneWeights(const ContactQP& qp, int step) {
 std::vector<int> cgCounts(const AssembledProblem& problem, const Teuchos::ParameterList& preconditioner,
                           const Vector& r, int steps) {
   const ContactQP& qp = problem.qp;
-  Teuchos::ParameterList params = NewtonSystemSolver::validParameters();
-  params.sublist("Preconditioner").set("amg of H: rebuild tolerance", 0.0);  // either hierarchy
-  params.sublist("Preconditioner").setParameters(preconditioner);
-  params.sublist("Krylov").set("initial guess: previous solutions", 0);  // the preconditioner alone
-  params.sublist("Krylov").set("initial guess: contact correction", false);
-  NewtonSystemSolver solver(qp, problem.multigrid, params);
+  Teuchos::ParameterList user;
+  user.sublist("Preconditioner").set("amg of H: rebuild tolerance", 0.0);  // either hierarchy
+  user.sublist("Preconditioner").setParameters(preconditioner);
+  user.sublist("Krylov").set("initial guess: previous solutions", 0);  // the preconditioner alone
+  user.sublist("Krylov").set("initial guess: contact correction", false);
+  NewtonSystemSolver solver(qp, problem.multigrid,
+                            validatedParameters(user, NewtonSystemSolver::validParameters(), "Solver"));
   std::vector<int> counts;
   for (int step = 0; step < steps; ++step) {
     solver.setWeights(contactZoneWeights(qp, step));
