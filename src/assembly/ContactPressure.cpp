@@ -363,27 +363,4 @@ ContactPressureSamples ContactPressure::samples(const Vector& pressure) const {
   return s;
 }
 
-ContactStatistics contactStatistics(const ContactPressure& recovery, const Vector& pressure, const CrsMatrix& A,
-                                    const Vector& lambda, const Vector& active,
-                                    const std::array<double, 3>& obstacleDirection) {
-  ContactStatistics s;
-  s.dim = recovery.dim();
-  const Comm& comm = *A.getRangeMap()->getComm();
-  Vector force(A.getDomainMap());
-  A.apply(lambda, force, Teuchos::TRANS);
-  const auto map = A.getDomainMap();
-  auto f = force.getData();
-  std::array<double, 3> local{{0, 0, 0}};  // dof = dim * node + component
-  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(f.size()); ++i) local[map->getGlobalElement(i) % s.dim] += f[i];
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 3, local.data(), s.force.data());
-  for (int c = 0; c < 3; ++c) s.normalForce += s.force[c] * obstacleDirection[c];
-  double peak = -std::numeric_limits<double>::infinity();
-  for (double p : pressure.getData()) peak = std::max(peak, p);
-  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, 1, &peak, &s.peakPressure);
-  if (!std::isfinite(s.peakPressure)) s.peakPressure = 0;
-  s.area = recovery.activeMeasure(active);
-  s.activeNodes = std::llround(active.norm1());
-  return s;
-}
-
 }  // namespace signorini

@@ -118,8 +118,10 @@ Teuchos::ParameterEntry parseLike(const Teuchos::ParameterEntry* model, const st
 void logContact(const ContactStatistics& c, std::ostream& out) {
   out << "Contact: force (";
   for (int i = 0; i < c.dim; ++i) out << (i ? ", " : "") << c.force[i];
-  out << "), normal force " << c.normalForce << ", " << (c.dim == 2 ? "length " : "area ") << c.area
-      << ", peak pressure " << c.peakPressure << ", " << c.activeNodes << " active nodes\n";
+  out << "), normal force " << c.normalForce << ", ";
+  if (std::isfinite(c.area))
+    out << (c.dim == 2 ? "length " : "area ") << c.area << ", peak pressure " << c.peakPressure << ", ";
+  out << c.activeNodes << " active nodes" << (std::isfinite(c.area) ? "" : " (no mesh: no pressure)") << "\n";
 }
 
 std::string shortest(double x) {
@@ -390,6 +392,10 @@ SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostre
         << " unknowns per node, " << comm->getSize() << " MPI rank(s); read in " << setupSeconds << " s\n";
   RunSummary summary;
   SolveResult result = solveLogged(qp, files.multigrid, *run.solver, out, summary.solveSeconds);
+  if (m > 0 && isFinite(result)) {
+    summary.contact = contactStatistics(qp, files.multigrid, *result.v, *result.lambda);
+    if (comm->getRank() == 0) logContact(*summary.contact, out);
+  }
   summary.problem = "qp:" + cl.qp;
   summary.method = run.solver->parameters().get<std::string>("method");
   summary.dim = files.multigrid.blockSize;

@@ -313,6 +313,12 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_NE(log.str().find("converged after"), std::string::npos);
 }
 
+// The number after "key": in a summary.json text (NaN if absent).
+double jsonNumber(const std::string& json, const std::string& key) {
+  const std::size_t at = json.find("\"" + key + "\": ");
+  return at == std::string::npos ? std::nan("") : std::strtod(json.c_str() + at + key.size() + 4, nullptr);
+}
+
 // The run of `input` with `overrides` that exports its QP into dir/qp, and the run on those
 // files (outputs in dir/direct and dir/imported); both must converge to the same optimum.
 std::pair<SolveResult, SolveResult> exportedAndImported(const std::string& input,
@@ -348,6 +354,13 @@ TEST(Application, ExportedQPSolvesToTheSameOptimum) {
   EXPECT_NE(summary.find("\"outer_iterations\": " + std::to_string(imported.outerIterations) + ","), std::string::npos);
   EXPECT_TRUE(std::filesystem::exists(dir + "/imported/history.csv"));
   EXPECT_FALSE(std::filesystem::exists(dir + "/imported/solution.pvtu"));
+  // The contact force and active nodes from the files alone; the pressure needs the mesh.
+  const std::string withMesh = readFile(dir + "/direct/summary.json");
+  const double force = jsonNumber(withMesh, "normal_force");
+  EXPECT_GT(force, 0.0);
+  EXPECT_NEAR(jsonNumber(summary, "normal_force"), force, 1e-8 * force);
+  EXPECT_EQ(jsonNumber(summary, "active_nodes"), jsonNumber(withMesh, "active_nodes"));
+  EXPECT_NE(summary.find("\"peak_pressure\": null"), std::string::npos) << summary;
 }
 
 // A P2 problem's export carries its mesh's cells (cells.mtx): the run on the files takes the

@@ -4,15 +4,26 @@
 /// summary.json. The same on every rank.
 #include <array>
 
+#include "signorini/core/TpetraTypes.hpp"
+#include "signorini/solver/ContactQP.hpp"
+#include "signorini/solver/MultigridInput.hpp"
+
 namespace signorini {
 
 struct ContactStatistics {
   int dim = 0;
   std::array<double, 3> force{{0, 0, 0}};  ///< the obstacle's force on the body: A^T lambda summed per component
   double normalForce = 0;                  ///< force . obstacle direction (>= 0 when pressing)
-  double area = 0;                         ///< lumped boundary measure of the active nodes (a length in 2D)
-  double peakPressure = 0;                 ///< largest nodal value of p_h
+  double area = 0;          ///< lumped boundary measure of the active nodes (a length in 2D); NaN without a mesh
+  double peakPressure = 0;  ///< largest nodal value of p_h; NaN without a mesh
   long long activeNodes = 0;               ///< active constraints (one per contact node)
 };
+
+/// What a QP and its solution tell without the mesh (a QP handed over by another code): the
+/// obstacle's force A^T lambda summed per component (multigrid.blockSize of them, DOF
+/// blockSize * node + component), its length as the normal force (one obstacle direction), and
+/// the active constraints (activeIndicator); area and peak pressure are NaN. Collective.
+ContactStatistics contactStatistics(const ContactQP& qp, const MultigridInput& multigrid, const Vector& v,
+                                    const Vector& lambda);
 
 }  // namespace signorini

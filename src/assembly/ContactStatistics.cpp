@@ -1,0 +1,57 @@
+#include "signorini/assembly/ContactStatistics.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "signorini/assembly/ContactPressure.hpp"
+#include "signorini/solver/KKTMeasures.hpp"
+
+namespace signorini {
+namespace {
+
+// A^T lambda summed per component, DOF dim * node + component. Collective.
+std::array<double, 3> forceResultant(const CrsMatrix& A, const Vector& lambda, int dim) {
+  Vector force(A.getDomainMap());
+  A.apply(lambda, force, Teuchos::TRANS);
+  const auto map = A.getDomainMap();
+  auto f = force.getData();
+  std::array<double, 3> local{{0, 0, 0}}, total{{0, 0, 0}};
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(f.size()); ++i) local[map->getGlobalElement(i) % dim] += f[i];
+  Teuchos::reduceAll(*A.getRangeMap()->getComm(), Teuchos::REDUCE_SUM, 3, local.data(), total.data());
+  return total;
+}
+
+}  // namespace
+
+ContactStatistics contactStatistics(const ContactPressure& recovery, const Vector& pressure, const CrsMatrix& A,
+                                    const Vector& lambda, const Vector& active,
+                                    const std::array<double, 3>& obstacleDirection) {
+  ContactStatistics s;
+  s.dim = recovery.dim();
+  s.force = forceResultant(A, lambda, s.dim);
+  for (int c = 0; c < 3; ++c) s.normalForce += s.force[c] * obstacleDirection[c];
+  double peak = -std::numeric_limits<double>::infinity();
+  for (double p : pressure.getData()) peak = std::max(peak, p);
+  Teuchos::reduceAll(*A.getRangeMap()->getComm(), Teuchos::REDUCE_MAX, 1, &peak, &s.peakPressure);
+  if (!std::isfinite(s.peakPressure)) s.peakPressure = 0;
+  s.area = recovery.activeMeasure(active);
+  s.activeNodes = std::llround(active.norm1());
+  return s;
+}
+
+ContactStatistics contactStatistics(const ContactQP& qp, const MultigridInput& multigrid, const Vector& v,
+                                    const Vector& lambda) {
+  ContactStatistics s;
+  s.dim = multigrid.blockSize;
+  s.force = forceResultant(*qp.A, lambda, s.dim);
+  s.normalForce = std::sqrt(s.force[0] * s.force[0] + s.force[1] * s.force[1] + s.force[2] * s.force[2]);
+  s.area = s.peakPressure = std::numeric_limits<double>::quiet_NaN();
+  s.activeNodes = std::llround(activeIndicator(qp, v, lambda)->norm1());
+  return s;
+}
+
+}  // namespace signorini
