@@ -2,20 +2,11 @@
 
 #include <gmsh.h>
 
-#include <poll.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <array>
-#include <chrono>
-#include <cerrno>
-#include <csignal>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstring>
 #include <cstddef>
 #include <exception>
 #include <filesystem>
@@ -31,10 +22,17 @@
 #include <utility>
 #include <vector>
 
+#include "fe/GmshSandbox.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {
+
+using detail::answerFromChild;
+using detail::readAll;
+using detail::receiveArray;
+using detail::sendArray;
+using detail::writeAll;
 
 using Tag = std::size_t;  // Gmsh node and element tags
 
@@ -523,47 +521,6 @@ SimplexMesh readInThisProcess(const std::string& path, double sizeFactor) {
   return buildMesh(raw, prefix);
 }
 
-// The child's answer through a pipe: 'A' and the answer's arrays, or 'I' (an input error) or
-// 'E' (any other error) and the message.
-void writeAll(int fd, const void* data, std::size_t size) {
-  const char* bytes = static_cast<const char*>(data);
-  while (size > 0) {
-    const ssize_t written = ::write(fd, bytes, size);
-    if (written < 0 && errno == EINTR) continue;
-    if (written <= 0) _exit(3);  // the parent is gone
-    bytes += written;
-    size -= static_cast<std::size_t>(written);
-  }
-}
-
-// Reads `size` bytes; false at the end of the stream.
-bool readAll(int fd, void* data, std::size_t size) {
-  char* bytes = static_cast<char*>(data);
-  while (size > 0) {
-    const ssize_t got = ::read(fd, bytes, size);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) return false;
-    bytes += got;
-    size -= static_cast<std::size_t>(got);
-  }
-  return true;
-}
-
-template <class T>
-void sendArray(int fd, const std::vector<T>& values) {
-  const std::uint64_t count = values.size();
-  writeAll(fd, &count, sizeof count);
-  writeAll(fd, values.data(), count * sizeof(T));
-}
-
-template <class T>
-bool receiveArray(int fd, std::vector<T>& values) {
-  std::uint64_t count = 0;
-  if (!readAll(fd, &count, sizeof count)) return false;
-  values.resize(count);
-  return readAll(fd, values.data(), count * sizeof(T));
-}
-
 void sendMesh(int fd, const SimplexMesh& mesh) {
   writeAll(fd, &mesh.dim, sizeof mesh.dim);
   sendArray(fd, mesh.vertices);
@@ -604,102 +561,11 @@ bool receiveMesh(int fd, SimplexMesh& mesh) {
   return true;
 }
 
-void sendError(int fd, char kind, const std::string& message) {
-  writeAll(fd, &kind, 1);
-  writeAll(fd, message.data(), message.size());
-}
-
-// Runs in the child: `work` writes the answer (or an error) to fd. Never returns.
-[[noreturn]] void answerInChild(int fd, const std::function<void(int)>& work) {
-  // A crash ends the child quietly; the parent reports it (MPI's or a sanitizer's handlers
-  // would print a report of their own).
-  for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(sig, SIG_DFL);
-  try {
-    work(fd);
-  } catch (const InputError& e) {
-    sendError(fd, 'I', e.what());
-  } catch (const std::exception& e) {
-    sendError(fd, 'E', e.what());
-  } catch (...) {
-    sendError(fd, 'E', "unknown error");
-  }
-  ::close(fd);
-  _exit(0);  // no exit handlers: they belong to the parent (MPI, buffered output)
-}
-
-// Waits until `fd` can be read (data, or the end of the stream when the child is gone) or
-// `seconds` have passed (negative: no limit); false on the time limit.
-bool readableWithin(int fd, double seconds) {
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                                        std::chrono::duration<double>(std::max(seconds, 0.0)));
-  for (;;) {
-    int wait = -1;
-    if (seconds >= 0) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-      if (left <= 0) return false;
-      wait = static_cast<int>(std::min<long long>(left, 60000));
-    }
-    pollfd request{fd, POLLIN, 0};
-    const int ready = ::poll(&request, 1, wait);
-    if (ready > 0) return true;
-    if (ready < 0 && errno != EINTR) return true;  // let the read report it
-  }
-}
-
 double defaultTimeLimit(const std::string& path) {
   if (std::filesystem::path(path).extension() == ".geo") return -1;
   std::error_code error;
   const auto bytes = std::filesystem::file_size(path, error);
   return 60.0 + (error ? 0.0 : static_cast<double>(bytes) / 1e6);
-}
-
-// Runs `work` in a forked child and `receive` on its answer ('A' and the data); the child's
-// errors, crash or silence past `limit` seconds (negative: none) are thrown here, naming
-// the file (`subject`, e.g. "Gmsh mesh file 'x.msh'") and what the child was `doing` with it.
-void answerFromChild(const std::string& subject, const std::string& doing, double limit,
-                     const std::function<void(int)>& work, const std::function<bool(int)>& receive) {
-  int fds[2];
-  if (::pipe(fds) != 0) throw Error(subject + ": cannot create a pipe for " + doing);
-  std::fflush(nullptr);
-  const pid_t child = ::fork();
-  if (child < 0) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    throw Error(subject + ": cannot start the process for " + doing);
-  }
-  if (child == 0) {
-    ::close(fds[0]);
-    answerInChild(fds[1], work);
-  }
-  ::close(fds[1]);
-  int status = 0;
-  if (!readableWithin(fds[0], limit)) {
-    ::kill(child, SIGKILL);
-    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-    }
-    ::close(fds[0]);
-    std::ostringstream seconds;
-    seconds << limit;
-    throw InputError(subject + ": Gmsh did not finish " + doing + " within " + seconds.str() +
-                     " s; check that it is a valid Gmsh file (gmsh -check FILE)");
-  }
-  char kind = 0;
-  std::string message;
-  const bool answered = readAll(fds[0], &kind, 1);
-  const bool complete = answered && kind == 'A' && receive(fds[0]);
-  if (answered && kind != 'A')
-    for (char c; readAll(fds[0], &c, 1);) message += c;
-  ::close(fds[0]);
-  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (complete) return;
-  if (kind == 'I') throw InputError(message);
-  if (kind == 'E') throw Error(message);
-  const std::string how = WIFSIGNALED(status) ? std::string("crashed (") + strsignal(WTERMSIG(status)) + ")"
-                                               : "stopped with exit status " + std::to_string(WEXITSTATUS(status));
-  throw InputError(subject + ": Gmsh " + how + " while " + doing +
-                   "; check that it is a valid Gmsh file (gmsh -check FILE)");
 }
 
 // The closest points of the geometry's entities (dimension, tag) to the points (3 coordinates
