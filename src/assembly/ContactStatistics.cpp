@@ -1,5 +1,6 @@
 #include "signorini/assembly/ContactStatistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
