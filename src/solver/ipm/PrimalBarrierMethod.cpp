@@ -179,7 +179,7 @@ PrimalBarrierMethod::PrimalBarrierMethod(const ContactQP& qp, const MultigridInp
       extrapolate_(p.get<bool>("primal: extrapolation")),
       gammaRule_(p),
       forcing_(forcingRule(p, 0.1 * stop_.tolerance * bnorm_)),
-      newton_(qp, multigrid, p),
+      newton_(qp, multigrid, p, freeMotions),
       v_(initialDisplacement(qp, v0)),
       s_(qp.A->getRangeMap()), y_(s_.getMap()), lambda_(s_.getMap()), D_(s_.getMap()), Adv_(s_.getMap()),
       minusAdv_(s_.getMap()),

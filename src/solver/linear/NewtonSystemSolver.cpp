@@ -72,6 +72,11 @@ void addPreconditionerParameters(Teuchos::ParameterList& prec) {
                                            {"per rank", ContactSubspaceBlocks::PerRank},
                                            {"gathered", ContactSubspaceBlocks::Gathered}},
                                           "contact correction: blocks"));
+  prec.set("free motions: coarse depth", 2,
+           "Expert: Where only the contact holds a rigid body motion (force control), the preconditioner solves "
+           "exactly on the free motions F and on (B H)^j F, j = 1 .. this, the preconditioned Krylov vectors that "
+           "catch the body's soft motions around its contact patch; 0: on F alone",
+           range(0, 8));
   prec.set("hierarchy", "auto",
            "Multigrid levels: \"geometric\" (P_k to P1 on the same mesh; on box meshes then grids with half the "
            "boxes per direction; Galerkin coarse matrices, Chebyshev smoothing, a direct solve or MueLu below); "
@@ -184,7 +189,8 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const MultigridInput
   if (strategy_ == PreconditionerType::AmgOfH)
     constraintStiffness_ = constraintStiffness(diagonalOfQ_.is_null() ? *stiffness.diagonal() : *diagonalOfQ_, *qp.A);
   if (!freeMotions.is_null() && freeMotions->getNumVectors() > 0)
-    freeMotionCorrection_ = rcp(new FreeMotionCorrection(H_, freeMotions));
+    freeMotionCorrection_ =
+        rcp(new FreeMotionCorrection(H_, freeMotions, prec.get<int>("free motions: coarse depth")));
   reuseHierarchy_ = muelu.isType<std::string>("reuse: type") && muelu.get<std::string>("reuse: type") != "none";
   if (strategy_ == PreconditionerType::AmgOfQ) {
     amg_->compute(Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(qp, multigrid)));

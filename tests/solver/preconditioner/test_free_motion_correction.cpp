@@ -1,6 +1,7 @@
-// The exact solve on the rigid body motions only the contact holds, combined with another
-// preconditioner: its result leaves a residual without component along those motions, it is
-// symmetric, and with an exact inner solve it is H's inverse.
+// The exact solve on the rigid body motions only the contact holds and their preconditioned
+// Krylov vectors, combined with another preconditioner: its result leaves a residual without
+// component along that coarse space, it is symmetric, exact on the coarse space, and without
+// weights the inner preconditioner alone.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -51,7 +52,7 @@ Corrected corrected() {
   Vector D(qp.A->getRangeMap());
   D.randomize(1e-8, 1e4);
   c.H->setWeights(D);
-  c.M = rcp(new FreeMotionCorrection(c.H, c.F));
+  c.M = rcp(new FreeMotionCorrection(c.H, c.F, 2));
   c.amg = std::make_shared<MueLuPreconditioner>(Teuchos::ParameterList(), mg.blockSize, mg.nearNullspace(qp),
                                                   mg.coordinates);
   c.amg->compute(c.H->assemble());
@@ -66,15 +67,36 @@ TEST(FreeMotionCorrection, TheProblemHasOneFreeMotion) {
   EXPECT_EQ(F->getNumVectors(), 1u);
 }
 
-TEST(FreeMotionCorrection, LeavesNoResidualAlongTheFreeMotions) {
+TEST(FreeMotionCorrection, LeavesNoResidualAlongItsCoarseSpace) {
   const Corrected c = corrected();
   Vector r(c.H->getRangeMap()), x(c.H->getDomainMap()), residual(c.H->getRangeMap());
   r.randomize();
   c.M->apply(r, x);
   residual.assign(r);
   c.H->apply(x, residual, Teuchos::NO_TRANS, -1.0, 1.0);
-  for (std::size_t j = 0; j < c.F->getNumVectors(); ++j)
-    EXPECT_LT(std::abs(c.F->getVector(j)->dot(residual)), 1e-10 * r.norm2()) << "motion " << j;
+  const RCP<const MultiVector> U = c.M->coarseSpace();
+  for (std::size_t j = 0; j < U->getNumVectors(); ++j)
+    EXPECT_LT(std::abs(U->getVector(j)->dot(residual)), 1e-10 * r.norm2()) << "column " << j;
+}
+
+// The free motion and the two products B H f, independent of it and of each other: each is
+// H's inverse applied to H u (the coarse solve is exact on its space, the inner
+// preconditioner then sees no residual).
+TEST(FreeMotionCorrection, IsExactOnTheFreeMotionsAndTheirProducts) {
+  const Corrected c = corrected();
+  Vector r(c.H->getRangeMap()), x(c.H->getDomainMap());
+  r.randomize();
+  c.M->apply(r, x);
+  const RCP<const MultiVector> U = c.M->coarseSpace();
+  ASSERT_EQ(U->getNumVectors(), 3u);
+  EXPECT_NEAR(std::abs(U->getVector(0)->dot(*c.F->getVector(0))), 1.0, 1e-12);
+  for (std::size_t j = 0; j < U->getNumVectors(); ++j) {
+    Vector Hu(c.H->getRangeMap()), MHu(c.H->getDomainMap());
+    c.H->apply(*U->getVector(j), Hu);
+    c.M->apply(Hu, MHu);
+    MHu.update(-1.0, *U->getVector(j), 1.0);
+    EXPECT_LT(MHu.norm2(), 1e-8) << "column " << j;
+  }
 }
 
 TEST(FreeMotionCorrection, IsSymmetric) {
