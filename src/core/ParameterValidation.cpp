@@ -44,43 +44,6 @@ std::string validNames(const Teuchos::ParameterList& valid) {
   return out.str();
 }
 
-// "auto", or a number from lo to hi (as a double, an int or a string).
-class AutoOrRangeValidator : public Teuchos::ParameterEntryValidator {
- public:
-  AutoOrRangeValidator(double lo, double hi) : lo_(lo), hi_(hi) {}
-  const std::string getXMLTypeName() const override { return "AutoOrRangeValidator(double)"; }
-  void printDoc(const std::string& docString, std::ostream& out) const override {
-    out << "# " << docString << "\n# " << description() << "\n";
-  }
-  ValidStringsList validStringValues() const override { return Teuchos::null; }
-  void validate(const Teuchos::ParameterEntry& entry, const std::string& name,
-                const std::string& sublist) const override {
-    if (entry.isType<std::string>() && Teuchos::getValue<std::string>(entry) == "auto") return;
-    double value = 0;
-    if (!number(entry, value) || value < lo_ || value > hi_)
-      throw Teuchos::Exceptions::InvalidParameterValue(sublist + "/" + name + ": " + description());
-  }
-  std::string description() const {
-    std::ostringstream out;
-    out << "\"auto\", or a number from " << lo_ << " to " << hi_;
-    return out.str();
-  }
-  // The entry's value as a number, if it is one (a string must hold nothing else).
-  static bool number(const Teuchos::ParameterEntry& entry, double& value) {
-    if (entry.isType<double>()) value = Teuchos::getValue<double>(entry);
-    else if (entry.isType<int>()) value = Teuchos::getValue<int>(entry);
-    else if (!entry.isType<std::string>()) return false;
-    else {
-      std::istringstream in(Teuchos::getValue<std::string>(entry));
-      if (!(in >> value) || !(in >> std::ws).eof()) return false;
-    }
-    return true;
-  }
-
- private:
-  double lo_, hi_;
-};
-
 void validateInto(const Teuchos::ParameterList& user, Teuchos::ParameterList& merged,
                   const std::string& path) {
   const bool anyName = merged.isSublist(kAnyNameSublist);
@@ -122,7 +85,7 @@ void validateInto(const Teuchos::ParameterList& user, Teuchos::ParameterList& me
     Teuchos::ParameterEntry value = entry;
     const auto& expected = target.getAny(false).type();
     // A number stands where an autoOrRange() parameter's "auto" does; its validator checks it.
-    const bool numberForAuto = dynamic_cast<const AutoOrRangeValidator*>(target.validator().get()) &&
+    const bool numberForAuto = dynamic_cast<const detail::AutoOrRangeValidator*>(target.validator().get()) &&
                                (value.isType<double>() || value.isType<int>());
     if (value.getAny(false).type() != expected && !numberForAuto) {
       if (expected == typeid(double) && value.isType<int>()) {
@@ -154,29 +117,6 @@ void removeTemplates(Teuchos::ParameterList& list) {
       removeTemplates(list.sublist(list.name(it)));
 }
 
-// 0 or an integer in [lo, hi]: a parameter whose 0 switches a feature off.
-class ZeroOrRangeValidator : public Teuchos::ParameterEntryValidator {
- public:
-  ZeroOrRangeValidator(int lo, int hi) : lo_(lo), hi_(hi) {}
-  const std::string getXMLTypeName() const override { return "ZeroOrRangeValidator(int)"; }
-  void printDoc(const std::string& docString, std::ostream& out) const override {
-    out << "# " << docString << "\n# 0, or an integer from " << lo_ << " to " << hi_ << "\n";
-  }
-  ValidStringsList validStringValues() const override { return Teuchos::null; }
-  void validate(const Teuchos::ParameterEntry& entry, const std::string& name,
-                const std::string& sublist) const override {
-    const int value = entry.isType<int>() ? Teuchos::getValue<int>(entry) : -1;
-    if (!entry.isType<int>() || (value != 0 && (value < lo_ || value > hi_)))
-      throw Teuchos::Exceptions::InvalidParameterValue(sublist + "/" + name + ": " + description());
-  }
-  std::string description() const {
-    return "0, or an integer from " + std::to_string(lo_) + " to " + std::to_string(hi_);
-  }
-
- private:
-  int lo_, hi_;
-};
-
 std::string quotedList(const Teuchos::Array<std::string>& names) {
   std::string list;
   for (const std::string& name : names) list += (list.empty() ? "\"" : ", \"") + name + "\"";
@@ -189,19 +129,82 @@ Teuchos::RCP<const Teuchos::StringValidator> choices(std::initializer_list<std::
   return Teuchos::rcp(new Teuchos::StringValidator(Teuchos::Array<std::string>(names)));
 }
 
-Teuchos::RCP<const Teuchos::ParameterEntryValidator> zeroOrRange(int lo, int hi) {
-  return Teuchos::rcp(new ZeroOrRangeValidator(lo, hi));
+namespace detail {
+
+void ZeroOrRangeValidator::printDoc(const std::string& docString, std::ostream& out) const {
+  out << "# " << docString << "\n# " << description() << "\n";
 }
 
-Teuchos::RCP<const Teuchos::ParameterEntryValidator> autoOrRange(double lo, double hi) {
-  return Teuchos::rcp(new AutoOrRangeValidator(lo, hi));
+void ZeroOrRangeValidator::validate(const Teuchos::ParameterEntry& entry, const std::string& name,
+                                    const std::string& sublist) const {
+  const int value = entry.isType<int>() ? Teuchos::getValue<int>(entry) : -1;
+  if (!entry.isType<int>() || (value != 0 && (value < lo_ || value > hi_)))
+    throw Teuchos::Exceptions::InvalidParameterValue(sublist + "/" + name + ": " + description());
+}
+
+std::string ZeroOrRangeValidator::description() const {
+  return "0, or an integer from " + std::to_string(lo_) + " to " + std::to_string(hi_);
+}
+
+void AutoOrRangeValidator::printDoc(const std::string& docString, std::ostream& out) const {
+  out << "# " << docString << "\n# " << description() << "\n";
+}
+
+void AutoOrRangeValidator::validate(const Teuchos::ParameterEntry& entry, const std::string& name,
+                                    const std::string& sublist) const {
+  if (entry.isType<std::string>() && Teuchos::getValue<std::string>(entry) == "auto") return;
+  double value = 0;
+  if (!number(entry, value) || value < lo_ || value > hi_)
+    throw Teuchos::Exceptions::InvalidParameterValue(sublist + "/" + name + ": " + description());
+}
+
+std::string AutoOrRangeValidator::description() const {
+  std::ostringstream out;
+  out << "\"auto\", or a number from " << lo_ << " to " << hi_;
+  return out.str();
+}
+
+bool AutoOrRangeValidator::number(const Teuchos::ParameterEntry& entry, double& value) {
+  if (entry.isType<double>()) value = Teuchos::getValue<double>(entry);
+  else if (entry.isType<int>()) value = Teuchos::getValue<int>(entry);
+  else if (!entry.isType<std::string>()) return false;
+  else {
+    std::istringstream in(Teuchos::getValue<std::string>(entry));
+    if (!(in >> value) || !(in >> std::ws).eof()) return false;
+  }
+  return true;
+}
+
+// The mark alone: any value of the parameter's type (validatedParameters checks the type).
+class ExpertOnly final : public Teuchos::ParameterEntryValidator, public ExpertMark {
+ public:
+  const std::string getXMLTypeName() const override { return "ExpertParameter"; }
+  void printDoc(const std::string& docString, std::ostream& out) const override { out << "# " << docString << "\n"; }
+  ValidStringsList validStringValues() const override { return Teuchos::null; }
+  void validate(const Teuchos::ParameterEntry&, const std::string&, const std::string&) const override {}
+};
+
+}  // namespace detail
+
+Teuchos::RCP<const detail::ZeroOrRangeValidator> zeroOrRange(int lo, int hi) {
+  return Teuchos::rcp(new detail::ZeroOrRangeValidator(lo, hi));
+}
+
+Teuchos::RCP<const detail::AutoOrRangeValidator> autoOrRange(double lo, double hi) {
+  return Teuchos::rcp(new detail::AutoOrRangeValidator(lo, hi));
+}
+
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> expert() { return Teuchos::rcp(new detail::ExpertOnly()); }
+
+bool isExpert(const Teuchos::ParameterEntry& entry) {
+  return dynamic_cast<const ExpertMark*>(entry.validator().get()) != nullptr;
 }
 
 double autoOrNumber(const Teuchos::ParameterList& list, const std::string& name, double automatic) {
   const Teuchos::ParameterEntry& entry = list.getEntry(name);
   if (entry.isType<std::string>() && Teuchos::getValue<std::string>(entry) == "auto") return automatic;
   double value = 0;
-  if (!AutoOrRangeValidator::number(entry, value))
+  if (!detail::AutoOrRangeValidator::number(entry, value))
     throw Error(name + ": \"auto\" or a number expected (the list was not validated)");
   return value;
 }
@@ -212,9 +215,9 @@ std::string acceptedValues(const Teuchos::ParameterEntryValidator& validator) {
     out << "a number from " << real->getMin() << " to " << real->getMax();
   } else if (auto* integer = dynamic_cast<const Teuchos::EnhancedNumberValidator<int>*>(&validator)) {
     out << "an integer from " << integer->getMin() << " to " << integer->getMax();
-  } else if (auto* zeroOr = dynamic_cast<const ZeroOrRangeValidator*>(&validator)) {
+  } else if (auto* zeroOr = dynamic_cast<const detail::ZeroOrRangeValidator*>(&validator)) {
     out << zeroOr->description();
-  } else if (auto* autoOr = dynamic_cast<const AutoOrRangeValidator*>(&validator)) {
+  } else if (auto* autoOr = dynamic_cast<const detail::AutoOrRangeValidator*>(&validator)) {
     out << autoOr->description();
   } else if (const auto names = validator.validStringValues(); !names.is_null()) {
     out << (names->size() == 1 ? "" : "one of ") << quotedList(*names);

@@ -57,16 +57,79 @@ Enum choice(const Teuchos::ParameterList& list, const std::string& name) {
   return Teuchos::getIntegralValue<Enum>(list, name);
 }
 
+namespace detail {
+
+// 0 or an integer in [lo, hi]: a parameter whose 0 switches a feature off.
+class ZeroOrRangeValidator : public Teuchos::ParameterEntryValidator {
+ public:
+  ZeroOrRangeValidator(int lo, int hi) : lo_(lo), hi_(hi) {}
+  const std::string getXMLTypeName() const override { return "ZeroOrRangeValidator(int)"; }
+  void printDoc(const std::string& docString, std::ostream& out) const override;
+  ValidStringsList validStringValues() const override { return Teuchos::null; }
+  void validate(const Teuchos::ParameterEntry& entry, const std::string& name,
+                const std::string& sublist) const override;
+  std::string description() const;
+
+ private:
+  int lo_, hi_;
+};
+
+// "auto", or a number from lo to hi (as a double, an int or a string).
+class AutoOrRangeValidator : public Teuchos::ParameterEntryValidator {
+ public:
+  AutoOrRangeValidator(double lo, double hi) : lo_(lo), hi_(hi) {}
+  const std::string getXMLTypeName() const override { return "AutoOrRangeValidator(double)"; }
+  void printDoc(const std::string& docString, std::ostream& out) const override;
+  ValidStringsList validStringValues() const override { return Teuchos::null; }
+  void validate(const Teuchos::ParameterEntry& entry, const std::string& name,
+                const std::string& sublist) const override;
+  std::string description() const;
+  // The entry's value as a number, if it is one (a string must hold nothing else).
+  static bool number(const Teuchos::ParameterEntry& entry, double& value);
+
+ private:
+  double lo_, hi_;
+};
+
+}  // namespace detail
+
 // 0, or an integer from lo to hi.
-Teuchos::RCP<const Teuchos::ParameterEntryValidator> zeroOrRange(int lo, int hi);
+Teuchos::RCP<const detail::ZeroOrRangeValidator> zeroOrRange(int lo, int hi);
 
 // "auto" (the reader picks the value from the context), or a number from lo to hi given as a
 // double, an int or a string. The valid entry holds the string "auto"; read it with
 // autoOrNumber().
-Teuchos::RCP<const Teuchos::ParameterEntryValidator> autoOrRange(double lo, double hi);
+Teuchos::RCP<const detail::AutoOrRangeValidator> autoOrRange(double lo, double hi);
 
 // The number of a validated autoOrRange() parameter, or `automatic` when it is "auto".
 double autoOrNumber(const Teuchos::ParameterList& list, const std::string& name, double automatic);
+
+// Expert parameters: signorini --defaults leaves them out, xml/defaults.xml and
+// doc/parameters.md mark them. A Teuchos entry holds a value, a documentation string and a
+// validator, and keeps them through copies and validation; so the mark is carried by the
+// validator: expert(v) is v marked (it still validates, and names its rule, as v does),
+// expert() the mark alone, for a parameter without other rules.
+class ExpertMark {
+ public:
+  virtual ~ExpertMark() = default;
+};
+
+namespace detail {
+
+template <class Validator>
+class Expert final : public Validator, public ExpertMark {
+ public:
+  explicit Expert(const Validator& validator) : Validator(validator) {}
+};
+
+}  // namespace detail
+
+template <class Validator>
+Teuchos::RCP<const Validator> expert(const Teuchos::RCP<const Validator>& validator) {
+  return Teuchos::rcp(new detail::Expert<Validator>(*validator));
+}
+Teuchos::RCP<const Teuchos::ParameterEntryValidator> expert();
+bool isExpert(const Teuchos::ParameterEntry& entry);
 
 // What a validator accepts, in words: "a number from 0 to 0.4999", "one of "a", "b"".
 std::string acceptedValues(const Teuchos::ParameterEntryValidator& validator);

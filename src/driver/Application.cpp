@@ -43,7 +43,7 @@
 namespace signorini {
 namespace {
 
-// The prefix of the documentation of expert parameters, hidden from --defaults.
+// What precedes the documentation of an expert parameter (isExpert) in the XML.
 constexpr const char* kExpert = "Expert: ";
 
 Teuchos::ParameterList outputParameters() {
@@ -151,7 +151,7 @@ std::string commentText(std::string text) {
   return text;
 }
 
-// Parameters documented as "Expert: ..." are left out unless `all`.
+// Expert parameters (isExpert) are left out unless `all`; their documentation says "Expert: ".
 void writeDocumented(const Teuchos::ParameterList& list, const std::string& name, int depth, bool all,
                      std::ostringstream& out) {
   const std::string indent(2 * depth, ' ');
@@ -159,8 +159,9 @@ void writeDocumented(const Teuchos::ParameterList& list, const std::string& name
   for (auto it = list.begin(); it != list.end(); ++it) {
     const std::string& key = list.name(it);
     const Teuchos::ParameterEntry& entry = list.entry(it);
-    if (!all && entry.docString().rfind(kExpert, 0) == 0) continue;
-    if (!entry.docString().empty()) out << indent << "  <!-- " << commentText(entry.docString()) << " -->\n";
+    if (!all && isExpert(entry)) continue;
+    if (!entry.docString().empty())
+      out << indent << "  <!-- " << (isExpert(entry) ? kExpert : "") << commentText(entry.docString()) << " -->\n";
     if (key == kAnyNameSublist) {
       // A template for user-named sublists: shown commented out, not a parameter.
       std::ostringstream templ;

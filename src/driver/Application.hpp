@@ -17,8 +17,8 @@ namespace signorini {
 Teuchos::ParameterList validTopLevelParameters();
 
 // The parameters with their defaults and documentation as an XML parameter list: the
-// common ones (signorini --defaults), or all of them, the expert ones (documented
-// "Expert: ...") included (signorini --defaults=all; the text of xml/defaults.xml).
+// common ones (signorini --defaults), or all of them, the expert ones (isExpert(), their
+// documentation headed "Expert: ") included (signorini --defaults=all; xml/defaults.xml).
 std::string defaultsXml(bool all = false);
 
 // Reads an XML parameter file on rank 0 and broadcasts it; throws InputError on every rank

@@ -83,9 +83,9 @@ ParameterList validProblemParameters() {
               "cell's points at once; a power with an integer exponent from 2 to 16 is computed by "
               "multiplications");
   p.set("load: quadrature degree", -1,
-        "Expert: Quadrature degree for body forces and tractions; -1: element degree + 4 (exact for "
+        "Quadrature degree for body forces and tractions; -1: element degree + 4 (exact for "
         "the benchmark family)",
-        range(-1, 30));
+        expert(range(-1, 30)));
   p.set("stiffness: operator", "auto",
         "\"assembled\": Q is a sparse matrix; \"matrix-free\": Q is applied cell by cell. Of degree 2 or 3 "
         "no Q is assembled then (the geometric multigrid starts from the mesh's P1 stiffness); P1 still "

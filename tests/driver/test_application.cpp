@@ -90,8 +90,8 @@ TEST(Application, DefaultsXmlIsCurrent) {
       << "regenerate it: build/bin/signorini --defaults=all > xml/defaults.xml, then scripts/parameters_md.py";
 }
 
-// --defaults leaves out the parameters documented as expert; --defaults=all shows them, and
-// both are valid parameter lists.
+// --defaults leaves out the expert parameters; --defaults=all shows them, documented as
+// such, and both are valid parameter lists.
 TEST(Application, DefaultsHideExpertParameters) {
   const std::string common = defaultsXml(false), all = defaultsXml(true);
   EXPECT_EQ(common.find("Expert:"), std::string::npos);
@@ -104,6 +104,42 @@ TEST(Application, DefaultsHideExpertParameters) {
     const auto list = Teuchos::getParametersFromXmlString(text);
     EXPECT_EQ(inputErrorOf([&] { validatedParameters(*list, valid, ""); }), "");
   }
+}
+
+// How many entries of `list` and its sublists are marked expert, and whether any documentation
+// carries the mark as text instead.
+void countExpertMarks(const Teuchos::ParameterList& list, int& marked, int& inText) {
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const Teuchos::ParameterEntry& entry = list.entry(it);
+    marked += isExpert(entry) ? 1 : 0;
+    inText += entry.docString().rfind("Expert", 0) == 0 ? 1 : 0;
+    if (entry.isList()) countExpertMarks(Teuchos::getValue<Teuchos::ParameterList>(entry), marked, inText);
+  }
+}
+
+// Expert parameters carry a mark, not a word in their documentation, and keep it through
+// validation; a marked parameter validates, and reads, as it would unmarked.
+TEST(Application, ExpertParametersAreMarked) {
+  const Teuchos::ParameterList valid = validTopLevelParameters();
+  int marked = 0, inText = 0;
+  countExpertMarks(valid, marked, inText);
+  EXPECT_GT(marked, 20);
+  EXPECT_EQ(inText, 0);
+  EXPECT_TRUE(isExpert(valid.sublist("Solver").getEntry("gamma: max")));
+  EXPECT_FALSE(isExpert(valid.sublist("Solver").getEntry("kkt: tolerance")));
+
+  Teuchos::ParameterList user;
+  user.sublist("Solver").set("gamma: max", 0.9);
+  user.sublist("Solver").sublist("Preconditioner").set("contact correction: blocks", "gathered");
+  const Teuchos::ParameterList validated = validatedParameters(user, valid, "");
+  EXPECT_TRUE(isExpert(validated.sublist("Solver").getEntry("gamma: max")));
+  EXPECT_TRUE(isExpert(validated.sublist("Solver").sublist("Preconditioner").getEntry("contact correction: blocks")));
+  EXPECT_EQ(validated.sublist("Solver").get<double>("gamma: max"), 0.9);
+
+  user.sublist("Solver").set("gamma: max", 2.0);
+  const std::string message = inputErrorOf([&] { validatedParameters(user, valid, ""); });
+  EXPECT_NE(message.find("Solver/gamma: max"), std::string::npos) << message;
+  EXPECT_NE(message.find("a number from"), std::string::npos) << message;
 }
 
 TEST(Application, MisspelledNamesGetAHint) {

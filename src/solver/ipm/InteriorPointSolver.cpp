@@ -44,24 +44,24 @@ void addForcingParameters(Teuchos::ParameterList& p) {
                              "forcing: type"));
   p.set("forcing: eta", 0.1, "Reduction of each solve's starting residual, constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
   p.set("forcing: safety", 0.3,
-        "Expert: Adaptive forcing: the residual allowed as a fraction of the current residual scale; below 1 so "
+        "Adaptive forcing: the residual allowed as a fraction of the current residual scale; below 1 so "
         "that every step reduces the dual residual",
-        range(1e-6, 0.9));
+        expert(range(1e-6, 0.9)));
   p.set("forcing: tail safety", 0.01,
-        "Expert: Adaptive forcing of the primal-dual method once only stationarity is left (the active set has "
+        "Adaptive forcing of the primal-dual method once only stationarity is left (the active set has "
         "settled): used instead of forcing: safety, the dual residual falls by about this much per main "
         "iteration",
-        range(1e-6, 0.9));
+        expert(range(1e-6, 0.9)));
   p.set("forcing: reduction safeguard", 1.0,
-        "Expert: Forcing \"reduction\": every solve also reaches this times the adaptive forcing's residual "
+        "Forcing \"reduction\": every solve also reaches this times the adaptive forcing's residual "
         "scale, so that the dual residual follows mu where the starting vectors stop improving",
-        range(1e-6, 1e6));
+        expert(range(1e-6, 1e6)));
 }
 
 void addPrimalDualParameters(Teuchos::ParameterList& p) {
   p.set("starting point: complementarity", 1.0,
-        "Expert: Initial s^T y as a multiple of the energy scale |b^T v_hat| of the unconstrained solution "
-        "(primal-dual)", range(1e-12, 1e12));
+        "Initial s^T y as a multiple of the energy scale |b^T v_hat| of the unconstrained solution "
+        "(primal-dual)", expert(range(1e-12, 1e12)));
 
   p.set("primal-dual: centering", "mehrotra",
         "\"mehrotra\": predictor-corrector; \"fixed\": mu_{k+1} = (primal-dual: mu factor) mu_k with "
@@ -70,15 +70,15 @@ void addPrimalDualParameters(Teuchos::ParameterList& p) {
                            "primal-dual: centering"));
   p.set("primal-dual: mu factor", 0.2, "Fixed centering: factor of mu per iteration", range(1e-6, 0.999));
   p.set("primal-dual: corrector from predictor", true,
-        "Expert: Mehrotra: start the corrector's Krylov solve from the predictor's step instead of zero (the "
-        "right-hand sides differ by the centering and second-order terms only)");
+        "Mehrotra: start the corrector's Krylov solve from the predictor's step instead of zero (the "
+        "right-hand sides differ by the centering and second-order terms only)", expert());
   p.set("primal-dual: fraction to boundary", 0.995, "Step kept this fraction inside s > 0, y > 0", range(0.5, 0.99999));
   p.set("primal-dual: active-set finish", true,
         "Once the active-set estimate has stayed the same over two long steps and every KKT measure is "
         "within the square root of the tolerance, try one Newton step of the equality-constrained problem "
         "on that set (its constraints held with a penalty far below the tolerance, the others released) and "
         "stop there if it meets every KKT tolerance (see doc/algorithms.md)");
-  p.set("primal-dual: armijo", 0.01, "Expert: Fixed centering: Armijo constant of the merit backtracking", range(1e-8, 0.5));
+  p.set("primal-dual: armijo", 0.01, "Fixed centering: Armijo constant of the merit backtracking", expert(range(1e-8, 0.5)));
 }
 
 // The primal method's, with the paper's adaptive gamma rule.
@@ -90,13 +90,13 @@ void addPrimalParameters(Teuchos::ParameterList& p) {
         "Initial inner tolerance zeta_0 on ||grad psi||; -1: ||b|| (the paper: 1500)");
   p.set("primal: delta", 0.2, "zeta_{k+1} = delta zeta_k (the paper: 0.5)", range(1e-6, 0.999999));
   p.set("primal: gamma", 0.2, "mu_{k+1} = gamma mu_k; the initial gamma when adaptive (the paper: 0.5)", range(1e-6, 0.999999));
-  p.set("primal: tau", 0.01, "Expert: Armijo constant tau of the backtracking line search", range(1e-8, 0.5));
-  p.set("primal: fraction to boundary", 0.99, "Expert: sigma in (28): first trial step min(1, sigma alpha_bar)",
-        range(0.5, 0.999999));
-  p.set("primal: maximum inner iterations", 50, "Expert: Newton steps allowed per main iteration", range(1, 10000));
+  p.set("primal: tau", 0.01, "Armijo constant tau of the backtracking line search", expert(range(1e-8, 0.5)));
+  p.set("primal: fraction to boundary", 0.99, "sigma in (28): first trial step min(1, sigma alpha_bar)",
+        expert(range(0.5, 0.999999)));
+  p.set("primal: maximum inner iterations", 50, "Newton steps allowed per main iteration", expert(range(1, 10000)));
   p.set("primal: extrapolation", true,
-        "Expert: Start each barrier subproblem with a predictor step along the central path, "
-        "H dv = (mu_k - mu_k+1) A^T (1/s) (not in the paper's Algorithm 3.1)");
+        "Start each barrier subproblem with a predictor step along the central path, "
+        "H dv = (mu_k - mu_k+1) A^T (1/s) (not in the paper's Algorithm 3.1)", expert());
   p.set("primal: starting point", "shift",
         "How the primal method makes the initial guess strictly feasible: \"shift\" moves it along "
         "A^T (exact when each constraint acts on its own unknowns, as contact constraints do); "
@@ -104,19 +104,19 @@ void addPrimalParameters(Teuchos::ParameterList& p) {
         choices<StartingPoint>({{"shift", StartingPoint::Shift}, {"relaxed", StartingPoint::Relaxed}},
                                "primal: starting point"));
   p.set("primal: starting margin", 0.1,
-        "Expert: The initial guess is shifted so that every slack d - A v is at least this times the "
+        "The initial guess is shifted so that every slack d - A v is at least this times the "
         "displacement scale of the unconstrained solution",
-        range(1e-12, 1e6));
+        expert(range(1e-12, 1e6)));
   p.set("gamma: adaptive", false,
         "Adapt gamma by the rule of the paper's section 4 (the paper: true); see doc/algorithms.md");
-  p.set("gamma: few inner iterations", 3, "Expert: Fewer inner iterations than this count as few", range(1, 1000));
-  p.set("gamma: successive main iterations", 3, "Expert: Few inner iterations this many times in a row lower gamma",
-        range(1, 1000));
-  p.set("gamma: decrease factor", 0.99, "Expert: gamma <- max(gamma: min, factor * gamma)", range(1e-6, 1.0));
-  p.set("gamma: min", 0.54, "Expert: Lower bound in the decrease rule", range(1e-6, 0.999999));
-  p.set("gamma: increase factor", 1.05, "Expert: gamma <- min(gamma: max, factor * gamma) after more inner iterations",
-        range(1.0, 100.0));
-  p.set("gamma: max", 0.99, "Expert: Upper bound in the increase rule", range(1e-6, 0.999999));
+  p.set("gamma: few inner iterations", 3, "Fewer inner iterations than this count as few", expert(range(1, 1000)));
+  p.set("gamma: successive main iterations", 3, "Few inner iterations this many times in a row lower gamma",
+        expert(range(1, 1000)));
+  p.set("gamma: decrease factor", 0.99, "gamma <- max(gamma: min, factor * gamma)", expert(range(1e-6, 1.0)));
+  p.set("gamma: min", 0.54, "Lower bound in the decrease rule", expert(range(1e-6, 0.999999)));
+  p.set("gamma: increase factor", 1.05, "gamma <- min(gamma: max, factor * gamma) after more inner iterations",
+        expert(range(1.0, 100.0)));
+  p.set("gamma: max", 0.99, "Upper bound in the increase rule", expert(range(1e-6, 0.999999)));
 }
 
 }  // namespace

@@ -45,15 +45,15 @@ void addPreconditionerParameters(Teuchos::ParameterList& prec) {
                                         {"amg of H", PreconditionerType::AmgOfH}},
                                        "type"));
   prec.set("amg of H: rebuild tolerance", std::string("auto"),
-           "Expert: Rebuild \"amg of H\" when the relative weight D_i / (D_i + q_i) of some constraint (q_i: its "
+           "Rebuild \"amg of H\" when the relative weight D_i / (D_i + q_i) of some constraint (q_i: its "
            "stiffness a_i^T diag(Q) a_i) moved by more than this since the last build; 0: at every Newton "
            "step, 1: never after the first; \"auto\": 0 with the geometric levels, 0.9 with MueLu alone",
-           autoOrRange(0.0, 1.0));
+           expert(autoOrRange(0.0, 1.0)));
   prec.set("amg of H: weight cap", 10.0,
-           "Expert: With a contact correction, \"amg of H\" is built for Q + A^T D' A, D'_i = min(D_i, cap q_i) "
+           "With a contact correction, \"amg of H\" is built for Q + A^T D' A, D'_i = min(D_i, cap q_i) "
            "(filtering): weights far above a constraint's stiffness stay out of the coarse levels and the "
            "contact correction solves for them exactly. 0: no cap",
-           range(0.0, 1e300));
+           expert(range(0.0, 1e300)));
   prec.set("contact correction", "multiplicative",
            "Exact solve on the contact DOFs (those in A) combined with the AMG: \"none\", "
            "\"additive\" or \"multiplicative\" (symmetric: subspace, AMG, subspace); none where the "
@@ -64,19 +64,19 @@ void addPreconditionerParameters(Teuchos::ParameterList& prec) {
                                        {"multiplicative", ContactCorrection::Multiplicative}},
                                       "contact correction"));
   prec.set("contact correction: blocks", "auto",
-           "Expert: How P^T H P is factored for the contact correction: \"per rank\", each rank the block of "
+           "How P^T H P is factored for the contact correction: \"per rank\", each rank the block of "
            "the contact DOFs it owns (block Jacobi, nothing gathered); \"gathered\", all of it on rank 0 "
            "(exact; its residual gathered in every Krylov iteration); \"auto\": per rank unless a constraint's "
            "DOFs lie on several ranks",
-           choices<ContactSubspaceBlocks>({{"auto", ContactSubspaceBlocks::Auto},
-                                           {"per rank", ContactSubspaceBlocks::PerRank},
-                                           {"gathered", ContactSubspaceBlocks::Gathered}},
-                                          "contact correction: blocks"));
+           expert(choices<ContactSubspaceBlocks>({{"auto", ContactSubspaceBlocks::Auto},
+                                                  {"per rank", ContactSubspaceBlocks::PerRank},
+                                                  {"gathered", ContactSubspaceBlocks::Gathered}},
+                                                 "contact correction: blocks")));
   prec.set("free motions: coarse depth", 2,
-           "Expert: Where only the contact holds a rigid body motion (force control), the preconditioner solves "
+           "Where only the contact holds a rigid body motion (force control), the preconditioner solves "
            "exactly on the free motions F and on (B H)^j F, j = 1 .. this, the preconditioned Krylov vectors that "
            "catch the body's soft motions around its contact patch; 0: on F alone",
-           range(0, 8));
+           expert(range(0, 8)));
   prec.set("hierarchy", "auto",
            "Multigrid levels: \"geometric\" (P_k to P1 on the same mesh; on box meshes then grids with half the "
            "boxes per direction; Galerkin coarse matrices, Chebyshev smoothing, a direct solve or MueLu below); "
@@ -87,19 +87,19 @@ void addPreconditionerParameters(Teuchos::ParameterList& prec) {
                                {"geometric", Hierarchy::Geometric}},
                               "hierarchy"));
   prec.set("geometric: coarsest size", 200,
-           "Expert: The geometric levels stop before a grid with fewer unknowns than this, or after one with a "
+           "The geometric levels stop before a grid with fewer unknowns than this, or after one with a "
            "single box per direction",
-           range(1, std::numeric_limits<int>::max()));
+           expert(range(1, std::numeric_limits<int>::max())));
   prec.set("geometric: direct solve size", 2500,
-           "Expert: The geometric levels end at the first coarse grid with at most this many unknowns, which is solved "
+           "The geometric levels end at the first coarse grid with at most this many unknowns, which is solved "
            "exactly (gathered to rank 0 and factored by CHOLMOD's Cholesky); MueLu's algebraic multigrid takes over below a "
            "larger coarsest grid. 0: always MueLu",
-           range(0, std::numeric_limits<int>::max()));
+           expert(range(0, std::numeric_limits<int>::max())));
   prec.set("geometric: eigenvalue update steps", 3,
-           "Expert: Lanczos steps that update a smoother's largest-eigenvalue estimate when only the contact rows "
+           "Lanczos steps that update a smoother's largest-eigenvalue estimate when only the contact rows "
            "changed, from the previous Ritz vector; 0: a fresh estimate at every rebuild (1 and 2 steps are too "
            "inaccurate)",
-           zeroOrRange(3, 1000));
+           expert(zeroOrRange(3, 1000)));
   prec.sublist("Ifpack2", false,
                "Passed unchanged to Ifpack2's Chebyshev smoother of the coarse geometric levels, over "
                "Signorini's defaults (chebyshev: degree 2, chebyshev: ratio eigenvalue 7); the fine level's "
@@ -117,14 +117,14 @@ Teuchos::ParameterList NewtonSystemSolver::validParameters() {
   krylov.set("maximum iterations", 1000, "Krylov iterations allowed per Newton system",
              range(1, 1000000));
   krylov.set("initial guess: previous solutions", 2,
-             "Expert: Start each Newton system from the H-orthogonal projection of its solution on this many earlier "
+             "Start each Newton system from the H-orthogonal projection of its solution on this many earlier "
              "solutions (and the predictor's step, for the corrector); a kept solution carries its product with "
              "Q, so the projection costs one application of Q per system; 0: start from zero",
-             range(0, 20));
+             expert(range(0, 20)));
   krylov.set("initial guess: contact correction", true,
-             "Expert: Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x): one "
+             "Then correct the start exactly on the contact DOFs, x += P (P^T H P)^-1 P^T (r - H x): one "
              "subspace solve per Newton system (and one application of H without the projection); needs "
-             "Preconditioner/contact correction");
+             "Preconditioner/contact correction", expert());
   addPreconditionerParameters(p.sublist("Preconditioner", false, "Preconditioner of H"));
   return p;
 }
