@@ -421,11 +421,10 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   const std::string& directory = run.directory;
 
   const std::string baseDirectory = std::filesystem::path(cl.input).parent_path().string();
-  Teuchos::ParameterList& problemList = run.user.sublist("Problem");
-  // The export writes Q: "auto" assembles it then.
-  if (!cl.exportQp.empty() && problemList.get<std::string>("stiffness: operator", "auto") == "auto")
-    problemList.set("stiffness: operator", "assembled");
-  AssembledProblem problem = buildProblem(problemList, comm, baseDirectory.empty() ? "." : baseDirectory);
+  // The export writes Q as a matrix.
+  AssembledProblem problem =
+      buildProblem(run.user.sublist("Problem"), comm, baseDirectory.empty() ? "." : baseDirectory,
+                   cl.exportQp.empty() ? StiffnessNeed::AsConfigured : StiffnessNeed::Assembled);
   const ProblemDefinition& def = problem.definition;
   const long long n = problem.qp.b->getGlobalLength(), m = problem.qp.d->getGlobalLength();
   const DistributedSpace& space = distributedSpace(*problem.space);

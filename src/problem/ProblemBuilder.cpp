@@ -139,7 +139,7 @@ void assembleQP(AssembledProblem& result, const std::shared_ptr<const Distribute
 }  // namespace
 
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
-                              const std::string& baseDirectory) {
+                              const std::string& baseDirectory, StiffnessNeed stiffness) {
   AssembledProblem result;
   std::shared_ptr<const DistributedSpace> space;
   std::shared_ptr<const GeometricGrid> refinedGrid;  // the levels of a refined Gmsh mesh
@@ -149,8 +149,10 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::meshAndSpace);
     setup.start(true);
     const double residentBefore = residentMiB();
-    refinedGrid = makeSpace(validatedParameters(problem, validProblemParameters(), "Problem"), comm, baseDirectory,
-                            result, space);
+    Teuchos::ParameterList validated = validatedParameters(problem, validProblemParameters(), "Problem");
+    if (stiffness == StiffnessNeed::Assembled && validated.get<std::string>("stiffness: operator") == "auto")
+      validated.set("stiffness: operator", "assembled");
+    refinedGrid = makeSpace(validated, comm, baseDirectory, result, space);
     result.space = space;
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);

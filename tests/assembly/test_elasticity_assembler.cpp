@@ -82,6 +82,22 @@ TEST(ElasticityAssembler, SameProblemOnEveryRankCount) {
   }
 }
 
+// A caller that needs Q as a matrix gets it where the user left the choice to the program;
+// a choice the user made stays.
+TEST(ElasticityAssembler, StiffnessNeedAssemblesAnAutomaticOperatorOnly) {
+  const auto comm = Tpetra::getDefaultComm();
+  const auto assembled = [](const AssembledProblem& p) {
+    return dynamic_cast<const CrsMatrix*>(p.qp.Q.get()) != nullptr;
+  };
+  Teuchos::ParameterList p2 = boxProblem(2, 4, 2);
+  p2.set("stiffness: operator", "auto");
+  EXPECT_FALSE(assembled(buildProblem(p2, comm)));
+  EXPECT_TRUE(assembled(buildProblem(p2, comm, ".", StiffnessNeed::Assembled)));
+  EXPECT_EQ(p2.get<std::string>("stiffness: operator"), "auto");  // the caller's list is not edited
+  p2.set("stiffness: operator", "matrix-free");
+  EXPECT_FALSE(assembled(buildProblem(p2, comm, ".", StiffnessNeed::Assembled)));
+}
+
 TEST(ElasticityAssembler, RigidBodyModesAreInTheKernelOfTheFreeStiffness) {
   for (int dim : {2, 3})
     for (int degree : {1, 2, 3}) {

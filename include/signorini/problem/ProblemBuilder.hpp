@@ -39,9 +39,14 @@ struct AssembledProblem {
   std::vector<double> setupPeakMiBPerRank;
 };
 
+/// Whether the caller needs Q as a matrix: `Assembled` (to export it, say) resolves a
+/// "stiffness: operator" of "auto" to "assembled"; a value the user chose stays.
+enum class StiffnessNeed { AsConfigured, Assembled };
+
 /// Builds the problem a "Problem" list describes; `baseDirectory` resolves a relative
 /// "mesh: file". Collective; throws InputError naming the parameter or file at fault.
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
-                              const std::string& baseDirectory = ".");
+                              const std::string& baseDirectory = ".",
+                              StiffnessNeed stiffness = StiffnessNeed::AsConfigured);
 
 }  // namespace signorini
