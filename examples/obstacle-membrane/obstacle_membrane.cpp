@@ -78,8 +78,10 @@ int main(int argc, char** argv) {
   qp.A = A;
   qp.d = d;
 
-  // 3. Solve with the default parameters (primal-dual, Mehrotra, CG + MueLu).
-  const SolveResult result = InteriorPointSolver().solve(qp);
+  // 3. Solve with the default parameters (primal-dual, Mehrotra, CG + MueLu); the recorder
+  //    keeps what the solve reports of each step (MultigridInput() when there is none to give).
+  SolveRecorder record;
+  const SolveResult result = InteriorPointSolver().solve(qp, MultigridInput(), nullptr, &record);
 
   // 4. The result: u = result.v, the obstacle's force on node i is -lambda_i >= 0.
   const double deflection = result.v->normInf();
@@ -93,7 +95,7 @@ int main(int argc, char** argv) {
     std::printf("  largest deflection %.4f, energy %.6f, worst relative KKT residual %.1e\n", deflection,
                 result.objective, result.kkt.worst());
     std::printf("  main iteration  mu         worst KKT  CG\n");
-    for (const NewtonStepRecord& step : result.history)
+    for (const NewtonStepRecord& step : record.history())
       std::printf("  %14d  %.3e  %.2e  %d\n", step.outer, step.mu, step.kkt.worst(), step.krylovIterations);
   }
   return result.converged() ? 0 : 1;

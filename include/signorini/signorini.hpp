@@ -28,5 +28,6 @@
 #include "signorini/solver/KKTMeasures.hpp"
 #include "signorini/solver/MultigridInput.hpp"
 #include "signorini/solver/SimplexGrid.hpp"
+#include "signorini/solver/SolveRecorder.hpp"
 #include "signorini/solver/SolveResult.hpp"
 #include "signorini/solver/StiffnessOperator.hpp"

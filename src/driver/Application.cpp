@@ -342,18 +342,20 @@ RunParameters runParameters(const CommandLine& cl, const Comm& comm) {
   return run;
 }
 
-// One solve with the iteration log on rank 0; its time is the slowest rank's.
+// One solve with the iteration log on rank 0, recorded into `record`; its time is the
+// slowest rank's.
 SolveResult solveLogged(const ContactQP& qp, const MultigridInput& multigrid, const InteriorPointSolver& solver,
-                        std::ostream& out, double& seconds) {
+                        std::ostream& out, SolveRecorder& record, double& seconds) {
   const Comm& comm = *qp.Q->getDomainMap()->getComm();
   IterationLog log(out, comm.getRank() == 0);
+  ObserverList observers{&log, &record};
   Teuchos::Time solveTime("solve");
   solveTime.start(true);
   SolveResult result;
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve"));
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::solve);
-    result = solver.solve(qp, multigrid, nullptr, &log);
+    result = solver.solve(qp, multigrid, nullptr, &observers);
   }
   seconds = maxOverRanks(comm, solveTime.stop());
   return result;
@@ -371,7 +373,7 @@ void writeRunSummary(RunSummary& summary, const CommandLine& cl, const Teuchos::
   if (comm.getRank() != 0) return;
   writeSummaryJson(summary, directory + "/summary.json");
   if (!cl.summary.empty()) writeSummaryJson(summary, cl.summary);
-  if (output.get<bool>("write history")) writeHistoryCsv(*summary.result, directory + "/history.csv");
+  if (output.get<bool>("write history")) writeHistoryCsv(*summary.record, directory + "/history.csv");
   out << "Results in " << directory << "/ (summary.json" << (output.get<bool>("write history") ? ", history.csv" : "")
       << (solutionWritten ? ", solution.pvtu" : "") << ")\n";
 }
@@ -392,7 +394,8 @@ SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostre
     out << "Signorini: QP of " << cl.qp << "/: n = " << n << ", m = " << m << ", " << files.multigrid.blockSize
         << " unknowns per node, " << comm->getSize() << " MPI rank(s); read in " << setupSeconds << " s\n";
   RunSummary summary;
-  SolveResult result = solveLogged(qp, files.multigrid, *run.solver, out, summary.solveSeconds);
+  SolveRecorder record;
+  SolveResult result = solveLogged(qp, files.multigrid, *run.solver, out, record, summary.solveSeconds);
   if (m > 0 && isFinite(result)) {
     summary.contact = contactStatistics(qp, files.multigrid, *result.v, *result.lambda);
     if (comm->getRank() == 0) logContact(*summary.contact, out);
@@ -404,6 +407,7 @@ SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostre
   summary.n = n;
   summary.m = m;
   summary.result = &result;
+  summary.record = &record;
   summary.setupSeconds = setupSeconds;
   summary.totalSeconds = maxOverRanks(*comm, total.stop());
   writeRunSummary(summary, cl, run.output, run.directory, false, *comm, out);
@@ -452,7 +456,8 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
   if (output.get<bool>("write solution"))
     detail::checkOutputSpace(directory, detail::estimatedSolutionBytes(*problem.space), *comm);
   RunSummary summary;
-  SolveResult result = solveLogged(problem.qp, problem.multigrid, *run.solver, out, summary.solveSeconds);
+  SolveRecorder record;
+  SolveResult result = solveLogged(problem.qp, problem.multigrid, *run.solver, out, record, summary.solveSeconds);
 
   const bool finite = isFinite(result);
   {
@@ -472,6 +477,8 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     summary.n = n;
     summary.m = m;
     summary.result = &result;
+    summary.record = &record;
+  summary.record = &record;
     summary.setupSeconds = problem.setupSeconds;
     summary.assemblySeconds = problem.assemblySeconds;
     summary.totalSeconds = maxOverRanks(*comm, total.totalElapsedTime());

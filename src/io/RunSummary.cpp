@@ -44,6 +44,7 @@ std::string kktJson(double stationarity, double complementarity, double primal, 
 
 void writeSummaryJson(const RunSummary& s, const std::string& path) {
   const SolveResult& r = *s.result;
+  const SolveRecorder& record = *s.record;
   std::ostringstream j;
   j << "{\n"
     << "  \"signorini\": {\"version\": " << quoted(kVersion) << ", \"commit\": " << quoted(gitCommit())
@@ -66,9 +67,9 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     << "  \"krylov_iterations\": " << r.krylovIterations << ",\n"
     << "  \"max_krylov_per_newton\": " << r.maxKrylovPerNewton << ",\n"
     << "  \"preconditioner_setups\": " << r.preconditionerSetups << ",\n"
-    << "  \"active_set_finish\": {\"attempts\": " << r.activeSetFinishAttempts
-    << ", \"accepted\": " << (r.finishedOnActiveSet ? "true" : "false")
-    << ", \"krylov_iterations\": " << r.activeSetFinishKrylov << "},\n"
+    << "  \"active_set_finish\": {\"attempts\": " << record.activeSetFinishes().size()
+    << ", \"accepted\": " << (record.finishedOnActiveSet() ? "true" : "false")
+    << ", \"krylov_iterations\": " << record.activeSetFinishKrylov() << "},\n"
     << "  \"objective\": " << number(r.objective) << ",\n"
     << "  \"active_constraints\": " << r.activeConstraints << ",\n"
     << "  \"kkt\": " << kktJson(r.kkt.stationarity, r.kkt.complementarity, r.kkt.primalFeasibility,
@@ -76,7 +77,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     << "  \"kkt_absolute\": " << kktJson(r.kkt.stationarityAbs, r.kkt.complementarityAbs,
                                            r.kkt.primalFeasibilityAbs, r.kkt.dualFeasibilityAbs) << ",\n"
     << "  \"inner_iterations\": [";
-  for (std::size_t i = 0; i < r.innerIterations.size(); ++i) j << (i ? ", " : "") << r.innerIterations[i];
+  const std::vector<int>& inner = record.innerIterations();
+  for (std::size_t i = 0; i < inner.size(); ++i) j << (i ? ", " : "") << inner[i];
   j << "],\n";
   if (s.contact) {
     const ContactStatistics& c = *s.contact;
@@ -100,11 +102,11 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
   detail::writeFileAtomically(path, j.str());
 }
 
-void writeHistoryCsv(const SolveResult& r, const std::string& path) {
+void writeHistoryCsv(const SolveRecorder& record, const std::string& path) {
   std::ostringstream c;
   c << "main_iteration,inner_iteration,mu,objective,stationarity,complementarity,primal_feasibility,"
        "dual_feasibility,step,krylov_iterations,time\n";
-  for (const NewtonStepRecord& h : r.history)
+  for (const NewtonStepRecord& h : record.history())
     c << h.outer << ',' << h.inner << ',' << number(h.mu) << ',' << number(h.objective) << ','
       << number(h.kkt.stationarity) << ',' << number(h.kkt.complementarity) << ','
       << number(h.kkt.primalFeasibility) << ',' << number(h.kkt.dualFeasibility) << ',' << number(h.step) << ','

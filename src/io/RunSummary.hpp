@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "signorini/assembly/ContactStatistics.hpp"
+#include "signorini/solver/SolveRecorder.hpp"
 #include "signorini/solver/SolveResult.hpp"
 
 namespace signorini {
@@ -16,6 +17,7 @@ struct RunSummary {
   int dim = 0, degree = 0, ranks = 1;
   long long nx = 0, n = 0, m = 0;
   const SolveResult* result = nullptr;
+  const SolveRecorder* record = nullptr;  // the solve's history, inner iterations, finishes
   double setupSeconds = 0, assemblySeconds = 0, solveSeconds = 0, totalSeconds = 0;  // max over ranks
   double peakMemoryMiBMaxRank = 0, peakMemoryMiBAllRanks = 0;  // peak resident set size
   bool hugePages = false;  // malloc asked for transparent huge pages (see driver/HugePages.hpp)
@@ -27,6 +29,6 @@ struct RunSummary {
 };
 
 void writeSummaryJson(const RunSummary& summary, const std::string& path);
-void writeHistoryCsv(const SolveResult& result, const std::string& path);
+void writeHistoryCsv(const SolveRecorder& record, const std::string& path);
 
 }  // namespace signorini

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// What an interior point solve returns: the solution, its KKT measures, the counters of the
-/// paper's Table 2 and a per-Newton-step history (the paper's Figure 2 and more).
+/// What an interior point solve returns: the solution, its KKT measures and the counters of
+/// the paper's Table 2, which every method has. The history of the Newton steps and the
+/// method-specific counters go to observers (IterationObserver, SolveRecorder).
 #include <string>
-#include <vector>
 
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/solver/KKTMeasures.hpp"
@@ -26,6 +26,13 @@ struct NewtonStepRecord {
   double seconds = 0;        ///< wall time since the start of the solve
 };
 
+/// One active-set finish attempt of the primal-dual method.
+struct ActiveSetFinishRecord {
+  int outer = 0;                  ///< the main iteration it followed
+  bool accepted = false;          ///< it met every KKT tolerance and ended the solve
+  long long krylovIterations = 0;  ///< of its solve (to the KKT tolerance)
+};
+
 /// The outcome of InteriorPointSolver::solve, the same on every rank but for the local
 /// entries of v and lambda.
 struct SolveResult {
@@ -44,11 +51,6 @@ struct SolveResult {
   long long krylovIterations = 0;  ///< CG iterations of the whole solve, the active-set finish's included
   int maxKrylovPerNewton = 0;      ///< largest CG count of one Newton system of the barrier steps
   int preconditionerSetups = 0;  ///< AMG hierarchies built
-  int activeSetFinishAttempts = 0;  ///< primal-dual: active-set finishes tried (Solver/primal-dual: active-set finish)
-  bool finishedOnActiveSet = false;  ///< the last step was an accepted active-set finish
-  long long activeSetFinishKrylov = 0;  ///< CG iterations of the finish attempts (solved to the KKT tolerance)
-  std::vector<int> innerIterations;  ///< per main iteration (the paper's Figure 2)
-  std::vector<NewtonStepRecord> history;
   double seconds = 0;
 
   bool converged() const { return status == SolveStatus::Converged; }

@@ -34,6 +34,12 @@ void IterationLog::onNewtonStep(const NewtonStepRecord& s) {
   out_ << line << std::flush;
 }
 
+void IterationLog::onActiveSetFinish(const ActiveSetFinishRecord& attempt) {
+  ++finishAttempts_;
+  finishAccepted_ = attempt.accepted;
+  finishKrylov_ += attempt.krylovIterations;
+}
+
 void IterationLog::onFinish(const SolveResult& r) {
   if (!print_) return;
   char line[512];
@@ -45,12 +51,27 @@ void IterationLog::onFinish(const SolveResult& r) {
                 r.seconds, r.objective, r.activeConstraints, r.kkt.stationarity, r.kkt.complementarity,
                 r.kkt.primalFeasibility, r.kkt.dualFeasibility);
   out_ << line;
-  if (r.activeSetFinishAttempts > 0)
-    out_ << "  active-set finish: " << r.activeSetFinishAttempts << " tried, "
-         << (r.finishedOnActiveSet ? "the last step" : "none accepted") << ", " << r.activeSetFinishKrylov
-         << " Krylov iterations\n";
+  if (finishAttempts_ > 0)
+    out_ << "  active-set finish: " << finishAttempts_ << " tried, "
+         << (finishAccepted_ ? "the last step" : "none accepted") << ", " << finishKrylov_ << " Krylov iterations\n";
   if (!r.converged()) out_ << "  " << r.message << "\n";
   out_ << std::flush;
+}
+
+void ObserverList::onStart(const std::string& method, long long n, long long m) {
+  for (IterationObserver* o : observers_) o->onStart(method, n, m);
+}
+void ObserverList::onNewtonStep(const NewtonStepRecord& step) {
+  for (IterationObserver* o : observers_) o->onNewtonStep(step);
+}
+void ObserverList::onMainIteration(int outer, int innerIterations) {
+  for (IterationObserver* o : observers_) o->onMainIteration(outer, innerIterations);
+}
+void ObserverList::onActiveSetFinish(const ActiveSetFinishRecord& attempt) {
+  for (IterationObserver* o : observers_) o->onActiveSetFinish(attempt);
+}
+void ObserverList::onFinish(const SolveResult& result) {
+  for (IterationObserver* o : observers_) o->onFinish(result);
 }
 
 }  // namespace signorini

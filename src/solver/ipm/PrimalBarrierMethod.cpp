@@ -215,7 +215,7 @@ SolveResult PrimalBarrierMethod::run(IterationObserver& observer, Teuchos::Time&
   start();
   for (int k = 0;; ++k) {
     if (!solveSubproblem(k, observer, timer)) break;
-    result_.innerIterations.push_back(inner_);
+    observer.onMainIteration(k + 1, inner_);
     result_.outerIterations = k + 1;
     lambda_.update(-1.0, y_, 0.0);
     if (stop_.converged(kktMeasures(qp_, *v_, lambda_), result_) || stop_.outOfIterations(k + 1, result_)) break;
@@ -347,7 +347,6 @@ void PrimalBarrierMethod::record(int k, double alpha, IterationObserver& observe
   Qv_.update(alpha, Qdv_, 1.0);  // Q v at the new point, without another operator application
   step.objective = objective(qp_, *v_, Qv_);
   step.seconds = timer.totalElapsedTime(true);
-  result_.history.push_back(step);
   observer.onNewtonStep(step);
 }
 

@@ -53,6 +53,7 @@ class PrimalDualMethod {
   bool backtrackOnMerit(double& alpha);
   void takeStep(int k, double alpha, bool move = true);
   void report(const KKTMeasures& kkt, IterationObserver& observer, Teuchos::Time& timer);
+  IterationObserver* observer_ = nullptr;  // run()'s, for the reports made deeper down
 
   const ContactQP& qp_;
   const MultigridInput& multigrid_;
@@ -138,6 +139,7 @@ void PrimalDualMethod::start() {
 }
 
 SolveResult PrimalDualMethod::run(IterationObserver& observer, Teuchos::Time& timer) {
+  observer_ = &observer;
   start();
   for (int k = 0;; ++k) {
     const KKTMeasures kkt = evaluate(k);
@@ -222,10 +224,8 @@ bool PrimalDualMethod::finishOnActiveSet(int k, const KKTMeasures& kkt) {
   if (!finish_->settled(x, kkt, previousAlpha_)) return false;
   const ActiveSetFinish::Outcome outcome = finish_->attempt(x);
   result_.krylovIterations += outcome.krylovIterations;  // not a barrier step's system: not in the maximum
-  result_.activeSetFinishKrylov += outcome.krylovIterations;
   ++result_.newtonSteps;
-  ++result_.activeSetFinishAttempts;
-  result_.finishedOnActiveSet = outcome.accepted;
+  observer_->onActiveSetFinish(ActiveSetFinishRecord{k, outcome.accepted, outcome.krylovIterations});
   if (!outcome.accepted) {
     rejectedFinishKrylov_ += outcome.krylovIterations;
     return false;
@@ -387,14 +387,13 @@ void PrimalDualMethod::takeStep(int k, double alpha, bool move) {
   pending_.krylovIterations = krylovThisStep_ + rejectedFinishKrylov_;
   rejectedFinishKrylov_ = 0;
   havePending_ = true;
-  result_.innerIterations.push_back(1);
+  observer_->onMainIteration(k + 1, 1);
 }
 
 void PrimalDualMethod::report(const KKTMeasures& kkt, IterationObserver& observer, Teuchos::Time& timer) {
   pending_.objective = objective(qp_, *v_, Qv_);
   pending_.kkt = kkt;
   pending_.seconds = timer.totalElapsedTime(true);
-  result_.history.push_back(pending_);
   observer.onNewtonStep(pending_);
 }
 

@@ -40,7 +40,6 @@ SolveResult solveUnconstrained(const ContactQP& qp, const MultigridInput& multig
   step.kkt = result.kkt;
   step.krylovIterations = kr.iterations;
   step.seconds = timer.totalElapsedTime(true);
-  result.history.push_back(step);
   observer.onNewtonStep(step);
 
   if (!stop.converged(result.kkt, result))

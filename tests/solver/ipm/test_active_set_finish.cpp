@@ -11,6 +11,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/solver/InteriorPointSolver.hpp"
+#include "signorini/solver/SolveRecorder.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {
@@ -18,10 +19,18 @@ namespace {
 using namespace signorini;
 using namespace signorini::testing;
 
-SolveResult solve(const AssembledProblem& problem, bool finish) {
+// The result, and what the recorder observed of the solve.
+struct Recorded {
+  SolveResult result;
+  SolveRecorder record;
+};
+
+Recorded solve(const AssembledProblem& problem, bool finish) {
   Teuchos::ParameterList params;
   params.set("primal-dual: active-set finish", finish);
-  return InteriorPointSolver(params).solve(problem.qp, problem.multigrid);
+  Recorded r;
+  r.result = InteriorPointSolver(params).solve(problem.qp, problem.multigrid, nullptr, &r.record);
+  return r;
 }
 
 // A 2D and a 3D problem whose last iterations are the barrier's linear tail.
@@ -29,22 +38,24 @@ TEST(ActiveSetFinish, EndsTheSolveAtTheOptimumOfTheBarrierIterations) {
   for (const char* name : {"K", "L"}) {
     const AssembledProblem problem = buildProblem(shippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm());
     const ContactQP& qp = problem.qp;
-    const SolveResult with = solve(problem, true), without = solve(problem, false);
+    const Recorded withFinish = solve(problem, true), withoutFinish = solve(problem, false);
+    const SolveResult &with = withFinish.result, &without = withoutFinish.result;
+    const std::vector<NewtonStepRecord>& history = withFinish.record.history();
     ASSERT_TRUE(with.converged() && without.converged()) << name << ": " << with.message << " / " << without.message;
-    EXPECT_TRUE(with.finishedOnActiveSet) << name;
-    EXPECT_GE(with.activeSetFinishAttempts, 1) << name;
-    EXPECT_EQ(without.activeSetFinishAttempts, 0) << name;
-    ASSERT_FALSE(with.history.empty());
-    EXPECT_EQ(with.history.back().mu, 0.0) << name;
-    EXPECT_EQ(with.history.back().step, 1.0) << name;
+    EXPECT_TRUE(withFinish.record.finishedOnActiveSet()) << name;
+    EXPECT_GE(withFinish.record.activeSetFinishes().size(), 1u) << name;
+    EXPECT_EQ(withoutFinish.record.activeSetFinishes().size(), 0u) << name;
+    ASSERT_FALSE(history.empty());
+    EXPECT_EQ(history.back().mu, 0.0) << name;
+    EXPECT_EQ(history.back().step, 1.0) << name;
+    EXPECT_EQ(static_cast<int>(withFinish.record.innerIterations().size()), with.outerIterations) << name;
     // The finish's CG iterations are counted in the total, not in the barrier systems' maximum.
-    EXPECT_GE(with.activeSetFinishKrylov, with.history.back().krylovIterations) << name;
-    EXPECT_GT(with.history.back().krylovIterations, 0) << name;
-    EXPECT_EQ(without.activeSetFinishKrylov, 0) << name;
-    EXPECT_LT(with.activeSetFinishKrylov, with.krylovIterations) << name;
+    EXPECT_GE(withFinish.record.activeSetFinishKrylov(), history.back().krylovIterations) << name;
+    EXPECT_GT(history.back().krylovIterations, 0) << name;
+    EXPECT_LT(withFinish.record.activeSetFinishKrylov(), with.krylovIterations) << name;
     int largestBarrierStep = 0;
-    for (std::size_t k = 0; k + 1 < with.history.size(); ++k)
-      largestBarrierStep = std::max(largestBarrierStep, with.history[k].krylovIterations);
+    for (std::size_t k = 0; k + 1 < history.size(); ++k)
+      largestBarrierStep = std::max(largestBarrierStep, history[k].krylovIterations);
     EXPECT_LE(with.maxKrylovPerNewton, largestBarrierStep) << name;
     EXPECT_LE(with.kkt.worst(), 1e-8) << name;
     EXPECT_LE(with.outerIterations, without.outerIterations) << name;
@@ -62,8 +73,9 @@ TEST(ActiveSetFinish, EndsTheSolveAtTheOptimumOfTheBarrierIterations) {
 TEST(ActiveSetFinish, MultipliersAreCompressiveAndComplementary) {
   const AssembledProblem problem = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm());
   const ContactQP& qp = problem.qp;
-  const SolveResult r = solve(problem, true);
-  ASSERT_TRUE(r.finishedOnActiveSet);
+  const Recorded recorded = solve(problem, true);
+  const SolveResult& r = recorded.result;
+  ASSERT_TRUE(recorded.record.finishedOnActiveSet());
   Vector c(qp.A->getRangeMap());
   qp.A->apply(*r.v, c);
   c.update(-1.0, *qp.d, 1.0);

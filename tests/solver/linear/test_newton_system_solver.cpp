@@ -12,6 +12,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "signorini/solver/InteriorPointSolver.hpp"
+#include "signorini/solver/SolveRecorder.hpp"
 #include "core/ParameterValidation.hpp"
 #include "solver/linear/NewtonSystemSolver.hpp"
 #include "support/TestProblems.hpp"
@@ -131,11 +132,12 @@ TEST(NewtonSystemSolver, FilteredAmgKeepsTheLastNewtonStepsCheap) {
   for (int k = 0; k < 2; ++k) {
     Teuchos::ParameterList params;
     params.sublist("Preconditioner").set("amg of H: weight cap", k == 0 ? 10.0 : 0.0);
-    const SolveResult r = InteriorPointSolver(params).solve(qp, problem.multigrid);
+    SolveRecorder record;
+    const SolveResult r = InteriorPointSolver(params).solve(qp, problem.multigrid, nullptr, &record);
     ASSERT_TRUE(r.converged()) << r.message;
     ASSERT_GE(r.outerIterations, 4);
     std::vector<int> perIteration(r.outerIterations, 0);
-    for (const NewtonStepRecord& step : r.history) perIteration[step.outer - 1] += step.krylovIterations;
+    for (const NewtonStepRecord& step : record.history()) perIteration[step.outer - 1] += step.krylovIterations;
     lastThree[k] = perIteration[r.outerIterations - 1] + perIteration[r.outerIterations - 2] +
                    perIteration[r.outerIterations - 3];
     counts += (k == 0 ? "filtered: " : "/ unfiltered: ") + show(perIteration);
