@@ -28,8 +28,11 @@ deps:
 configure: deps
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
 
+# The Python module: Debian's python3 finds it in $(BUILD)/python through a .pth file in
+# the user's site-packages (no root needed; `cmake --install` puts it in the prefix instead).
 build: configure
 	cmake --build $(BUILD) -j $(JOBS)
+	/usr/bin/python3 scripts/python_path.py $(BUILD)/python
 
 run: build
 	mpirun -np $(NP) $(BUILD)/bin/signorini $(INPUT) --output $(OUTPUT)

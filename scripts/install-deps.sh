@@ -24,6 +24,7 @@ packages=(
   doxygen                     # API reference (make doc)
   universal-ctags             # the function length lint (tests/lint/function_length.py)
   python3 python3-numpy python3-matplotlib python3-meshio  # scripts and output checks
+  python3-dev pybind11-dev python3-scipy  # the Python module (python/) and its test
 )
 for arg in "$@"; do
   case "$arg" in

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Install test: installs Signorini into a scratch prefix; checks that exactly the public
 # headers are installed and that each compiles on its own; runs the installed program on
-# xml/default.xml; builds every example against the exported CMake package and runs it on 2
-# MPI ranks.
+# xml/default.xml; runs the Python example with the installed module; builds every C++
+# example against the exported CMake package and runs it on 2 MPI ranks.
 set -euo pipefail
 source_dir=$1
 build_dir=$2
@@ -21,6 +21,11 @@ diff <(cd "$work/prefix/include" && find signorini -name '*.hpp' | sort) \
 (cd "$work" && mpiexec -np 2 "$work/prefix/bin/signorini" "$source_dir/xml/default.xml" --output "$work/default") ||
   { echo "the installed bin/signorini does not solve xml/default.xml"; exit 1; }
 test -s "$work/default/summary.json"
+
+# The installed Python module, from the prefix alone: the hand-over example.
+(cd "$work" && PYTHONPATH="$work/prefix/lib/python3/dist-packages" /usr/bin/python3 \
+   "$source_dir/examples/python-handover/handover.py" "$work/handover-pressure.png") ||
+  { echo "the installed Python module does not solve examples/python-handover"; exit 1; }
 
 cmake -S "$source_dir/tests/install/installed_headers" -B "$work/headers" -DCMAKE_PREFIX_PATH="$work/prefix"
 cmake --build "$work/headers" -j 2

@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""The Python module on 1 or more MPI ranks: paper problem J, exported by the program
+(signorini --export-qp), read with scipy and solved through `signorini.solve` with each rank
+passing its rows, reaches the program's optimum and active set; the multipliers are
+compressive and complementary; inputs of the wrong size or nodes split across ranks are
+refused with a ValueError naming what to fix.
+
+    mpiexec -np N python3 test_python_module.py QP_DIR SUMMARY_JSON
+"""
+import json
+import sys
+
+import numpy as np
+import scipy.io
+
+import signorini
+
+
+def read(directory):
+    def vector(name):
+        return np.asarray(scipy.io.mmread(f"{directory}/{name}.mtx")).ravel()
+    return (scipy.io.mmread(f"{directory}/Q.mtx").tocsr(), vector("b"), scipy.io.mmread(f"{directory}/A.mtx").tocsr(),
+            vector("d"), np.asarray(scipy.io.mmread(f"{directory}/coords.mtx")))
+
+
+def my_rows(Q, A, coordinates):
+    """This rank's whole nodes and their interlaced rows, and its share of the constraints."""
+    rank, size = signorini.rank(), signorini.size()
+    dim = coordinates.shape[1]
+    nodes = np.array_split(np.arange(coordinates.shape[0]), size)[rank]
+    rows = (dim * nodes[:, None] + np.arange(dim)).ravel()
+    constraints = np.array_split(np.arange(A.shape[0]), size)[rank]
+    return nodes, rows, constraints
+
+
+def refused(call, words):
+    try:
+        call()
+    except ValueError as error:
+        assert words in str(error), str(error)
+        return
+    raise AssertionError(f"not refused: expected an error saying '{words}'")
+
+
+def main():
+    qp_dir, summary_path = sys.argv[1], sys.argv[2]
+    Q, b, A, d, coordinates = read(qp_dir)
+    with open(summary_path) as f:
+        program = json.load(f)
+    nodes, rows, constraints = my_rows(Q, A, coordinates)
+    v, multipliers, summary = signorini.solve(Q[rows], b[rows], A[constraints], d[constraints],
+                                              coordinates=coordinates[nodes])
+    assert summary["converged"], summary["message"]
+    assert abs(summary["objective"] - program["objective"]) <= 1e-10 * abs(program["objective"]), \
+        (summary["objective"], program["objective"])
+    assert summary["active_constraints"] == program["active_constraints"], summary
+    assert v.shape == (len(rows),) and multipliers.shape == (len(constraints),)
+    # Compressive multipliers, none on a constraint with a gap: checked on this rank's
+    # constraints whose unknowns are all this rank's (v holds this rank's rows only).
+    assert multipliers.max() <= 1e-12 * max(1.0, -multipliers.min())
+    mine = np.zeros(Q.shape[0], dtype=bool)
+    mine[rows] = True
+    rows_of_A = A[constraints]
+    local = np.array([mine[rows_of_A.indices[rows_of_A.indptr[i]:rows_of_A.indptr[i + 1]]].all()
+                      for i in range(len(constraints))], dtype=bool)
+    v_full = np.zeros(Q.shape[0])
+    v_full[rows] = v
+    slack = (d[constraints] - rows_of_A @ v_full)[local]
+    scale = max(np.abs(d).max(), np.abs(v).max())  # a displacement scale
+    if local.any():
+        assert slack.min() >= -1e-8 * scale, slack.min()
+        assert np.abs(multipliers[local] * slack).max() <= 1e-6 * np.abs(multipliers).max() * scale
+
+    refused(lambda: signorini.solve(Q[rows], b[rows][:-1], A[constraints], d[constraints]), "b must be a vector")
+    refused(lambda: signorini.solve(Q[rows][:, :-1], b[rows], A[constraints], d[constraints]), "columns")
+    refused(lambda: signorini.solve(Q[rows], b[rows], A[constraints], d[constraints],
+                                    coordinates=coordinates[nodes][:-1]), "whole nodes")
+    if signorini.rank() == 0:
+        print(f"python module on {signorini.size()} rank(s): objective {summary['objective']:.15e}, "
+              f"{summary['active_constraints']} active, {summary['krylov_iterations']} CG iterations")
+
+
+if __name__ == "__main__":
+    main()
