@@ -393,6 +393,10 @@ SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostre
   if (comm->getRank() == 0)
     out << "Signorini: QP of " << cl.qp << "/: n = " << n << ", m = " << m << ", " << files.multigrid.blockSize
         << " unknowns per node, " << comm->getSize() << " MPI rank(s); read in " << setupSeconds << " s\n";
+  if (comm->getRank() == 0 && comm->getSize() > 1)
+    out << "  nodes " << (files.repartitioned ? "repartitioned by METIS" : "in file order") << ": "
+        << 100 * files.crossRankCouplings << "% of Q's node couplings between ranks (file order: "
+        << 100 * files.crossRankCouplingsInFileOrder << "%)\n";
   RunSummary summary;
   SolveRecorder record;
   SolveResult result = solveLogged(qp, files.multigrid, *run.solver, out, record, summary.solveSeconds);

@@ -8,6 +8,8 @@
 #include <memory>
 #include <sstream>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <MatrixMarket_Tpetra.hpp>
@@ -19,6 +21,7 @@
 
 #include "core/RootTask.hpp"
 #include "io/QPCells.hpp"
+#include "io/QPNodeDistribution.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/solver/SimplexGrid.hpp"
 
@@ -245,13 +248,43 @@ void detail::writeCells(const DistributedSpace& space, const std::string& direct
                          "P1 cells of the mesh: the node numbers (from 0) of each cell's vertices");
 }
 
-QPFromFiles readQP(const std::string& directory, const RCP<const Comm>& comm) {
+namespace {
+
+// The nodes of `owner` that are this rank's, and their unknowns, node-interlaced.
+std::pair<RCP<const Map>, RCP<const Map>> ownedNodes(const std::vector<int>& owner, int dim, const RCP<const Comm>& comm) {
+  Teuchos::Array<GlobalOrdinal> nodes, dofs;
+  for (std::size_t v = 0; v < owner.size(); ++v)
+    if (owner[v] == comm->getRank()) {
+      nodes.push_back(static_cast<GlobalOrdinal>(v));
+      for (int c = 0; c < dim; ++c) dofs.push_back(static_cast<GlobalOrdinal>(dim * v + c));
+    }
+  return {rcp(new Map(owner.size(), nodes(), 0, comm)), rcp(new Map(dim * owner.size(), dofs(), 0, comm))};
+}
+
+// Q, b and the coordinates moved to the ranks of `nodes` and `dofs`.
+void moveNodes(QPFromFiles& files, const RCP<const Map>& nodes, const RCP<const Map>& dofs) {
+  ContactQP& qp = files.qp;
+  const Import byDof(qp.b->getMap(), dofs);
+  auto Q = rcp(new CrsMatrix(dofs, 0));
+  Q->doImport(*Teuchos::rcp_dynamic_cast<const CrsMatrix>(qp.Q), byDof, Tpetra::INSERT);
+  Q->fillComplete(dofs, dofs);
+  auto b = rcp(new Vector(dofs));
+  b->doImport(*qp.b, byDof, Tpetra::INSERT);
+  auto X = rcp(new MultiVector(nodes, files.multigrid.coordinates->getNumVectors()));
+  X->doImport(*files.multigrid.coordinates, Import(files.multigrid.coordinates->getMap(), nodes), Tpetra::INSERT);
+  qp.Q = Q;
+  qp.b = b;
+  files.multigrid.coordinates = X;
+}
+
+}  // namespace
+
+QPFromFiles readQP(const std::string& directory, const RCP<const Comm>& comm, QPPartition partition) {
   const QPSizes sizes = checkedSizes(directory, *comm);
   const auto file = [&](const char* name) { return directory + "/" + name; };
   // Whole nodes on every rank, an equal share of them; their DOFs contiguous, node-interlaced.
   RCP<const Map> nodeMap = rcp(new Map(sizes.nodes, 0, comm));
-  const RCP<const Map> dofMap =
-      rcp(new Map(sizes.n, sizes.dim * nodeMap->getNodeNumElements(), 0, comm));
+  RCP<const Map> dofMap = rcp(new Map(sizes.n, sizes.dim * nodeMap->getNodeNumElements(), 0, comm));
   RCP<const Map> constraintMap = rcp(new Map(sizes.m, 0, comm));
 
   QPFromFiles files;
@@ -264,6 +297,16 @@ QPFromFiles readQP(const std::string& directory, const RCP<const Comm>& comm) {
                       [&] { return Reader::readSparseFile(file("Q.mtx"), dofMap, noColumnMap, dofMap, dofMap); });
   RCP<const Map> bMap = dofMap;
   qp.b = readOrRefuse(file("b.mtx"), [&] { return Reader::readVectorFile(file("b.mtx"), comm, bMap); });
+  // Then, where METIS' parts pay, the nodes move to them.
+  const detail::NodeDistribution distribution =
+      detail::distributeNodes(*Teuchos::rcp_dynamic_cast<const CrsMatrix>(qp.Q), multigrid.blockSize, partition);
+  files.repartitioned = distribution.repartitioned;
+  files.crossRankCouplings = distribution.chosenCut;
+  files.crossRankCouplingsInFileOrder = distribution.fileOrderCut;
+  if (distribution.repartitioned) {
+    std::tie(nodeMap, dofMap) = ownedNodes(distribution.owner, multigrid.blockSize, comm);
+    moveNodes(files, nodeMap, dofMap);
+  }
   RCP<const Map> noAColumnMap;
   const RCP<const CrsMatrix> evenA = readOrRefuse(file("A.mtx"), [&] {
     return Reader::readSparseFile(file("A.mtx"), constraintMap, noAColumnMap, dofMap, constraintMap);

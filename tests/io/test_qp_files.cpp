@@ -8,7 +8,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numeric>
+#include <random>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -65,6 +69,83 @@ TEST(QPFiles, RoundTripReachesTheSameOptimumOnEveryRankCount) {
     EXPECT_LT(std::abs(a.objective - b.objective), 1e-10 * std::abs(a.objective)) << name;
     EXPECT_LE(std::abs(a.outerIterations - b.outerIterations), 1) << name;
     EXPECT_EQ(a.activeConstraints, b.activeConstraints) << name;
+  }
+}
+
+// The files of `dir` with the nodes renumbered: node v becomes permutation[v] (Q, b, A's
+// columns and the coordinates; d and the constraints' order stay). Rank 0 rewrites them.
+void renumberNodes(const std::string& dir, const std::vector<long long>& permutation, int dim, const Comm& comm) {
+  if (comm.getRank() == 0) {
+    const auto dof = [&](long long i) { return dim * permutation[i / dim] + i % dim; };
+    const auto lines = [](const std::string& path) {
+      std::ifstream in(path);
+      std::vector<std::string> all;
+      for (std::string line; std::getline(in, line);) all.push_back(line);
+      return all;
+    };
+    // Coordinate files: header and size lines, then "row column value" from 1.
+    for (const char* name : {"Q.mtx", "A.mtx"}) {
+      const bool renumberRows = std::string(name) == "Q.mtx";
+      const std::vector<std::string> in = lines(dir + "/" + name);
+      std::ofstream out(dir + "/" + name);
+      std::size_t k = 0;
+      for (; in[k][0] == '%'; ++k) out << in[k] << '\n';
+      out << in[k++] << '\n';
+      for (; k < in.size(); ++k) {
+        std::istringstream entry(in[k]);
+        long long row = 0, column = 0;
+        std::string value;
+        entry >> row >> column >> value;
+        out << (renumberRows ? dof(row - 1) + 1 : row) << ' ' << dof(column - 1) + 1 << ' ' << value << '\n';
+      }
+    }
+    // Array files (column-major): b, one column of n, and the coordinates, dim columns of nodes.
+    const auto permuteArray = [&](const std::string& name, int columns, const auto& newRow) {
+      const std::vector<std::string> in = lines(dir + "/" + name);
+      std::ofstream out(dir + "/" + name);
+      std::size_t k = 0;
+      for (; in[k][0] == '%'; ++k) out << in[k] << '\n';
+      out << in[k++] << '\n';
+      const long long count = static_cast<long long>(in.size() - k) / columns;
+      std::vector<std::string> moved(in.size() - k);
+      for (int c = 0; c < columns; ++c)
+        for (long long i = 0; i < count; ++i) moved[c * count + newRow(i)] = in[k + c * count + i];
+      for (const std::string& line : moved) out << line << '\n';
+    };
+    permuteArray("b.mtx", 1, dof);
+    permuteArray("coords.mtx", dim, [&](long long node) { return permutation[node]; });
+  }
+  comm.barrier();
+}
+
+// A QP whose nodes are numbered without regard to position (as a code that numbers them cell
+// by cell does) is read onto METIS' parts, which cut far fewer node couplings; the box's own
+// numbering, whose equal shares are slabs, is kept. The optimum is the same either way.
+TEST(QPFiles, ScatteredNodesAreRepartitionedByMetis) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string dir = scratch("scattered", *comm);
+  const AssembledProblem direct = written("M", dir);
+  const QPFromFiles inOrder = readQP(dir, comm);
+  EXPECT_FALSE(inOrder.repartitioned);
+  const int dim = direct.multigrid.blockSize;
+  std::vector<long long> permutation(direct.qp.b->getGlobalLength() / dim);
+  std::iota(permutation.begin(), permutation.end(), 0LL);
+  std::shuffle(permutation.begin(), permutation.end(), std::mt19937(7));
+  renumberNodes(dir, permutation, dim, *comm);
+  const QPFromFiles asWritten = readQP(dir, comm, QPPartition::AsWritten), automatic = readQP(dir, comm);
+  EXPECT_FALSE(asWritten.repartitioned);
+  EXPECT_EQ(automatic.repartitioned, comm->getSize() > 1);
+  if (comm->getSize() > 1) {
+    EXPECT_GT(automatic.crossRankCouplingsInFileOrder, 0.4);
+    EXPECT_LT(automatic.crossRankCouplings, 0.25 * automatic.crossRankCouplingsInFileOrder);
+  }
+  EXPECT_FALSE(automatic.multigrid.nearNullspace(automatic.qp).is_null());
+  const SolveResult a = InteriorPointSolver().solve(direct.qp, direct.multigrid);
+  for (const QPFromFiles* files : {&asWritten, &automatic}) {
+    const SolveResult b = InteriorPointSolver().solve(files->qp, files->multigrid);
+    ASSERT_TRUE(a.converged() && b.converged()) << b.message;
+    EXPECT_LT(std::abs(a.objective - b.objective), 1e-10 * std::abs(a.objective));
+    EXPECT_EQ(a.activeConstraints, b.activeConstraints);
   }
 }
 
