@@ -36,16 +36,9 @@ RCP<const Map> contiguousMap(std::size_t local) {
 
 // This rank's rows of a scipy sparse matrix (columns global) on `rows`, completed with the
 // domain `columns`.
-RCP<CrsMatrix> rowsOf(const py::object& matrix, const RCP<const Map>& rows, const RCP<const Map>& columns,
-                      const std::string& name) {
+RCP<CrsMatrix> rowsOf(const py::object& matrix, const RCP<const Map>& rows, const RCP<const Map>& columns) {
   const py::object csr = matrix.attr("tocsr")();
   const auto shape = csr.attr("shape").cast<std::pair<long long, long long>>();
-  if (shape.first != static_cast<long long>(rows->getNodeNumElements()))
-    throw InputError(name + " has " + std::to_string(shape.first) + " rows on this rank, expected " +
-                     std::to_string(rows->getNodeNumElements()));
-  if (shape.second != static_cast<long long>(columns->getGlobalNumElements()))
-    throw InputError(name + " has " + std::to_string(shape.second) + " columns, expected " +
-                     std::to_string(columns->getGlobalNumElements()) + " (the unknowns of all ranks)");
   const auto start = csr.attr("indptr").cast<IndexArray>(), index = csr.attr("indices").cast<IndexArray>();
   const auto value = csr.attr("data").cast<DoubleArray>();
   Teuchos::Array<std::size_t> entries(shape.first);
@@ -62,10 +55,7 @@ RCP<CrsMatrix> rowsOf(const py::object& matrix, const RCP<const Map>& rows, cons
   return matrixOut;
 }
 
-RCP<Vector> vectorOf(const DoubleArray& values, const RCP<const Map>& map, const std::string& name) {
-  if (values.ndim() != 1 || values.shape(0) != static_cast<py::ssize_t>(map->getNodeNumElements()))
-    throw InputError(name + " must be a vector of " + std::to_string(map->getNodeNumElements()) +
-                     " entries on this rank (its rows of the QP)");
+RCP<Vector> vectorOf(const DoubleArray& values, const RCP<const Map>& map) {
   auto v = rcp(new Vector(map));
   std::copy(values.data(), values.data() + values.shape(0), v->getDataNonConst().getRawPtr());
   return v;
@@ -76,22 +66,54 @@ py::array_t<double> arrayOf(const Vector& v) {
   return py::array_t<double>(static_cast<py::ssize_t>(data.size()), data.getRawPtr());
 }
 
-// Node coordinates (this rank's nodes, one row each) and, with `cells`, the SimplexGrid of
-// those P1 cells (global node numbers; the cells this rank's nodes belong to).
-MultigridInput multigridOf(const py::object& coordinates, const py::object& cells, const Map& unknowns) {
-  MultigridInput multigrid;
-  if (coordinates.is_none()) {
-    if (!cells.is_none()) throw InputError("cells need the node coordinates");
-    return multigrid;
-  }
+std::pair<long long, long long> shapeOf(const py::object& matrix) {
+  return matrix.attr("shape").cast<std::pair<long long, long long>>();
+}
+
+// What does not fit in this rank's input, or "" (n: the unknowns of all ranks).
+std::string inputProblem(const py::object& Q, const DoubleArray& b, const py::object& A, const DoubleArray& d,
+                         const py::object& coordinates, const py::object& cells, long long n) {
+  const auto [qRows, qColumns] = shapeOf(Q);
+  const auto [aRows, aColumns] = shapeOf(A);
+  const auto count = std::to_string(qRows);
+  if (qColumns != n) return "Q has " + std::to_string(qColumns) + " columns, expected " + std::to_string(n) +
+                            " (the rows of all ranks: each passes its rows, all columns)";
+  if (b.ndim() != 1 || b.shape(0) != qRows) return "b must be a vector of " + count + " entries on this rank (Q's rows)";
+  if (aColumns != n) return "A has " + std::to_string(aColumns) + " columns, expected Q's " + std::to_string(n);
+  if (d.ndim() != 1 || d.shape(0) != aRows)
+    return "d must be a vector of " + std::to_string(aRows) + " entries on this rank (A's rows)";
+  if (coordinates.is_none()) return cells.is_none() ? "" : "cells need the node coordinates";
   const auto x = coordinates.cast<DoubleArray>();
   if (x.ndim() != 2 || (x.shape(1) != 2 && x.shape(1) != 3))
-    throw InputError("coordinates must be an array of shape (nodes, 2) or (nodes, 3)");
+    return "coordinates must be an array of shape (nodes, 2) or (nodes, 3)";
+  const long long dim = x.shape(1);
+  if (x.shape(0) * dim != qRows)
+    return "coordinates give " + std::to_string(x.shape(0)) + " nodes on this rank, but Q has " + count +
+           " rows here: pass whole nodes, " + std::to_string(dim) + " unknowns each, interlaced";
+  if (cells.is_none()) return "";
+  const auto c = cells.cast<IndexArray>();
+  if (c.ndim() != 2 || c.shape(1) != dim + 1)
+    return "cells must be an array of shape (cells, " + std::to_string(dim + 1) + ")";
+  for (py::ssize_t k = 0; k < c.size(); ++k)
+    if (c.data()[k] < 0 || c.data()[k] >= n / dim)
+      return "cells name node " + std::to_string(c.data()[k]) + ", outside 0 .. " + std::to_string(n / dim - 1);
+  return "";
+}
+
+// Every rank stops if one's input does not fit, none waits in a collective call for it.
+void agreeOnInput(const Comm& comm, const std::string& problem) {
+  int bad = problem.empty() ? 0 : 1, anyBad = 0;
+  Teuchos::reduceAll(comm, Teuchos::REDUCE_MAX, bad, Teuchos::outArg(anyBad));
+  if (anyBad) throw InputError(problem.empty() ? "the input of another rank does not fit (its error says what)" : problem);
+}
+
+// Node coordinates (this rank's nodes, one row each) and, with `cells`, the SimplexGrid of
+// those P1 cells (global node numbers; the cells this rank's nodes belong to).
+MultigridInput multigridOf(const py::object& coordinates, const py::object& cells) {
+  MultigridInput multigrid;
+  if (coordinates.is_none()) return multigrid;
+  const auto x = coordinates.cast<DoubleArray>();
   const int dim = static_cast<int>(x.shape(1));
-  if (static_cast<std::size_t>(x.shape(0) * dim) != unknowns.getNodeNumElements())
-    throw InputError("coordinates give " + std::to_string(x.shape(0)) + " nodes on this rank, but Q has " +
-                     std::to_string(unknowns.getNodeNumElements()) + " rows here: pass whole nodes, " +
-                     std::to_string(dim) + " unknowns each, interlaced");
   multigrid.blockSize = dim;
   const RCP<const Map> nodes = contiguousMap(x.shape(0));
   auto X = rcp(new MultiVector(nodes, dim));
@@ -102,14 +124,10 @@ MultigridInput multigridOf(const py::object& coordinates, const py::object& cell
   multigrid.coordinates = X;
   if (cells.is_none()) return multigrid;
   const auto cellArray = cells.cast<IndexArray>();
-  if (cellArray.ndim() != 2 || cellArray.shape(1) != dim + 1)
-    throw InputError("cells must be an array of shape (cells, " + std::to_string(dim + 1) + ")");
   std::vector<long long> cellList(cellArray.data(), cellArray.data() + cellArray.size());
   std::vector<long long> vertexIds = cellList;
   std::sort(vertexIds.begin(), vertexIds.end());
   vertexIds.erase(std::unique(vertexIds.begin(), vertexIds.end()), vertexIds.end());
-  if (!vertexIds.empty() && (vertexIds.front() < 0 || vertexIds.back() >= static_cast<long long>(nodes->getGlobalNumElements())))
-    throw InputError("cells name nodes outside 0 .. " + std::to_string(nodes->getGlobalNumElements() - 1));
   // The coordinates of the cells' vertices, wherever their nodes live.
   std::vector<GlobalOrdinal> ids(vertexIds.begin(), vertexIds.end());
   const RCP<const Map> cellNodes = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
@@ -166,14 +184,15 @@ py::dict summaryOf(const SolveResult& r) {
 py::tuple solve(const py::object& Q, const DoubleArray& b, const py::object& A, const DoubleArray& d,
                 const py::object& coordinates, const py::object& cells, const py::dict& parameters) {
   // This rank's rows: Q's and A's.
-  const RCP<const Map> unknowns = contiguousMap(Q.attr("shape").cast<std::pair<long long, long long>>().first);
-  const RCP<const Map> constraints = contiguousMap(A.attr("shape").cast<std::pair<long long, long long>>().first);
+  const RCP<const Map> unknowns = contiguousMap(shapeOf(Q).first);
+  const RCP<const Map> constraints = contiguousMap(shapeOf(A).first);
+  agreeOnInput(*world(), inputProblem(Q, b, A, d, coordinates, cells, unknowns->getGlobalNumElements()));
   ContactQP qp;
-  qp.Q = rowsOf(Q, unknowns, unknowns, "Q");
-  qp.b = vectorOf(b, unknowns, "b");
-  qp.A = rowsOf(A, constraints, unknowns, "A");
-  qp.d = vectorOf(d, constraints, "d");
-  const MultigridInput multigrid = multigridOf(coordinates, cells, *unknowns);
+  qp.Q = rowsOf(Q, unknowns, unknowns);
+  qp.b = vectorOf(b, unknowns);
+  qp.A = rowsOf(A, constraints, unknowns);
+  qp.d = vectorOf(d, constraints);
+  const MultigridInput multigrid = multigridOf(coordinates, cells);
   const SolveResult result = InteriorPointSolver(parameterList(parameters, "Solver")).solve(qp, multigrid);
   return py::make_tuple(arrayOf(*result.v), arrayOf(*result.lambda), summaryOf(result));
 }

@@ -3,7 +3,7 @@
 (signorini --export-qp), read with scipy and solved through `signorini.solve` with each rank
 passing its rows, reaches the program's optimum and active set; the multipliers are
 compressive and complementary; inputs of the wrong size or nodes split across ranks are
-refused with a ValueError naming what to fix. Paper problem H (P2) given its P1 cells gets
+refused with a ValueError naming what to fix, on every rank when one rank's input is wrong. Paper problem H (P2) given its P1 cells gets
 the geometric P2 -> P1 step: the program's optimum in at most 1.3 times its CG iterations.
 
     mpiexec -np N python3 test_python_module.py J_QP_DIR J_SUMMARY_JSON H_QP_DIR H_SUMMARY_JSON
@@ -93,6 +93,11 @@ def main():
     refused(lambda: signorini.solve(Q[rows][:, :-1], b[rows], A[constraints], d[constraints]), "columns")
     refused(lambda: signorini.solve(Q[rows], b[rows], A[constraints], d[constraints],
                                     coordinates=coordinates[nodes][:-1]), "whole nodes")
+    if signorini.size() > 1:  # one rank's bad input stops every rank, none hangs
+        last = signorini.rank() == signorini.size() - 1
+        b_mine = b[rows][:-1] if last else b[rows]
+        refused(lambda: signorini.solve(Q[rows], b_mine, A[constraints], d[constraints]),
+                "b must be a vector" if last else "another rank")
     p2, p2_program = p2_with_cells(sys.argv[3], sys.argv[4])
     if signorini.rank() == 0:
         print(f"python module on {signorini.size()} rank(s): J objective {summary['objective']:.15e}, "
