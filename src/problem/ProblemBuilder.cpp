@@ -138,8 +138,14 @@ void assembleQP(AssembledProblem& result, const std::shared_ptr<const Distribute
 
 }  // namespace
 
+void BuildRecorder::onPhase(const std::string& phase, double seconds) {
+  (phase == "assembly" ? assemblySeconds : setupSeconds) = seconds;
+}
+
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
-                              const std::string& baseDirectory, StiffnessNeed stiffness) {
+                              const std::string& baseDirectory, StiffnessNeed stiffness, BuildObserver* observer) {
+  BuildObserver none;
+  BuildObserver& report = observer ? *observer : none;
   AssembledProblem result;
   std::shared_ptr<const DistributedSpace> space;
   std::shared_ptr<const GeometricGrid> refinedGrid;  // the levels of a refined Gmsh mesh
@@ -156,9 +162,9 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     result.space = space;
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);
-    result.setupPeakMiBPerRank.resize(comm->getSize());
-    Teuchos::gatherAll(*comm, 1, &growth, comm->getSize(), result.setupPeakMiBPerRank.data());
-    result.serialMeshPeakMiB = result.setupPeakMiBPerRank[0];
+    std::vector<double> growthPerRank(comm->getSize());
+    Teuchos::gatherAll(*comm, 1, &growth, comm->getSize(), growthPerRank.data());
+    report.onSetupMemory(growthPerRank);
   }
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: assembly"));
@@ -167,8 +173,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     assembleQP(result, space, std::move(refinedGrid));
     assembly.stop();
   }
-  result.setupSeconds = maxOverRanks(*comm, setup.totalElapsedTime());
-  result.assemblySeconds = maxOverRanks(*comm, assembly.totalElapsedTime());
+  report.onPhase("mesh and space", maxOverRanks(*comm, setup.totalElapsedTime()));
+  report.onPhase("assembly", maxOverRanks(*comm, assembly.totalElapsedTime()));
   return result;
 }
 

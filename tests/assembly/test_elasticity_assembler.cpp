@@ -13,6 +13,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "assembly/ElasticityAssembler.hpp"
+#include "core/Collectives.hpp"
 #include "fe/SimplexQuadrature.hpp"
 #include "signorini/core/Error.hpp"
 #include "support/TestProblems.hpp"
@@ -96,6 +97,19 @@ TEST(ElasticityAssembler, StiffnessNeedAssemblesAnAutomaticOperatorOnly) {
   EXPECT_EQ(p2.get<std::string>("stiffness: operator"), "auto");  // the caller's list is not edited
   p2.set("stiffness: operator", "matrix-free");
   EXPECT_FALSE(assembled(buildProblem(p2, comm, ".", StiffnessNeed::Assembled)));
+}
+
+// The build reports its phases' times (the slowest rank's, the same on every rank) and every
+// rank's setup memory to its observer.
+TEST(ElasticityAssembler, BuildObserverReceivesThePhasesAndTheMemory) {
+  const auto comm = Tpetra::getDefaultComm();
+  BuildRecorder built;
+  buildProblem(boxProblem(3, 6, 1), comm, ".", StiffnessNeed::AsConfigured, &built);
+  EXPECT_GT(built.setupSeconds, 0.0);
+  EXPECT_GT(built.assemblySeconds, 0.0);
+  EXPECT_DOUBLE_EQ(maxOverRanks(*comm, built.assemblySeconds), minOverRanks(*comm, built.assemblySeconds));
+  ASSERT_EQ(built.setupPeakMiB.size(), static_cast<std::size_t>(comm->getSize()));
+  for (double growth : built.setupPeakMiB) EXPECT_GE(growth, 0.0);
 }
 
 TEST(ElasticityAssembler, RigidBodyModesAreInTheKernelOfTheFreeStiffness) {

@@ -16,6 +16,28 @@
 
 namespace signorini {
 
+/// Receives what building a problem measured, on every rank (the same figures on all); the
+/// default methods do nothing.
+class BuildObserver {
+ public:
+  virtual ~BuildObserver() = default;
+  /// A phase ("mesh and space", "assembly") took this long on the slowest rank.
+  virtual void onPhase(const std::string& phase, double seconds) { (void)phase, (void)seconds; }
+  /// Each rank's peak resident set grew by this much over mesh and space (rank order; MiB):
+  /// rank 0's includes the serial phase's transient buffers (METIS, hash tables) where the
+  /// mesh is read and partitioned there.
+  virtual void onSetupMemory(const std::vector<double>& peakGrowthMiBPerRank) { (void)peakGrowthMiBPerRank; }
+};
+
+/// A BuildObserver that keeps the figures.
+class BuildRecorder : public BuildObserver {
+ public:
+  void onPhase(const std::string& phase, double seconds) override;
+  void onSetupMemory(const std::vector<double>& peakGrowthMiBPerRank) override { setupPeakMiB = peakGrowthMiBPerRank; }
+  double setupSeconds = 0, assemblySeconds = 0;  ///< max over ranks
+  std::vector<double> setupPeakMiB;              ///< per rank
+};
+
 /// A distributed problem ready to solve: the QP and what output needs (the definition and
 /// the space). Move-only; shares the space with a matrix-free Q (which applies Q on it, so a
 /// copy of the QP stays valid without the problem) and the QP's Tpetra objects.
@@ -30,13 +52,6 @@ struct AssembledProblem {
   std::shared_ptr<const FiniteElementSpace> space;
   ContactQP qp;
   MultigridInput multigrid;  ///< the mesh's coordinates and, where it has them, its grids
-  double setupSeconds = 0, assemblySeconds = 0;  ///< max over ranks
-  /// Rank 0's peak resident set during mesh and space, above its size before them (METIS'
-  /// and the hash tables' transient buffers included): the serial phase's real cost when it
-  /// is the process' largest allocation so far, as in the application.
-  double serialMeshPeakMiB = 0;
-  /// The same growth of the peak resident set over mesh and space, on every rank (rank order).
-  std::vector<double> setupPeakMiBPerRank;
 };
 
 /// Whether the caller needs Q as a matrix: `Assembled` (to export it, say) resolves a
@@ -44,9 +59,10 @@ struct AssembledProblem {
 enum class StiffnessNeed { AsConfigured, Assembled };
 
 /// Builds the problem a "Problem" list describes; `baseDirectory` resolves a relative
-/// "mesh: file". Collective; throws InputError naming the parameter or file at fault.
+/// "mesh: file"; the observer, if any, receives the phases' times and memory. Collective;
+/// throws InputError naming the parameter or file at fault.
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                               const std::string& baseDirectory = ".",
-                              StiffnessNeed stiffness = StiffnessNeed::AsConfigured);
+                              StiffnessNeed stiffness = StiffnessNeed::AsConfigured, BuildObserver* observer = nullptr);
 
 }  // namespace signorini
