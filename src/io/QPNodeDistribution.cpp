@@ -95,13 +95,14 @@ NodeDistribution distributeNodes(const CrsMatrix& Q, int dim, QPPartition partit
   const Comm& comm = *Q.getComm();
   const int ranks = comm.getSize();
   const long long numNodes = static_cast<long long>(Q.getGlobalNumRows()) / dim;
-  // The equal shares of Tpetra's contiguous map of numNodes nodes: the first numNodes % ranks
-  // ranks one more.
+  // The files' order as Q is read: each rank a contiguous block of nodes, in rank order.
   NodeDistribution result;
   result.owner.resize(numNodes);
-  const long long share = numNodes / ranks, extra = numNodes % ranks;
-  for (long long v = 0; v < numNodes; ++v)
-    result.owner[v] = static_cast<int>(v < extra * (share + 1) ? v / (share + 1) : extra + (v - extra * (share + 1)) / std::max(share, 1LL));
+  const int localNodes = static_cast<int>(Q.getRowMap()->getNodeNumElements() / dim);
+  std::vector<int> nodesPerRank(ranks);
+  Teuchos::gatherAll(comm, 1, &localNodes, ranks, nodesPerRank.data());
+  for (int rank = 0, first = 0; rank < ranks; first += nodesPerRank[rank++])
+    std::fill(result.owner.begin() + first, result.owner.begin() + first + nodesPerRank[rank], rank);
   if (ranks == 1 || partition == QPPartition::AsWritten) return result;
   const std::vector<Edge> edges = gatheredEdges(comm, localEdges(Q, dim));
   double cuts[3] = {0, 0, 0};  // equal shares, METIS, METIS chosen

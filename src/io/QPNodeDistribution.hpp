@@ -18,7 +18,8 @@ struct NodeDistribution {
   double chosenCut = 0;            // the same for `owner`
 };
 
-// Q on equal node shares in file order, dim unknowns per node. Collective; rank 0 gathers
+// Q's rows in the files' order, a contiguous block of whole nodes per rank in rank order
+// (readQP's equal shares), dim unknowns per node. Collective; rank 0 gathers
 // the node graph (its couplings, not its values) and partitions it.
 NodeDistribution distributeNodes(const CrsMatrix& Q, int dim, QPPartition partition);
 

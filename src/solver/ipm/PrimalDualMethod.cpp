@@ -52,8 +52,8 @@ class PrimalDualMethod {
   double meritSlope() const;
   bool backtrackOnMerit(double& alpha);
   void takeStep(int k, double alpha, bool move = true);
-  void report(const KKTMeasures& kkt, IterationObserver& observer, Teuchos::Time& timer);
-  IterationObserver* observer_ = nullptr;  // run()'s, for the reports made deeper down
+  void report(const KKTMeasures& kkt, Teuchos::Time& timer);
+  IterationObserver* observer_ = nullptr;  // run()'s, which every report goes to
 
   const ContactQP& qp_;
   const MultigridInput& multigrid_;
@@ -143,7 +143,7 @@ SolveResult PrimalDualMethod::run(IterationObserver& observer, Teuchos::Time& ti
   start();
   for (int k = 0;; ++k) {
     const KKTMeasures kkt = evaluate(k);
-    if (havePending_) report(kkt, observer, timer);
+    if (havePending_) report(kkt, timer);
     result_.outerIterations = k;
     if (!continues(k, kkt)) break;
     if (finishOnActiveSet(k, kkt)) continue;  // the finished point is evaluated and tested as any other
@@ -390,11 +390,11 @@ void PrimalDualMethod::takeStep(int k, double alpha, bool move) {
   observer_->onMainIteration(k + 1, 1);
 }
 
-void PrimalDualMethod::report(const KKTMeasures& kkt, IterationObserver& observer, Teuchos::Time& timer) {
+void PrimalDualMethod::report(const KKTMeasures& kkt, Teuchos::Time& timer) {
   pending_.objective = objective(qp_, *v_, Qv_);
   pending_.kkt = kkt;
   pending_.seconds = timer.totalElapsedTime(true);
-  observer.onNewtonStep(pending_);
+  observer_->onNewtonStep(pending_);
 }
 
 }  // namespace
