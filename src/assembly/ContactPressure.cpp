@@ -167,7 +167,7 @@ ContactPressure::ContactPressure(const FiniteElementSpace& feSpace, const Proble
     : space_(feSpace),
       multipliers_(std::make_shared<MultiplierBasis>(distributedSpace(feSpace).space().basis(),
                                                      problem.contactFormulation)),
-      weightedGap_(problem.contactFormulation == ContactFormulation::weightedGap),
+      weightedGap_(isWeightedGap(problem.contactFormulation)),
       constraintMap_(constraintMap) {
   const DistributedSpace& ds = distributedSpace(feSpace);
   const LagrangeSpace& space = ds.space();
@@ -201,7 +201,9 @@ ContactPressure::ContactPressure(const FiniteElementSpace& feSpace, const Proble
 
 RCP<Vector> ContactPressure::nodalValues(const Vector& coefficients) const {
   auto values = rcp(new Vector(constraintMap_));
-  if (!multipliers_->transformed()) {
+  // The dual basis's coefficients are the pressure's local means, shown as its nodal values
+  // (the nodal values of sum_a c_a psi_a oscillate, psi_a being negative near other nodes).
+  if (!multipliers_->transformed() || multipliers_->biorthogonal()) {
     values->assign(coefficients);
     return values;
   }

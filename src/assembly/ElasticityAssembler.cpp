@@ -177,9 +177,10 @@ struct WeightedGapGraph {
   RCP<FEGraph> graph;
   RCP<const Map> overlapRows;
 };
-WeightedGapGraph weightedGapGraph(const DistributedSpace& ds, const std::vector<std::pair<long long, int>>& facets,
-                              const std::vector<long long>& constraintOf, const std::vector<int>& components,
-                              const RCP<const Map>& constraintMap) {
+WeightedGapGraph weightedGapGraph(const DistributedSpace& ds, const ContactMultiplierBasis& psi,
+                                  const std::vector<std::pair<long long, int>>& facets,
+                                  const std::vector<long long>& constraintOf, const std::vector<int>& components,
+                                  const RCP<const Map>& constraintMap) {
   const LagrangeSpace& space = ds.space();
   const int dim = ds.dim();
   auto owned = constraintMap->getNodeElementList();
@@ -193,7 +194,8 @@ WeightedGapGraph weightedGapGraph(const DistributedSpace& ds, const std::vector<
       if (!constraintMap->isNodeGlobalElement(row)) ghosts.push_back(row);
       auto& cols = columns[row];
       for (int b : space.basis().facetNodes(facet))
-        for (int c : components) cols.push_back(dim * ds.globalNode(nodes[b]) + c);
+        if (psi.couples(facet, a, b))
+          for (int c : components) cols.push_back(dim * ds.globalNode(nodes[b]) + c);
     }
   }
   std::sort(ghosts.begin(), ghosts.end());
@@ -235,7 +237,7 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
   for (int c = 0; c < dim; ++c)
     if (problem.obstacleDirection[c] != 0.0) components.push_back(c);
 
-  const WeightedGapGraph pattern = weightedGapGraph(ds, facets, constraintOf, components, constraintMap);
+  const WeightedGapGraph pattern = weightedGapGraph(ds, psi, facets, constraintOf, components, constraintMap);
   auto A = rcp(new FEMatrix(pattern.graph));
   Vector dOverlap(pattern.overlapRows);
   std::vector<double> coords((dim + 1) * dim), psiValues, gapValues;
@@ -259,6 +261,7 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
       }
       dOverlap.sumIntoGlobalValue(row, gap);
       for (int b : facetNodes) {
+        if (!psi.couples(facet, a, b)) continue;
         double weight = 0;  // integral of psi_a N_b
         for (int q = 0; q < rule.size(); ++q) weight += rule.weights[q] * psiValues[q] * rule.phi[q * npc + b];
         for (int c : components) {
@@ -312,7 +315,7 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
                                const RCP<const Map>& constraintMap) {
   const LagrangeSpace& space = ds.space();
   const int dim = ds.dim(), npc = space.nodesPerCell();
-  const bool weighted = problem.contactFormulation == ContactFormulation::weightedGap;
+  const bool weighted = isWeightedGap(problem.contactFormulation);
   const ContactMultiplierBasis psi(space.basis(), problem.contactFormulation);
   auto weights = rcp(new Vector(constraintMap));
   if (problem.contactBoundary.empty()) return weights;
@@ -514,7 +517,7 @@ ContactConstraints contactConstraints(const DistributedSpace& ds, const ProblemD
   for (std::size_t k = 0; k < ownedConstraints.size(); ++k) ownedConstraints[k] = contact.first + k;
   auto constraintMap = rcp(new Map(contact.numGlobal, Teuchos::ArrayView<const GlobalOrdinal>(ownedConstraints),
                                    0, ds.comm()));
-  return problem.contactFormulation == ContactFormulation::weightedGap
+  return isWeightedGap(problem.contactFormulation)
              ? weightedGapConstraints(ds, problem, constraintMap)
              : nodalConstraints(ds, problem, contact, constraintMap);
 }

@@ -51,6 +51,29 @@ std::vector<BoundaryField> boundaryFields(const ParameterList& problem, const st
   return fields;
 }
 
+void addContactParameters(ParameterList& contact) {
+  contact.set("boundary", "", "Name of the contact boundary; empty: no contact");
+  contact.set("obstacle: direction", Array<double>(),
+              "Vector from the obstacle into the body (normalised); empty: the last axis, "
+              "(0,1) in 2D and (0,0,1) in 3D");
+  contact.set("gap: type", "constant",
+              "\"constant\": gap: value; \"paraboloid\": gap: value + |x - center|^2 / (2 radius) "
+              "(rigid cylinder or sphere); \"expression\": gap: expression",
+              choices({"constant", "paraboloid", "expression"}));
+  contact.set("gap: value", 0.0, "Constant gap, or the paraboloid's gap at its center");
+  contact.set("gap: center", Array<double>(), "Center of the paraboloid");
+  contact.set("gap: radius", 1.0, "Radius of curvature of the paraboloid", range(1e-300, 1e300));
+  contact.set("gap: expression", "0", "Gap as an expression of x, y, z");
+  contact.set("formulation", "nodal",
+              "\"nodal\": -n.u <= g at every node of the contact boundary (the paper's constraints); "
+              "\"weighted gap\": the integral of psi_j (g + n.u) >= 0 for every node j, psi_j its shape "
+              "function (P2 triangles: a transformed basis with positive integrals); the multipliers are "
+              "the pressure's coefficients; \"dual mortar\": the same with the dual (biorthogonal) basis "
+              "psi_j, so that each constraint holds its own node and the multipliers are the pressure's "
+              "nodal values (local means, never negative)",
+              choices({"nodal", "weighted gap", "dual mortar"}));
+}
+
 }  // namespace
 
 ParameterList validProblemParameters() {
@@ -112,25 +135,7 @@ ParameterList validProblemParameters() {
   for (const char* axis : kAxes)
     load.set(std::string("traction: ") + axis, "0", "Surface traction component (expression)");
 
-  ParameterList& contact = p.sublist("Contact", false, "Frictionless contact with a rigid obstacle");
-  contact.set("boundary", "", "Name of the contact boundary; empty: no contact");
-  contact.set("obstacle: direction", Array<double>(),
-              "Vector from the obstacle into the body (normalised); empty: the last axis, "
-              "(0,1) in 2D and (0,0,1) in 3D");
-  contact.set("gap: type", "constant",
-              "\"constant\": gap: value; \"paraboloid\": gap: value + |x - center|^2 / (2 radius) "
-              "(rigid cylinder or sphere); \"expression\": gap: expression",
-              choices({"constant", "paraboloid", "expression"}));
-  contact.set("gap: value", 0.0, "Constant gap, or the paraboloid's gap at its center");
-  contact.set("gap: center", Array<double>(), "Center of the paraboloid");
-  contact.set("gap: radius", 1.0, "Radius of curvature of the paraboloid", range(1e-300, 1e300));
-  contact.set("gap: expression", "0", "Gap as an expression of x, y, z");
-  contact.set("formulation", "nodal",
-              "\"nodal\": -n.u <= g at every node of the contact boundary (the paper's constraints); "
-              "\"weighted gap\": the integral of psi_j (g + n.u) >= 0 for every node j, psi_j its shape "
-              "function (P2 triangles: a transformed basis with positive integrals); the multipliers are "
-              "the pressure's coefficients",
-              choices({"nodal", "weighted gap"}));
+  addContactParameters(p.sublist("Contact", false, "Frictionless contact with a rigid obstacle"));
   return p;
 }
 
@@ -190,9 +195,10 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
     text = contact.get<std::string>("gap: expression");
   }
   def.gap.emplace(text, "Problem/Contact/gap");
-  def.contactFormulation = contact.get<std::string>("formulation") == "weighted gap"
-                               ? ContactFormulation::weightedGap
-                               : ContactFormulation::nodal;
+  const std::string formulation = contact.get<std::string>("formulation");
+  def.contactFormulation = formulation == "weighted gap"  ? ContactFormulation::weightedGap
+                           : formulation == "dual mortar" ? ContactFormulation::dualMortar
+                                                          : ContactFormulation::nodal;
 }
 
 }  // namespace

@@ -243,14 +243,15 @@ TEST(ElasticityAssembler, ContactRowsAreMinusTheObstacleDirection) {
 // sum to the integral of f, and for f = 1 each row is positive (its weight), P2 vertices of
 // triangles included.
 TEST(ElasticityAssembler, WeightedGapRowsIntegrateAgainstTheVertexHats) {
+  for (const std::string formulation : {"weighted gap", "dual mortar"})
   for (int dim : {2, 3})
     for (int degree : {1, 2, 3}) {
-      const std::string what = "dim " + std::to_string(dim) + " P" + std::to_string(degree);
+      const std::string what = formulation + ", dim " + std::to_string(dim) + " P" + std::to_string(degree);
       const int cells = dim == 2 ? 5 : 3;
       Teuchos::ParameterList problem = signorini::testing::boxProblem(dim, cells, degree);
       problem.sublist("Contact").set("boundary", dim == 2 ? "ymin" : "zmin");
       problem.sublist("Contact").set("gap: value", 0.25);
-      problem.sublist("Contact").set("formulation", "weighted gap");
+      problem.sublist("Contact").set("formulation", formulation);
       AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
       const ContactQP& qp = p.qp;
       const MultigridInput& mg = p.multigrid;
@@ -282,6 +283,50 @@ TEST(ElasticityAssembler, WeightedGapRowsIntegrateAgainstTheVertexHats) {
       setField(true);
       qp.A->apply(u, rows);
       EXPECT_NEAR(rows.meanValue() * rows.getGlobalLength(), dim == 2 ? 1.5 : 2.5, 1e-12) << what;
+    }
+}
+
+// The dual mortar basis is biorthogonal to the (transformed) displacement basis: row j holds
+// contact node j's displacement alone (an edge node of a P2 triangle with the edge's two
+// vertices: its transformed displacement), weighted by w_j, the integral of psi_j. For
+// u = -n_o f with f linear, whose transformed coefficients are its nodal values, row j is
+// w_j f(x_j): w_j times the nodal constraint's row, numbered alike.
+TEST(ElasticityAssembler, DualMortarRowsAreWeightedNodalRows) {
+  for (int dim : {2, 3})
+    for (int degree : {1, 2, 3}) {
+      const std::string what = "dim " + std::to_string(dim) + " P" + std::to_string(degree);
+      Teuchos::ParameterList problem = signorini::testing::boxProblem(dim, dim == 2 ? 5 : 3, degree);
+      problem.sublist("Contact").set("boundary", dim == 2 ? "ymin" : "zmin");
+      problem.sublist("Contact").set("formulation", "dual mortar");
+      AssembledProblem dual = buildProblem(problem, Tpetra::getDefaultComm());
+      problem.sublist("Contact").set("formulation", "nodal");
+      AssembledProblem nodal = buildProblem(problem, Tpetra::getDefaultComm());
+      const std::size_t nodesPerRow = dim == 3 && degree == 2 ? 3 : 1;
+      EXPECT_EQ(dual.qp.A->getGlobalMaxNumRowEntries(), nodesPerRow) << what;
+
+      const int axis = dim - 1;
+      Vector u(dual.qp.A->getDomainMap()), weights(dual.qp.A->getRangeMap()), rows(weights.getMap()),
+          nodalRows(weights.getMap());
+      auto x = dual.multigrid.coordinates;
+      const auto setField = [&](bool linear) {
+        auto data = u.getDataNonConst();
+        for (std::size_t node = 0; node < x->getLocalLength(); ++node) {
+          const double f = linear ? 1.0 + x->getData(0)[node] + (dim == 3 ? 2.0 * x->getData(1)[node] : 0.0) : 1.0;
+          for (int c = 0; c < dim; ++c) data[dim * node + c] = c == axis ? -f : 0.0;
+        }
+      };
+      setField(false);
+      dual.qp.A->apply(u, weights);
+      EXPECT_GT(minOverRanks(*u.getMap()->getComm(), [&] {
+                  double smallest = std::numeric_limits<double>::infinity();
+                  for (double w : weights.getData()) smallest = std::min(smallest, w);
+                  return smallest;
+                }()), 0.0) << what;
+      setField(true);
+      dual.qp.A->apply(u, rows);
+      nodal.qp.A->apply(u, nodalRows);
+      rows.elementWiseMultiply(-1.0, weights, nodalRows, 1.0);
+      EXPECT_LT(rows.normInf(), 1e-13) << what;
     }
 }
 

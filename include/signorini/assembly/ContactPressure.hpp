@@ -12,7 +12,9 @@
 /// functions integrate to zero).
 /// With weighted gaps (ContactFormulation::weightedGap) the multipliers already are the
 /// pressure's coefficients, p = -sum lambda_a psi_a in the multiplier basis psi
-/// (ContactMultiplierBasis: phi itself but for P2 tetrahedra), and need no solve.
+/// (ContactMultiplierBasis: phi itself but for P2 tetrahedra), and need no solve. With the
+/// dual mortar basis (ContactFormulation::dualMortar) -lambda_a is the pressure's local mean
+/// at node a, shown as its nodal value.
 #include <array>
 #include <memory>
 #include <vector>
@@ -84,7 +86,8 @@ class ContactPressure {
   int dim() const;
 
  private:
-  /// The nodal values of sum_a c_a psi_a (weighted gaps), on the constraint map.
+  /// The nodal values of sum_a c_a psi_a (weighted gaps; c itself for the dual basis), on the
+  /// constraint map.
   RCP<Vector> nodalValues(const Vector& coefficients) const;
   /// Pressure values at this rank's facet nodes: overlap constraint values, by local index.
   std::vector<double> overlapValues(const Vector& pressure) const;

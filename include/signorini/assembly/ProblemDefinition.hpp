@@ -26,7 +26,13 @@ struct BoundaryField {
 ///                node j (ContactMultiplierBasis): every constraint has the positive weight
 ///                integral of psi_j, also at the vertices of P2 triangles, whose nodal
 ///                constraints carry no force; the multipliers are the pressure's coefficients.
-enum class ContactFormulation { nodal, weightedGap };
+///  dualMortar:   the same with the dual (biorthogonal) basis psi_j: each constraint holds
+///                its own node's (transformed) displacement, and the multipliers are the
+///                pressure's nodal values, local means of the pressure.
+enum class ContactFormulation { nodal, weightedGap, dualMortar };
+
+/// Whether the constraints are integrals against multiplier functions (weighted gaps).
+inline bool isWeightedGap(ContactFormulation f) { return f != ContactFormulation::nodal; }
 
 struct ProblemDefinition {
   std::string name;

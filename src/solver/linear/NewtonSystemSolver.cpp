@@ -29,7 +29,12 @@ RCP<Vector> constraintStiffness(const Vector& diagonalOfQ, const CrsMatrix& A) {
     typename CrsMatrix::local_inds_host_view_type cols;
     typename CrsMatrix::values_host_view_type vals;
     A.getLocalRowView(i, cols, vals);
-    for (std::size_t k = 0; k < cols.extent(0); ++k) qd[i] += vals(k) * vals(k) * cd[cols(k)];
+    double rowNorm2 = 0;
+    for (std::size_t k = 0; k < cols.extent(0); ++k) {
+      qd[i] += vals(k) * vals(k) * cd[cols(k)];
+      rowNorm2 += vals(k) * vals(k);
+    }
+    if (rowNorm2 > 0) qd[i] /= rowNorm2 * rowNorm2;
   }
   return q;
 }
@@ -46,8 +51,9 @@ void addPreconditionerParameters(Teuchos::ParameterList& prec) {
                                        "type"));
   prec.set("amg of H: rebuild tolerance", std::string("auto"),
            "Rebuild \"amg of H\" when the relative weight D_i / (D_i + q_i) of some constraint (q_i: its "
-           "stiffness a_i^T diag(Q) a_i) moved by more than this since the last build; 0: at every Newton "
-           "step, 1: never after the first; \"auto\": 0 with the geometric levels, 0.9 with MueLu alone",
+           "stiffness against the row, a_i^T diag(Q) a_i / |a_i|^4) moved by more than this since the last "
+           "build; 0: at every Newton step, 1: never after the first; \"auto\": 0 with the geometric levels, "
+           "0.9 with MueLu alone",
            expert(autoOrRange(0.0, 1.0)));
   prec.set("amg of H: weight cap", 10.0,
            "With a contact correction, \"amg of H\" is built for Q + A^T D' A, D'_i = min(D_i, cap q_i) "

@@ -110,8 +110,11 @@ class NewtonSystemSolver {
                      const StiffnessParts& stiffness);
 };
 
-// q_i = sum_j a_ij^2 Q_jj: the stiffness Q puts against constraint i, on A's row map, from
-// diag(Q) on A's domain map.
+// q_i = sum_j a_ij^2 Q_jj / |a_i|^4: the stiffness Q puts against constraint i in the units of
+// its barrier weight D_i (row i adds D_i a_i a_i^T to H, whose eigenvalue D_i |a_i|^2 meets
+// Q's stiffness along a_i, a_i^T diag(Q) a_i / |a_i|^2), so that D_i / q_i does not depend on
+// how the row is scaled (weighted gaps scale theirs by their facets' measure); on A's row map,
+// from diag(Q) on A's domain map.
 RCP<Vector> constraintStiffness(const Vector& diagonalOfQ, const CrsMatrix& A);
 
 }  // namespace signorini
