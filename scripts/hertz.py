@@ -4,7 +4,9 @@ an elastic block, of a rigid sphere pressed into a deep block meshed by Gmsh, of
 half-disk and half-ball meshed by Gmsh pressed onto a rigid plane, and of a rigid flat punch
 (examples/hertz/). For each run, the computed contact half-width or radius, peak pressure and
 the L2 error of the pressure on the contact boundary are compared with Hertz' solution for the
-computed total force; on the deep block, the force against the force-approach law
+computed total force, and the nodal pressure field a user sees (solution.pvtu) is checked for
+tension (its most negative value), for pressure off the active nodes and for whether the
+node of the peak is active; on the deep block, the force against the force-approach law
 P = (4/3) E* sqrt(R) delta^(3/2) for several approaches delta. Writes
 bench/results/hertz.{json,md,png} and hertz-profiles.png.
 
@@ -12,11 +14,14 @@ bench/results/hertz.{json,md,png} and hertz-profiles.png.
                      [--recovery R]
 
 --only reruns the named studies and keeps the other rows of the existing JSON; --formulation
-("nodal" or "weighted gap") and --recovery (an Output/contact pressure choice) rerun only the
+("nodal", "weighted gap" or "dual mortar") and --recovery (an Output/contact pressure choice) rerun only the
 rows of that contact formulation or pressure recovery.
 """
 import argparse
+import base64
+import glob
 import json
+import re
 import math
 import os
 import subprocess
@@ -34,7 +39,8 @@ STUDIES = {
                         2: [(40, 20), (80, 40), (160, 80), (320, 160)],
                         3: [(40, 20), (80, 40), (160, 80)]}),
     "sphere-3d": (3, {1: [(16, 16, 8), (32, 32, 16), (48, 48, 24), (64, 64, 32)],
-                      2: [(8, 8, 4), (16, 16, 8), (24, 24, 12), (32, 32, 16)]}),
+                      2: [(8, 8, 4), (16, 16, 8), (24, 24, 12), (32, 32, 16)],
+                      3: [(8, 8, 4), (16, 16, 8), (24, 24, 12)]}),
 }
 STUDIES["half-disk-2d"] = (2, {1: [2.0, 1.0, 0.5, 0.25], 2: [2.0, 1.0, 0.5, 0.25]})
 STUDIES["half-ball-3d"] = (3, {1: [2.0, 1.4, 1.0, 0.7]})
@@ -42,14 +48,15 @@ STUDIES["deep-block-3d"] = (3, {1: [1.4, 1.0, 0.7], 2: [2.0, 1.4]})
 STUDIES["punch-2d"] = (2, {1: [(80, 40), (160, 80), (320, 160)], 2: [(40, 20), (80, 40), (160, 80)]})
 PUNCH_HALF_WIDTH = 0.25
 GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004, "half-ball-3d": 0.01, "deep-block-3d": 0.002}  # the .geo's mesh size at the contact, factor 1
-QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2}, "half-disk-2d": {1: 2, 2: 2},
+QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2, 3: 1}, "half-disk-2d": {1: 2, 2: 2},
          "half-ball-3d": {1: 2}, "deep-block-3d": {1: 1, 2: 1}, "punch-2d": {1: 2, 2: 2}}
 # The force-approach law on the deep block: (degree, mesh size factor) and the approaches.
 FORCE_APPROACH = (2, 1.4, [0.0002, 0.0004, 0.0008])
 # (Contact/formulation, Output/contact pressure): the nodal constraints with each pressure
-# recovery, and weighted gaps, whose multipliers are the pressure. The patch average of the
-# lumped pressure rests on HRZ weights, which suit P1 only.
-VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("nodal", "patch"), ("weighted gap", "auto")]
+# recovery, and weighted gaps and the dual mortar basis, whose multipliers are the pressure.
+# The patch average of the lumped pressure rests on HRZ weights, which suit P1 only.
+VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("nodal", "patch"), ("weighted gap", "auto"),
+            ("dual mortar", "auto")]
 P1_ONLY = {("nodal", "patch")}
 
 
@@ -92,7 +99,7 @@ def run(args, example, degree, cells, formulation, recovery, directory, settings
     cmd = ["mpirun", "-np", str(args.np), os.path.join(args.build, "bin", "signorini"), xml,
            "--set", mesh_setting(cells),
            "--set", "Problem/element: degree=%d" % degree,
-           "--set", "Output/write solution=false", "--set", "Output/write history=false",
+           "--set", "Output/write history=false",
            "--set", "Problem/Contact/formulation=" + formulation,
            "--set", "Output/contact pressure=" + recovery, "--output", directory]
     for setting in settings:
@@ -101,7 +108,37 @@ def run(args, example, degree, cells, formulation, recovery, directory, settings
     with open(os.path.join(directory, "summary.json")) as f:
         summary = json.load(f)
     samples = np.genfromtxt(os.path.join(directory, "contact.csv"), delimiter=",", names=True)
+    summary["nodal_field"] = nodal_field(directory)
     return summary, samples
+
+
+def vtu_arrays(path, names):
+    """The named point arrays of a .vtu in VTK's inline binary format (base64 of a UInt64 byte
+    count and little-endian Float64 values), as Signorini writes them."""
+    with open(path) as f:
+        text = f.read()
+    arrays = {}
+    for name in names:
+        match = re.search(r'<DataArray type="Float64" Name="%s"[^>]*format="binary">\s*([A-Za-z0-9+/=]+)' % name, text)
+        raw = base64.b64decode(match.group(1))
+        count = int(np.frombuffer(raw[:8], "<u8")[0])
+        arrays[name] = np.frombuffer(raw[8:8 + count], "<f8")
+    return arrays
+
+
+def nodal_field(directory):
+    """What the nodal pressure shown in ParaView says: its most negative value and its largest
+    value off the active nodes, both relative to its peak, and whether the peak's node is active."""
+    pressure, active = [], []
+    for path in sorted(glob.glob(os.path.join(directory, "solution_*.vtu"))):
+        arrays = vtu_arrays(path, ["contact pressure", "active"])
+        pressure.append(arrays["contact pressure"])
+        active.append(arrays["active"])
+    pressure, active = np.concatenate(pressure), np.concatenate(active)
+    peak = pressure.max()
+    off = pressure[active == 0]
+    return {"tension": float(pressure.min() / peak), "off_active": float(off.max() / peak) if off.size else 0.0,
+            "peak_node_active": bool(active[np.argmax(pressure)] != 0)}
 
 
 def measure_punch(summary, samples, center):
@@ -196,7 +233,8 @@ def run_study(args, example, tmp):
                 row = {"example": example, "d": dim, "degree": degree, "mesh": mesh_label(cells),
                        "h": spacing(example, dim, cells), "n": summary["n"],
                        "m": summary["m"], "formulation": formulation, "recovery": recovery,
-                       "converged": summary["converged"], "seconds": summary["time"]["total"]}
+                       "converged": summary["converged"], "seconds": summary["time"]["total"],
+                       "krylov": summary["krylov_iterations"], **summary["nodal_field"]}
                 if example == "punch-2d":
                     row.update(measure_punch(summary, samples, center))
                 else:
@@ -206,9 +244,10 @@ def run_study(args, example, tmp):
                         "example": example, "degree": degree, "formulation": formulation, "recovery": recovery,
                         "r": r, "p": p}
                 rows.append(row)
-                print("%-13s P%d %-14s %-24s a %+6.2f%%  p0 %+6.2f%%  L2 %.4f" % (
+                print("%-13s P%d %-14s %-24s a %+6.2f%%  p0 %+6.2f%%  L2 %.4f  min p %+5.1f%%  off %4.1f%%  CG %d" % (
                     example, degree, mesh_label(cells), label(formulation, recovery), 100 * row["a_error"],
-                    100 * row["p0_error"], row["l2_error"]), flush=True)
+                    100 * row["p0_error"], row["l2_error"], 100 * row["tension"], 100 * row["off_active"],
+                    row["krylov"]), flush=True)
     return rows, list(profiles.values()), summary
 
 
@@ -274,13 +313,17 @@ def add_orders(rows):
 
 
 def write_table(results, path):
-    lines = ["| example | P | mesh | n | constraints | a / a_Hertz - 1 | p0 / p0_Hertz - 1 | L2 error of p | order |",
-             "|---|---|---|---|---|---|---|---|---|"]
+    lines = ["| example | P | mesh | n | constraints | a / a_Hertz - 1 | p0 / p0_Hertz - 1 | L2 error of p | order "
+             "| nodal p: min / peak | off the active nodes: max / peak | peak's node active | CG |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in results["rows"]:
         order = "" if r["l2_order"] is None else "%.2f" % r["l2_order"]
-        lines.append("| %s | %d | %s | %d | %s | %+.2f%% | %+.2f%% | %.4f | %s |" % (
+        nodal = ("%+.1f%% | %.1f%% | %s | %d" % (100 * r["tension"], 100 * r["off_active"],
+                                                "yes" if r["peak_node_active"] else "no", r["krylov"])
+                 if "tension" in r else " | | | ")  # rows of a run that did not check the nodal field
+        lines.append("| %s | %d | %s | %d | %s | %+.2f%% | %+.2f%% | %.4f | %s | %s |" % (
             r["example"], r["degree"], r["mesh"], r["n"], label(r["formulation"], r["recovery"]),
-            100 * r["a_error"], 100 * r["p0_error"], r["l2_error"], order))
+            100 * r["a_error"], 100 * r["p0_error"], r["l2_error"], order, nodal))
     fa = results.get("force_approach")
     if fa:
         lines += ["", "Force-approach law on deep-block-3d, P%d, mesh %s (n = %d):" % (fa["degree"], fa["mesh"], fa["n"]),

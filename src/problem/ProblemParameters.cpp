@@ -64,14 +64,15 @@ void addContactParameters(ParameterList& contact) {
   contact.set("gap: center", Array<double>(), "Center of the paraboloid");
   contact.set("gap: radius", 1.0, "Radius of curvature of the paraboloid", range(1e-300, 1e300));
   contact.set("gap: expression", "0", "Gap as an expression of x, y, z");
-  contact.set("formulation", "nodal",
+  contact.set("formulation", "auto",
               "\"nodal\": -n.u <= g at every node of the contact boundary (the paper's constraints); "
               "\"weighted gap\": the integral of psi_j (g + n.u) >= 0 for every node j, psi_j its shape "
               "function (P2 triangles: a transformed basis with positive integrals); the multipliers are "
               "the pressure's coefficients; \"dual mortar\": the same with the dual (biorthogonal) basis "
               "psi_j, so that each constraint holds its own node and the multipliers are the pressure's "
-              "nodal values (local means, never negative)",
-              choices({"nodal", "weighted gap", "dual mortar"}));
+              "nodal values (local means, never negative); \"auto\": nodal for P1, dual mortar for P2 and "
+              "P3 (whose nodal multipliers are no pressure: doc/hertz-validation.md)",
+              choices({"auto", "nodal", "weighted gap", "dual mortar"}));
 }
 
 }  // namespace
@@ -196,9 +197,10 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
   }
   def.gap.emplace(text, "Problem/Contact/gap");
   const std::string formulation = contact.get<std::string>("formulation");
-  def.contactFormulation = formulation == "weighted gap"  ? ContactFormulation::weightedGap
-                           : formulation == "dual mortar" ? ContactFormulation::dualMortar
-                                                          : ContactFormulation::nodal;
+  const bool dual = formulation == "dual mortar" || (formulation == "auto" && def.degree > 1);
+  def.contactFormulation = formulation == "weighted gap" ? ContactFormulation::weightedGap
+                           : dual                        ? ContactFormulation::dualMortar
+                                                         : ContactFormulation::nodal;
 }
 
 }  // namespace

@@ -16,8 +16,9 @@ namespace {
 
 using namespace signorini;
 
-// A box with contact on its bottom face and the traction `pressure` pushing that face
-// inwards, so that A b = -f: exactly the multipliers (paper's sign) of that pressure.
+// A box with contact on its bottom face, nodal constraints, and the traction `pressure`
+// pushing that face inwards, so that A b = -f: exactly the multipliers (paper's sign) of that
+// pressure.
 struct LoadedFace {
   AssembledProblem problem;
   RCP<Vector> lambda;
@@ -30,6 +31,7 @@ LoadedFace loadedBottomFace(int dim, int degree, const std::string& pressure) {
   const std::string bottom = dim == 2 ? "ymin" : "zmin";
   list.sublist("Traction").sublist(bottom).set(dim == 2 ? "traction: y" : "traction: z", pressure);
   list.sublist("Contact").set("boundary", bottom);
+  list.sublist("Contact").set("formulation", "nodal");
   LoadedFace face{buildProblem(list, Tpetra::getDefaultComm()), Teuchos::null, nullptr, Teuchos::null};
   face.lambda = rcp(new Vector(face.problem.qp.A->getRangeMap()));
   face.problem.qp.A->apply(*face.problem.qp.b, *face.lambda);

@@ -58,7 +58,8 @@ void shiftIntoInterior(const ContactQP& qp, Vector& v, double margin) {
   pattern.apply(ones, rowsPerUnknown, Teuchos::TRANS);
   if (rowsPerUnknown.normInf() > 1.0)
     throw InputError("Solver/method \"primal\": the rows of A share unknowns, so no strictly feasible point "
-                     "can be built from the initial guess; use method \"primal-dual\"");
+                     "can be built from the initial guess; use method \"primal-dual\" (or, for weighted gaps "
+                     "of P2 tetrahedra, Problem/Contact/formulation \"nodal\")");
 
   Vector rowNorm2(cmap), s(cmap), w(cmap);
   {
