@@ -5,6 +5,7 @@
 // refinement study is scripts/hertz.py.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -16,6 +17,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "assembly/DistributedSpace.hpp"
+#include "core/Collectives.hpp"
 #include "signorini/assembly/ContactPressure.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
 #include "signorini/solver/KKTMeasures.hpp"
@@ -38,12 +40,37 @@ Teuchos::Array<int> cells(int x, int y, int z = 0) {
   return c;
 }
 
+// What the nodal pressure field shows: its smallest value and its largest off the active
+// nodes, both relative to its peak, and whether the peak's node is active.
+struct NodalField {
+  double smallest = 0, offActive = 0;
+  bool peakNodeActive = false;
+};
+
+NodalField nodalField(const Vector& pressure, const Vector& active) {
+  const Comm& comm = *pressure.getMap()->getComm();
+  auto p = pressure.getData();
+  auto a = active.getData();
+  double smallest = 0, largest = 0, offActive = 0;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    smallest = std::min(smallest, p[i]);
+    largest = std::max(largest, p[i]);
+    if (a[i] == 0) offActive = std::max(offActive, p[i]);
+  }
+  const double peak = maxOverRanks(comm, largest);
+  bool peakActive = false;
+  for (std::size_t i = 0; i < p.size(); ++i) peakActive = peakActive || (p[i] == peak && a[i] != 0);
+  return {minOverRanks(comm, smallest) / peak, maxOverRanks(comm, offActive) / peak,
+          maxOverRanks(comm, peakActive ? 1 : 0) == 1};
+}
+
 // The recovered pressure and the statistics of one solved example.
 struct ContactSolution {
   int dim = 0;
   ContactStatistics stats;
   ContactPressureSamples samples;
   RCP<const Comm> comm;
+  NodalField field;
 };
 
 // The example's problem with `degree`, `formulation` and the mesh parameter `meshSetting`
@@ -66,7 +93,7 @@ ContactSolution solveExample(const std::string& example, int degree, const std::
   const RCP<Vector> pressure = recovery.recover(PressureRecovery::Auto, *r.lambda, *active);
   return {p.definition.dim,
           contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active, p.definition.obstacleDirection),
-          recovery.samples(*pressure), p.space->comm()};
+          recovery.samples(*pressure), p.space->comm(), nodalField(*pressure, *active)};
 }
 
 // The relative L2 error of the sampled pressure against exact(x), over the samples in(x).
@@ -197,6 +224,32 @@ TEST(Hertz, SphereWithWeightedGapsConvergesToHertz) {
   EXPECT_LT(std::abs(fine.radius), std::abs(coarse.radius));
   EXPECT_LT(std::abs(fine.peak), std::abs(coarse.peak));
   EXPECT_LT(fine.l2, coarse.l2);
+}
+
+// P2 and P3 with the default constraints (dual mortar): the pressure a user sees has no
+// tension below -3% of its peak and nothing above 3% of it off the active nodes, its peak's
+// node is active, and the peak is within 3% (2D) and 5% (3D) of Hertz'; the nodal
+// constraints' consistent pressure, on the same meshes, rings.
+TEST(Hertz, DefaultConstraintsOfDegrees2And3ShowASoundPressureField) {
+  struct Run {
+    const char* example;
+    int degree;
+    Teuchos::Array<int> mesh;
+    double peakBound;
+  };
+  const Run runs[] = {{"cylinder-2d", 2, cells(80, 40), 0.03}, {"cylinder-2d", 3, cells(40, 20), 0.03},
+                      {"sphere-3d", 2, cells(16, 16, 8), 0.05}, {"sphere-3d", 3, cells(16, 16, 8), 0.05}};
+  for (const Run& run : runs) {
+    const std::string what = std::string(run.example) + " P" + std::to_string(run.degree);
+    const ContactSolution s = solveExample(run.example, run.degree, "mesh: cells", run.mesh, "auto");
+    EXPECT_GT(s.field.smallest, -0.03) << what;
+    EXPECT_LT(s.field.offActive, 0.03) << what;
+    EXPECT_TRUE(s.field.peakNodeActive) << what;
+    EXPECT_LT(std::abs(hertzErrors(s, run.example == std::string("sphere-3d") ? 0.5 : 1.0).peak), run.peakBound)
+        << what;
+  }
+  const ContactSolution nodal = solveExample("sphere-3d", 2, "mesh: cells", cells(16, 16, 8), "nodal");
+  EXPECT_LT(nodal.field.smallest, -0.03);
 }
 
 // A rigid sphere pressed into a block deep against the contact radius (Gmsh, graded towards
