@@ -42,14 +42,14 @@ STUDIES = {
                       2: [(8, 8, 4), (16, 16, 8), (24, 24, 12), (32, 32, 16)],
                       3: [(8, 8, 4), (16, 16, 8), (24, 24, 12)]}),
 }
-STUDIES["half-disk-2d"] = (2, {1: [2.0, 1.0, 0.5, 0.25], 2: [2.0, 1.0, 0.5, 0.25]})
-STUDIES["half-ball-3d"] = (3, {1: [2.0, 1.4, 1.0, 0.7]})
+STUDIES["half-disk-2d"] = (2, {1: [2.0, 1.0, 0.5, 0.25], 2: [2.0, 1.0, 0.5, 0.25], 3: [2.0, 1.0, 0.5]})
+STUDIES["half-ball-3d"] = (3, {1: [2.0, 1.4, 1.0, 0.7], 2: [2.0, 1.4, 1.0]})
 STUDIES["deep-block-3d"] = (3, {1: [1.4, 1.0, 0.7], 2: [2.0, 1.4]})
 STUDIES["punch-2d"] = (2, {1: [(80, 40), (160, 80), (320, 160)], 2: [(40, 20), (80, 40), (160, 80)]})
 PUNCH_HALF_WIDTH = 0.25
 GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004, "half-ball-3d": 0.01, "deep-block-3d": 0.002}  # the .geo's mesh size at the contact, factor 1
-QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2, 3: 1}, "half-disk-2d": {1: 2, 2: 2},
-         "half-ball-3d": {1: 2}, "deep-block-3d": {1: 1, 2: 1}, "punch-2d": {1: 2, 2: 2}}
+QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2, 3: 1}, "half-disk-2d": {1: 2, 2: 2, 3: 1},
+         "half-ball-3d": {1: 2, 2: 1}, "deep-block-3d": {1: 1, 2: 1}, "punch-2d": {1: 2, 2: 2}}
 # The force-approach law on the deep block: (degree, mesh size factor) and the approaches.
 FORCE_APPROACH = (2, 1.4, [0.0002, 0.0004, 0.0008])
 # (Contact/formulation, Output/contact pressure): the nodal constraints with each pressure
