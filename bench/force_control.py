@@ -38,7 +38,7 @@ CASES = [
     ("half-ball 3D P2, size factor 2", "half-ball-pressed-3d",
      ["Problem/mesh: size factor=2", "Problem/element: degree=2"], "z", "-0.015"),
 ]
-FORMULATIONS = {"nodal": [], "weighted gap": ["Problem/Contact/formulation=weighted gap"]}
+FORMULATIONS = {name: ["Problem/Contact/formulation=" + name] for name in ("nodal", "weighted gap", "dual mortar")}
 METHODS = ["primal-dual", "primal"]
 FIXED_ACCURACY = ["Solver/forcing: type=relative", "Solver/forcing: eta=1e-8",
                   "Solver/Krylov/initial guess: previous solutions=0", "Solver/primal-dual: active-set finish=false"]
@@ -100,7 +100,7 @@ def main():
         for method in METHODS:
             for formulation in FORMULATIONS:
                 if method == "primal" and formulation != "nodal":
-                    continue  # the primal method needs rows that share no unknowns
+                    continue  # the primal method needs rows that share no unknowns (P2 triangles' do)
                 runs.append(run(case, method, formulation, args.ranks, args.workdir))
                 print(json.dumps(runs[-1]), flush=True)
     write_results("force-control", made, runs, table(runs))
