@@ -344,7 +344,7 @@ def plot(rows, path):
     fig, axes = plt.subplots(1, len(STUDIES), figsize=(5 * len(STUDIES), 4))
     for ax, example in zip(axes, STUDIES):
         for degree in sorted({r["degree"] for r in rows if r["example"] == example}):
-            for (formulation, recovery), style in zip(VARIANTS, ["-o", "--s", "-.d", ":^"]):
+            for (formulation, recovery), style in zip(VARIANTS, ["-o", "--s", "-.d", ":^", "-v"]):
                 sel = [r for r in rows if r["example"] == example and r["degree"] == degree
                        and r["formulation"] == formulation and r["recovery"] == recovery]
                 if sel:
@@ -369,7 +369,7 @@ def plot_profiles(profiles, path):
     fig, axes = plt.subplots(1, len(hertz), figsize=(5 * len(hertz), 4))
     for ax, example in zip(axes, hertz):
         degree = max(p["degree"] for p in profiles if p["example"] == example)
-        for (formulation, recovery), marker in zip(VARIANTS, ["o", "s", "d", "^"]):
+        for (formulation, recovery), marker in zip(VARIANTS, ["o", "s", "d", "^", "v"]):
             for p in profiles:
                 if (p["example"], p["degree"], p["formulation"], p["recovery"]) == (example, degree, formulation,
                                                                                    recovery):
