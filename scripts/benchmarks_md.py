@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Refreshes the generated tables of doc/benchmarks.md and README.md from bench/results.
+"""Refreshes the generated tables of doc/benchmarks.md, doc/hertz-validation.md and README.md from
+bench/results.
 
     scripts/benchmarks_md.py [--check]
 
@@ -20,7 +21,7 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DOCS = ["doc/benchmarks.md", "doc/performance-model.md", "README.md"]
+DOCS = ["doc/benchmarks.md", "doc/performance-model.md", "doc/hertz-validation.md", "README.md"]
 BLOCK = re.compile(r"(<!-- generated from (\S+) -->\n)(.*?)(<!-- end generated -->)", re.S)
 
 
