@@ -92,7 +92,7 @@ int main(int argc, char** argv) {
     const ContactPressure recovery(*assembled.space, assembled.definition, assembled.qp.A->getRangeMap());
     const RCP<Vector> pressure = recovery.pressure(*result.lambda, *active);
     const ContactStatistics contact = contactStatistics(recovery, *pressure, *assembled.qp.A, *result.lambda,
-                                                        *active, assembled.definition.obstacleDirection);
+                                                        *active, assembled.definition.contact->obstacleDirection);
     const ContactFields fields{recovery, *pressure, *active};
     writeSolution(assembled, result, &fields, directory);
     if (root)

@@ -158,6 +158,15 @@ RCP<Vector> jacobiScaling(const CrsMatrix& M) {
 
 }  // namespace
 
+namespace {
+
+// Without contact there are no constraints; nodal is the trivial basis.
+ContactFormulation formulationOf(const ProblemDefinition& problem) {
+  return problem.contact ? problem.contact->formulation : ContactFormulation::nodal;
+}
+
+}  // namespace
+
 struct ContactPressure::MultiplierBasis : ContactMultiplierBasis {
   using ContactMultiplierBasis::ContactMultiplierBasis;
 };
@@ -166,12 +175,12 @@ ContactPressure::ContactPressure(const FiniteElementSpace& feSpace, const Proble
                                  const RCP<const Map>& constraintMap)
     : space_(feSpace),
       multipliers_(std::make_shared<MultiplierBasis>(distributedSpace(feSpace).space().basis(),
-                                                     problem.contactFormulation)),
-      weightedGap_(isWeightedGap(problem.contactFormulation)),
+                                                     formulationOf(problem))),
+      weightedGap_(isWeightedGap(formulationOf(problem))),
       constraintMap_(constraintMap) {
   const DistributedSpace& ds = distributedSpace(feSpace);
   const LagrangeSpace& space = ds.space();
-  if (!problem.contactBoundary.empty()) facets_ = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
+  if (problem.contact) facets_ = space.boundaryFacets(ds.mesh().tag(problem.contact->boundary));
 
   overlapNodeConstraint_ = overlapNodeConstraints(ds, problem);
   const auto& overlapNodes = ds.overlapSpaceNodes();

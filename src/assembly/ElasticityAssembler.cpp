@@ -102,6 +102,7 @@ void eliminatePrescribed(const std::vector<char>& fixed, const std::vector<doubl
 void checkPrescribedContactNodes(const DistributedSpace& ds, const ProblemDefinition& problem,
                                  const DirichletData& dirichlet, const std::vector<long long>& contactNodes) {
   const int dim = ds.dim();
+  const ContactPair& pair = *problem.contact;
   long long closed = 0;
   GlobalOrdinal first = std::numeric_limits<GlobalOrdinal>::max();
   double where[4] = {0, 0, 0, 0};  // coordinates and gap of this rank's first closed node
@@ -109,12 +110,12 @@ void checkPrescribedContactNodes(const DistributedSpace& ds, const ProblemDefini
     bool prescribed = true;
     double normalDisplacement = 0;
     for (int c = 0; c < dim; ++c) {
-      if (problem.obstacleDirection[c] == 0.0) continue;
+      if (pair.obstacleDirection[c] == 0.0) continue;
       prescribed = prescribed && dirichlet.fixed[dim * node + c];
-      normalDisplacement += problem.obstacleDirection[c] * dirichlet.value[dim * node + c];
+      normalDisplacement += pair.obstacleDirection[c] * dirichlet.value[dim * node + c];
     }
     const double* x = &ds.space().nodeCoordinates()[dim * node];
-    const double gap = prescribed ? (*problem.gap)(x, dim) + normalDisplacement : 1.0;
+    const double gap = prescribed ? pair.gap(x, dim) + normalDisplacement : 1.0;
     if (!prescribed || gap > 0) continue;
     ++closed;
     if (ds.globalNode(node) < first) {
@@ -131,7 +132,7 @@ void checkPrescribedContactNodes(const DistributedSpace& ds, const ProblemDefini
   if (first == firstGlobal) std::copy(where, where + 4, mine);
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, mine, located);
   std::ostringstream message;
-  message << "Problem/Contact: " << total << " node(s) of the contact boundary \"" << problem.contactBoundary
+  message << "Problem/Contact: " << total << " node(s) of the contact boundary \"" << pair.boundary
           << "\" have their displacement towards the obstacle prescribed (Problem/Dirichlet) so that the gap "
           << "closes or is crossed, first at (";
   for (int c = 0; c < dim; ++c) message << (c ? ", " : "") << located[c];
@@ -146,7 +147,7 @@ struct ContactConstraints {
 };
 
 // Row i: -n_o . u(x) <= g(x) at the i-th owned contact node x, only the nonzero components of n_o.
-ContactConstraints nodalConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
+ContactConstraints nodalConstraints(const DistributedSpace& ds, const ContactPair& pair,
                                     const OwnedContactNodes& contact, const RCP<const Map>& constraintMap) {
   const int dim = ds.dim();
   auto A = rcp(new CrsMatrix(constraintMap, dim));
@@ -158,12 +159,12 @@ ContactConstraints nodalConstraints(const DistributedSpace& ds, const ProblemDef
     const long long node = contact.nodes[i];
     int count = 0;
     for (int c = 0; c < dim; ++c)
-      if (problem.obstacleDirection[c] != 0.0) {
+      if (pair.obstacleDirection[c] != 0.0) {
         cols[count] = dim * ds.globalNode(node) + c;
-        vals[count++] = -problem.obstacleDirection[c];
+        vals[count++] = -pair.obstacleDirection[c];
       }
     A->insertGlobalValues(contact.first + i, count, vals.data(), cols.data());
-    dData[i] = (*problem.gap)(&ds.space().nodeCoordinates()[dim * node], dim);
+    dData[i] = pair.gap(&ds.space().nodeCoordinates()[dim * node], dim);
   }
   A->fillComplete(ds.ownedDofMap(), constraintMap);
   return {A, d};
@@ -226,16 +227,17 @@ WeightedGapGraph weightedGapGraph(const DistributedSpace& ds, const ContactMulti
 ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
                                           const RCP<const Map>& constraintMap) {
   const LagrangeSpace& space = ds.space();
-  const ContactMultiplierBasis psi(space.basis(), problem.contactFormulation);
+  const ContactPair& pair = *problem.contact;
+  const ContactMultiplierBasis psi(space.basis(), pair.formulation);
   const int dim = ds.dim(), npc = space.nodesPerCell();
-  const auto facets = space.boundaryFacets(ds.mesh().tag(problem.contactBoundary));
+  const auto facets = space.boundaryFacets(ds.mesh().tag(pair.boundary));
   const std::vector<long long> overlapConstraint = overlapNodeConstraints(ds, problem);
   std::vector<long long> constraintOf(space.numNodes(), -1);
   for (std::size_t i = 0; i < overlapConstraint.size(); ++i)
     constraintOf[ds.overlapSpaceNodes()[i]] = overlapConstraint[i];
   std::vector<int> components;
   for (int c = 0; c < dim; ++c)
-    if (problem.obstacleDirection[c] != 0.0) components.push_back(c);
+    if (pair.obstacleDirection[c] != 0.0) components.push_back(c);
 
   const WeightedGapGraph pattern = weightedGapGraph(ds, psi, facets, constraintOf, components, constraintMap);
   auto A = rcp(new FEMatrix(pattern.graph));
@@ -248,7 +250,7 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
     ds.mesh().cellVertexCoordinates(cell, coords.data());
     facetQuadrature(space.basis(), coords.data(), facet, degree, rule);
     gapValues.resize(rule.size());
-    for (int q = 0; q < rule.size(); ++q) gapValues[q] = (*problem.gap)(&rule.points[q * dim], dim);
+    for (int q = 0; q < rule.size(); ++q) gapValues[q] = pair.gap(&rule.points[q * dim], dim);
     const long long* nodes = space.cellNodes(cell);
     const std::vector<int> facetNodes = space.basis().facetNodes(facet);
     for (int a : facetNodes) {
@@ -266,7 +268,7 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
         for (int q = 0; q < rule.size(); ++q) weight += rule.weights[q] * psiValues[q] * rule.phi[q * npc + b];
         for (int c : components) {
           const GlobalOrdinal col = dim * ds.globalNode(nodes[b]) + c;
-          const double value = -problem.obstacleDirection[c] * weight;
+          const double value = -pair.obstacleDirection[c] * weight;
           A->sumIntoGlobalValues(row, 1, &value, &col);
         }
       }
@@ -285,8 +287,8 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
 // nodes of the ranks before it.
 OwnedContactNodes ownedContactNodes(const DistributedSpace& ds, const ProblemDefinition& problem) {
   OwnedContactNodes result;
-  if (!problem.contactBoundary.empty())
-    for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contactBoundary)))
+  if (problem.contact)
+    for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contact->boundary)))
       if (ds.ownsNode(node)) result.nodes.push_back(node);
   std::sort(result.nodes.begin(), result.nodes.end(),
             [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
@@ -315,14 +317,14 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
                                const RCP<const Map>& constraintMap) {
   const LagrangeSpace& space = ds.space();
   const int dim = ds.dim(), npc = space.nodesPerCell();
-  const bool weighted = isWeightedGap(problem.contactFormulation);
-  const ContactMultiplierBasis psi(space.basis(), problem.contactFormulation);
   auto weights = rcp(new Vector(constraintMap));
-  if (problem.contactBoundary.empty()) return weights;
+  if (!problem.contact) return weights;
+  const bool weighted = isWeightedGap(problem.contact->formulation);
+  const ContactMultiplierBasis psi(space.basis(), problem.contact->formulation);
   Vector overlap(ds.overlapNodeMap()), owned(ds.ownedNodeMap());
   std::vector<double> coords((dim + 1) * dim), w;
   FacetQuadrature rule;
-  for (const auto& [cell, facet] : space.boundaryFacets(ds.mesh().tag(problem.contactBoundary))) {
+  for (const auto& [cell, facet] : space.boundaryFacets(ds.mesh().tag(problem.contact->boundary))) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
     if (weighted) {  // the integrals of psi
       facetQuadrature(space.basis(), coords.data(), facet, space.degree(), rule);
@@ -353,7 +355,7 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
 
 RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const std::shared_ptr<const DistributedSpace>& ds,
                                                       const ProblemDefinition& problem) {
-  return rcp(new MatrixFreeElasticityOperator(ds, problem.material, dirichletData(*ds, problem).fixed));
+  return rcp(new MatrixFreeElasticityOperator(ds, problem.body.material, dirichletData(*ds, problem).fixed));
 }
 
 RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDefinition& problem,
@@ -384,7 +386,7 @@ RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDe
         vertices[v] = space.cellNodes(cell)[piece[v]];
         std::copy_n(&space.nodeCoordinates()[dim * vertices[v]], dim, &vertexCoords[dim * v]);
       }
-      elasticityStiffness(linear, vertexCoords.data(), problem.material, Ke);
+      elasticityStiffness(linear, vertexCoords.data(), problem.body.material, Ke);
       for (int a = 0; a < n; ++a) {
         if (fixed[dof(a)]) continue;
         for (int b = 0; b < n; ++b)
@@ -449,16 +451,16 @@ void assembleCells(const DistributedSpace& ds, const ProblemDefinition& problem,
   const int dim = ds.dim(), npc = ds.space().nodesPerCell(), n = dim * npc;
   // Expressions are evaluated at every quadrature point of every cell: skip the zero ones.
   std::vector<char> zeroForce(dim);
-  for (int c = 0; c < dim; ++c) zeroForce[c] = problem.bodyForce[c].isConstantZero();
+  for (int c = 0; c < dim; ++c) zeroForce[c] = problem.body.bodyForce[c].isConstantZero();
   const auto force = [&](int count, const double* x, double* f) {
     for (int c = 0; c < dim; ++c)
-      if (!zeroForce[c]) problem.bodyForce[c].evaluate(count, x, dim, f + c * count);
+      if (!zeroForce[c]) problem.body.bodyForce[c].evaluate(count, x, dim, f + c * count);
   };
   std::vector<double> Ke, Fe;
   auto bData = bOverlap.getDataNonConst();
   for (long long c = 0; c < ds.mesh().numCells(); ++c) {
     cell.gather(c);
-    elasticityStiffness(ds.space().basis(), cell.vertexCoords.data(), problem.material, Ke);
+    elasticityStiffness(ds.space().basis(), cell.vertexCoords.data(), problem.body.material, Ke);
     bodyForceLoad(ds.space().basis(), cell.vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
     eliminatePrescribed(cell.fixed, cell.value, n, Ke, Fe);
     if (K) K->addElementMatrix(dim, npc, cell.rows.data(), cell.cols.data(), Ke.data());
@@ -512,14 +514,19 @@ RCP<Vector> prescribeOnOwners(const DistributedSpace& ds, const DirichletData& d
 ContactConstraints contactConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
                                       const DirichletData& dirichlet) {
   const OwnedContactNodes contact = ownedContactNodes(ds, problem);
-  checkPrescribedContactNodes(ds, problem, dirichlet, contact.nodes);
   std::vector<GlobalOrdinal> ownedConstraints(contact.nodes.size());
   for (std::size_t k = 0; k < ownedConstraints.size(); ++k) ownedConstraints[k] = contact.first + k;
   auto constraintMap = rcp(new Map(contact.numGlobal, Teuchos::ArrayView<const GlobalOrdinal>(ownedConstraints),
                                    0, ds.comm()));
-  return isWeightedGap(problem.contactFormulation)
+  if (!problem.contact) {  // no rows
+    auto A = rcp(new CrsMatrix(constraintMap, 0));
+    A->fillComplete(ds.ownedDofMap(), constraintMap);
+    return {A, rcp(new Vector(constraintMap))};
+  }
+  checkPrescribedContactNodes(ds, problem, dirichlet, contact.nodes);
+  return isWeightedGap(problem.contact->formulation)
              ? weightedGapConstraints(ds, problem, constraintMap)
-             : nodalConstraints(ds, problem, contact, constraintMap);
+             : nodalConstraints(ds, *problem.contact, contact, constraintMap);
 }
 
 RCP<MultiVector> ownedNodeCoordinates(const DistributedSpace& ds) {
@@ -540,7 +547,7 @@ RCP<MultiVector> ownedNodeCoordinates(const DistributedSpace& ds) {
 ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition& problem, bool assembleStiffness) {
   const int dim = ds.dim();
   const DirichletData dirichlet = dirichletData(ds, problem);
-  if (problem.bodyForce.size() != static_cast<std::size_t>(dim))
+  if (problem.body.bodyForce.size() != static_cast<std::size_t>(dim))
     throw InputError("Problem: the body force needs " + std::to_string(dim) + " components");
 
   std::optional<OverlapStiffness> K;

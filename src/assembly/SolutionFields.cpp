@@ -71,19 +71,20 @@ SolutionFields solutionFields(const DistributedSpace& ds, const ProblemDefinitio
   auto fd = forceHere.getData();
   fields.displacement.assign(ud.begin(), ud.end());
   std::vector<char> onContact(ds.space().numNodes(), 0);
-  if (!problem.contactBoundary.empty())
-    for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contactBoundary))) onContact[node] = 1;
+  const std::array<double, 3> n = problem.contact ? problem.contact->obstacleDirection : std::array<double, 3>{};
+  if (problem.contact)
+    for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contact->boundary))) onContact[node] = 1;
   for (std::size_t i = 0; i < overlap.size(); ++i) {
     double normalForce = 0, normalDisplacement = 0;
     for (int c = 0; c < dim; ++c) {
-      normalForce += fd[dim * i + c] * problem.obstacleDirection[c];
-      normalDisplacement += ud[dim * i + c] * problem.obstacleDirection[c];
+      normalForce += fd[dim * i + c] * n[c];
+      normalDisplacement += ud[dim * i + c] * n[c];
     }
     fields.normalContactForce.push_back(normalForce);
     const double* x = &ds.space().nodeCoordinates()[dim * overlap[i]];
-    fields.gap.push_back(onContact[overlap[i]] ? (*problem.gap)(x, dim) + normalDisplacement : 0.0);
+    fields.gap.push_back(onContact[overlap[i]] ? problem.contact->gap(x, dim) + normalDisplacement : 0.0);
   }
-  fields.vonMisesStress = cellVonMises(ds, problem.material, u);
+  fields.vonMisesStress = cellVonMises(ds, problem.body.material, u);
   return fields;
 }
 

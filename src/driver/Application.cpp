@@ -300,7 +300,7 @@ std::optional<ContactStatistics> writeSolutionOutputs(const AssembledProblem& pr
   const RCP<Vector> pressure =
       recovery.recover(choice<PressureRecovery>(output, "contact pressure"), *result.lambda, *active);
   const ContactStatistics contact =
-      contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.obstacleDirection);
+      contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.contact->obstacleDirection);
   if (comm.getRank() == 0) logContact(contact, out);
   if (output.get<bool>("write contact samples"))
     writeContactSamples(recovery.samples(*pressure), comm, directory + "/contact.csv");

@@ -164,8 +164,8 @@ void readBoxSize(const ParameterList& p, ProblemDefinition& def) {
 // The contact boundary, the obstacle's direction and gap, and the constraints' formulation.
 void readContact(const ParameterList& contact, ProblemDefinition& def) {
   const int dim = def.dim;
-  def.contactBoundary = contact.get<std::string>("boundary");
-  if (def.contactBoundary.empty()) return;
+  const std::string boundary = contact.get<std::string>("boundary");
+  if (boundary.empty()) return;
   auto direction = contact.get<Array<double>>("obstacle: direction");
   if (direction.empty()) {
     direction.assign(dim, 0.0);
@@ -177,7 +177,8 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
   for (double c : direction) norm += c * c;
   norm = std::sqrt(norm);
   if (!(norm > 0)) throw InputError("Problem/Contact/obstacle: direction: must not be zero");
-  for (int i = 0; i < dim; ++i) def.obstacleDirection[i] = direction[i] / norm;
+  std::array<double, 3> unit{{0.0, 0.0, 0.0}};
+  for (int i = 0; i < dim; ++i) unit[i] = direction[i] / norm;
 
   const std::string type = contact.get<std::string>("gap: type");
   const double g0 = contact.get<double>("gap: value");
@@ -195,12 +196,12 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
   } else {
     text = contact.get<std::string>("gap: expression");
   }
-  def.gap.emplace(text, "Problem/Contact/gap");
   const std::string formulation = contact.get<std::string>("formulation");
   const bool dual = formulation == "dual mortar" || (formulation == "auto" && def.degree > 1);
-  def.contactFormulation = formulation == "weighted gap" ? ContactFormulation::weightedGap
-                           : dual                        ? ContactFormulation::dualMortar
-                                                         : ContactFormulation::nodal;
+  def.contact = ContactPair{boundary, unit, Expression(text, "Problem/Contact/gap"),
+                            formulation == "weighted gap" ? ContactFormulation::weightedGap
+                            : dual                        ? ContactFormulation::dualMortar
+                                                          : ContactFormulation::nodal};
 }
 
 }  // namespace
@@ -235,12 +236,12 @@ ProblemDefinition detail::definitionOf(const ParameterList& p, int meshDim) {
     throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
 
   def.degree = p.get<int>("element: degree");
-  def.material.youngsModulus = p.get<double>("material: young's modulus");
-  def.material.poissonRatio = p.get<double>("material: poisson ratio");
-  def.material.planeStrain = p.get<bool>("material: plane strain");
+  def.body.material.youngsModulus = p.get<double>("material: young's modulus");
+  def.body.material.poissonRatio = p.get<double>("material: poisson ratio");
+  def.body.material.planeStrain = p.get<bool>("material: plane strain");
   for (int i = 0; i < dim; ++i) {
     std::string name = std::string("body force: ") + kAxes[i];
-    def.bodyForce.emplace_back(p.get<std::string>(name), "Problem/" + name);
+    def.body.bodyForce.emplace_back(p.get<std::string>(name), "Problem/" + name);
   }
   const int q = p.get<int>("load: quadrature degree");
   def.loadQuadratureDegree = q < 0 ? def.degree + 4 : q;

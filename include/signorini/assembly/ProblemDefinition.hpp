@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// What the user asks to solve: mesh source, element degree, material, loads, boundary
-/// conditions and obstacle; what the assembly turns into a ContactQP. readProblemDefinition
-/// (ProblemParameters.hpp) fills it from the "Problem" parameter list.
+/// What the user asks to solve: mesh source, element degree, the body (material, body
+/// force), boundary conditions and the contact pair; what the assembly turns into a
+/// ContactQP. readProblemDefinition (ProblemParameters.hpp) fills it from the "Problem"
+/// parameter list, each part from its own sublist or parameters.
 #include <array>
 #include <optional>
 #include <string>
@@ -34,6 +35,20 @@ enum class ContactFormulation { nodal, weightedGap, dualMortar };
 /// Whether the constraints are integrals against multiplier functions (weighted gaps).
 inline bool isWeightedGap(ContactFormulation f) { return f != ContactFormulation::nodal; }
 
+/// The elastic body: its material and the body force on it.
+struct Body {
+  IsotropicMaterial material;
+  std::vector<Expression> bodyForce;  ///< dim components
+};
+
+/// Frictionless contact of a boundary of the body with a rigid obstacle.
+struct ContactPair {
+  std::string boundary;  ///< the body's contact boundary Gamma_c (a boundary name)
+  std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body
+  Expression gap;  ///< g(x), the distance to the obstacle along obstacleDirection
+  ContactFormulation formulation = ContactFormulation::nodal;
+};
+
 struct ProblemDefinition {
   std::string name;
   std::string meshType;  ///< "box" or "gmsh"
@@ -44,8 +59,7 @@ struct ProblemDefinition {
   double meshSizeFactor = 1.0;  ///< of a .geo geometry
   int meshRefinements = 0;      ///< uniform refinements of a Gmsh mesh
   int degree = 1;
-  IsotropicMaterial material;
-  std::vector<Expression> bodyForce;  ///< dim components
+  Body body;
   int loadQuadratureDegree = 5;
   /// Q applied cell by cell (assembled as well for P1); by default of degree 2 and 3
   bool matrixFreeStiffness = false;
@@ -53,10 +67,7 @@ struct ProblemDefinition {
   /// (MeshVertexGrid::Refinement::atNodes) instead of the mesh's own cells
   bool gridRefinedAtNodes = false;
   std::vector<BoundaryField> dirichlet, traction;
-  std::string contactBoundary;
-  std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body
-  std::optional<Expression> gap;
-  ContactFormulation contactFormulation = ContactFormulation::nodal;
+  std::optional<ContactPair> contact;  ///< none: no contact
 };
 
 }  // namespace signorini
