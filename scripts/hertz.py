@@ -197,6 +197,9 @@ def main():
             results["rows"] += rows
             results["profiles"] += profiles
             key = example + "".join(": " + part for part in (args.formulation, args.recovery) if part)
+            if key == example:  # every row of the study is new: so is its only provenance
+                results["provenance"] = {k: v for k, v in results["provenance"].items()
+                                         if k != example and not k.startswith(example + ": ")}
             results["provenance"][key] = provenance(args, summary)
             if example == "deep-block-3d" and args.formulation in (None, "nodal") and args.recovery in (None, "auto"):
                 results["force_approach"] = force_approach(args, tmp)

@@ -35,11 +35,15 @@ def cited_sets():
     return sorted(name for name in names if os.path.isfile(os.path.join(ROOT, "bench", "results", name + ".json")))
 
 
-def recorded_commit(name):
+def recorded_commits(name):
+    """The commits the set records: one, or one per part for a set rerun in parts (such as
+    hertz.json's studies)."""
     with open(os.path.join(ROOT, "bench", "results", name + ".json")) as f:
         data = json.load(f)
     made = data.get("provenance", {}) if isinstance(data, dict) else {}
-    return made.get("commit")
+    if "commit" in made or not made:
+        return [made.get("commit")]
+    return [part.get("commit") for part in made.values() if isinstance(part, dict)] or [None]
 
 
 def verdict(commit, last_code_change):
@@ -64,7 +68,7 @@ def main():
     stale = 0
     names = cited_sets()
     for name in names:
-        why = verdict(recorded_commit(name), last_code_change)
+        why = next(filter(None, (verdict(commit, last_code_change) for commit in recorded_commits(name))), None)
         print(f"bench/results/{name}.json: {why or 'current'}")
         stale += why is not None
     print(f"{stale} of {len(names)} cited result sets may not come from the current code")
