@@ -171,7 +171,8 @@ ContactConstraints nodalConstraints(const DistributedSpace& ds, const ContactPai
 }
 
 // The graph of the weighted-gap rows: each contact node's row holds the DOFs, in the
-// obstacle direction, of the nodes of the contact facets around it. Rows: the owned
+// obstacle direction, of the nodes of the contact facets around it that its multiplier
+// function couples to (all of them but for the dual basis). Rows: the owned
 // constraints, then the others this rank's facets touch (FECrsGraph wants the owned rows
 // as a prefix).
 struct WeightedGapGraph {

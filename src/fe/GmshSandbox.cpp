@@ -88,8 +88,19 @@ bool readableWithin(int fd, double seconds) {
 
 }  // namespace
 
-void answerFromChild(const std::string& subject, const std::string& doing, double limit,
-                     const std::function<void(int)>& work, const std::function<bool(int)>& receive) {
+namespace {
+
+// How one child ended: its answer received, an error it reported ('I', 'E' and the message),
+// or neither (its exit status or signal in `status`).
+struct ChildEnd {
+  bool complete = false;
+  char kind = 0;
+  std::string message;
+  int status = 0;
+};
+
+ChildEnd runChild(const std::string& subject, const std::string& doing, double limit,
+                  const std::function<void(int)>& work, const std::function<bool(int)>& receive) {
   int fds[2];
   if (::pipe(fds) != 0) throw Error(subject + ": cannot create a pipe for " + doing);
   std::fflush(nullptr);
@@ -104,10 +115,10 @@ void answerFromChild(const std::string& subject, const std::string& doing, doubl
     answerInChild(fds[1], work);
   }
   ::close(fds[1]);
-  int status = 0;
+  ChildEnd end;
   if (!readableWithin(fds[0], limit)) {
     ::kill(child, SIGKILL);
-    while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+    while (::waitpid(child, &end.status, 0) < 0 && errno == EINTR) {
     }
     ::close(fds[0]);
     std::ostringstream seconds;
@@ -115,20 +126,33 @@ void answerFromChild(const std::string& subject, const std::string& doing, doubl
     throw InputError(subject + ": Gmsh did not finish " + doing + " within " + seconds.str() +
                      " s; check that it is a valid Gmsh file (gmsh -check FILE)");
   }
-  char kind = 0;
-  std::string message;
-  const bool answered = readAll(fds[0], &kind, 1);
-  const bool complete = answered && kind == 'A' && receive(fds[0]);
-  if (answered && kind != 'A')
-    for (char c; readAll(fds[0], &c, 1);) message += c;
+  const bool answered = readAll(fds[0], &end.kind, 1);
+  end.complete = answered && end.kind == 'A' && receive(fds[0]);
+  if (answered && end.kind != 'A')
+    for (char c; readAll(fds[0], &c, 1);) end.message += c;
   ::close(fds[0]);
-  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  while (::waitpid(child, &end.status, 0) < 0 && errno == EINTR) {
   }
-  if (complete) return;
-  if (kind == 'I') throw InputError(message);
-  if (kind == 'E') throw Error(message);
-  const std::string how = WIFSIGNALED(status) ? std::string("crashed (") + strsignal(WTERMSIG(status)) + ")"
-                                               : "stopped with exit status " + std::to_string(WEXITSTATUS(status));
+  return end;
+}
+
+}  // namespace
+
+// A child that ends without an answer or an error of its own is started once more before the
+// file is blamed: such an end can come from the machine (a transient failure of the process
+// under load) as well as from the file, and a file that makes Gmsh fail does so again.
+void answerFromChild(const std::string& subject, const std::string& doing, double limit,
+                     const std::function<void(int)>& work, const std::function<bool(int)>& receive) {
+  ChildEnd end;
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    end = runChild(subject, doing, limit, work, receive);
+    if (end.complete) return;
+    if (end.kind == 'I') throw InputError(end.message);
+    if (end.kind == 'E') throw Error(end.message);
+  }
+  const std::string how = WIFSIGNALED(end.status)
+                              ? std::string("crashed (") + strsignal(WTERMSIG(end.status)) + ")"
+                              : "stopped with exit status " + std::to_string(WEXITSTATUS(end.status));
   throw InputError(subject + ": Gmsh " + how + " while " + doing +
                    "; check that it is a valid Gmsh file (gmsh -check FILE)");
 }
