@@ -156,10 +156,6 @@ RCP<Vector> jacobiScaling(const CrsMatrix& M) {
   return scaling;
 }
 
-}  // namespace
-
-namespace {
-
 // Without contact there are no constraints; nodal is the trivial basis.
 ContactFormulation formulationOf(const ProblemDefinition& problem) {
   return problem.contact ? problem.contact->formulation : ContactFormulation::nodal;
