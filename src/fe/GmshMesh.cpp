@@ -122,7 +122,10 @@ class GmshSession {
         gmsh::model::remove();
       }
       if (savedModel_) gmsh::model::setCurrent(callerModel_);
-      if (savedTerminal_) gmsh::option::setNumber("General.Terminal", callerTerminal_);
+      if (savedTerminal_) {
+        gmsh::option::setNumber("General.Terminal", callerTerminal_);
+        gmsh::option::setNumber("General.Verbosity", callerVerbosity_);
+      }
     } catch (...) {
       // Nothing sensible to do about a failing clean-up; never throw from a destructor.
     }
@@ -131,9 +134,12 @@ class GmshSession {
   void load(const std::string& path) {
     if (!owner_) {
       gmsh::option::getNumber("General.Terminal", callerTerminal_);
+      gmsh::option::getNumber("General.Verbosity", callerVerbosity_);
       savedTerminal_ = true;
     }
-    gmsh::option::setNumber("General.Terminal", 0);
+    // Errors only, on standard error: the sandbox shows them when Gmsh exits on one.
+    gmsh::option::setNumber("General.Terminal", 1);
+    gmsh::option::setNumber("General.Verbosity", 1);
     if (owner_) {
       gmsh::open(path);
       return;
@@ -150,6 +156,7 @@ class GmshSession {
   bool owner_;
   bool savedTerminal_ = false;
   double callerTerminal_ = 0;
+  double callerVerbosity_ = 0;
   bool savedModel_ = false;
   std::string callerModel_;
   bool addedModel_ = false;

@@ -12,7 +12,9 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <memory>
 #include <sstream>
+#include <thread>
 
 #include "signorini/core/Error.hpp"
 
@@ -91,18 +93,40 @@ bool readableWithin(int fd, double seconds) {
 namespace {
 
 // How one child ended: its answer received, an error it reported ('I', 'E' and the message),
-// or neither (its exit status or signal in `status`).
+// or neither (its exit status or signal in `status`, the end of what it printed in `printed`).
 struct ChildEnd {
   bool complete = false;
   char kind = 0;
   std::string message;
   int status = 0;
+  std::string printed;  // " (it printed: ...)" or ""
 };
+
+// The last lines (at most `limit` characters, whole lines) written to `file`, on one line.
+std::string lastLinesOf(std::FILE* file, long limit = 600) {
+  if (std::fseek(file, 0, SEEK_END) != 0) return "";
+  const long size = std::ftell(file);
+  std::fseek(file, std::max(0L, size - limit), SEEK_SET);
+  std::string text;
+  for (int c; (c = std::fgetc(file)) != EOF;) text += static_cast<char>(c);
+  if (size > limit && text.find('\n') != std::string::npos) text.erase(0, text.find('\n') + 1);
+  std::replace(text.begin(), text.end(), '\n', ' ');
+  while (!text.empty() && text.back() == ' ') text.pop_back();
+  return text;
+}
+
+// " (it printed: <its last lines>)", or "" if the child printed nothing.
+std::string printedBy(std::FILE* file) {
+  const std::string text = file ? lastLinesOf(file) : "";
+  return text.empty() ? "" : " (it printed: " + text + ")";
+}
 
 ChildEnd runChild(const std::string& subject, const std::string& doing, double limit,
                   const std::function<void(int)>& work, const std::function<bool(int)>& receive) {
   int fds[2];
   if (::pipe(fds) != 0) throw Error(subject + ": cannot create a pipe for " + doing);
+  // The child's standard error: what Gmsh says before it exits is shown if the child fails.
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> printed(std::tmpfile(), &std::fclose);
   std::fflush(nullptr);
   const pid_t child = ::fork();
   if (child < 0) {
@@ -112,6 +136,7 @@ ChildEnd runChild(const std::string& subject, const std::string& doing, double l
   }
   if (child == 0) {
     ::close(fds[0]);
+    if (printed) ::dup2(::fileno(printed.get()), STDERR_FILENO);
     answerInChild(fds[1], work);
   }
   ::close(fds[1]);
@@ -123,8 +148,8 @@ ChildEnd runChild(const std::string& subject, const std::string& doing, double l
     ::close(fds[0]);
     std::ostringstream seconds;
     seconds << limit;
-    throw InputError(subject + ": Gmsh did not finish " + doing + " within " + seconds.str() +
-                     " s; check that it is a valid Gmsh file (gmsh -check FILE)");
+    throw InputError(subject + ": Gmsh did not finish " + doing + " within " + seconds.str() + " s" +
+                     printedBy(printed.get()) + "; check that it is a valid Gmsh file (gmsh -check FILE)");
   }
   const bool answered = readAll(fds[0], &end.kind, 1);
   end.complete = answered && end.kind == 'A' && receive(fds[0]);
@@ -133,18 +158,22 @@ ChildEnd runChild(const std::string& subject, const std::string& doing, double l
   ::close(fds[0]);
   while (::waitpid(child, &end.status, 0) < 0 && errno == EINTR) {
   }
+  end.printed = printedBy(printed.get());
   return end;
 }
 
 }  // namespace
 
-// A child that ends without an answer or an error of its own is started once more before the
-// file is blamed: such an end can come from the machine (a transient failure of the process
-// under load) as well as from the file, and a file that makes Gmsh fail does so again.
+// A child that ends without an answer or an error of its own is started again, after a
+// pause, before the file is blamed: such an end can come from the machine (a transient
+// failure of the process under load) as well as from the file, and a file that makes Gmsh
+// fail does so every time.
 void answerFromChild(const std::string& subject, const std::string& doing, double limit,
                      const std::function<void(int)>& work, const std::function<bool(int)>& receive) {
+  constexpr int kAttempts = 3;
   ChildEnd end;
-  for (int attempt = 0; attempt < 2; ++attempt) {
+  for (int attempt = 0; attempt < kAttempts; ++attempt) {
+    if (attempt > 0) std::this_thread::sleep_for(std::chrono::milliseconds(500 * attempt));
     end = runChild(subject, doing, limit, work, receive);
     if (end.complete) return;
     if (end.kind == 'I') throw InputError(end.message);
@@ -153,7 +182,7 @@ void answerFromChild(const std::string& subject, const std::string& doing, doubl
   const std::string how = WIFSIGNALED(end.status)
                               ? std::string("crashed (") + strsignal(WTERMSIG(end.status)) + ")"
                               : "stopped with exit status " + std::to_string(WEXITSTATUS(end.status));
-  throw InputError(subject + ": Gmsh " + how + " while " + doing +
+  throw InputError(subject + ": Gmsh " + how + " while " + doing + end.printed +
                    "; check that it is a valid Gmsh file (gmsh -check FILE)");
 }
 

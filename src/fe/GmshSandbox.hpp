@@ -34,7 +34,7 @@ bool receiveArray(int fd, std::vector<T>& values) {
 // Runs `work` in a forked child and `receive` on its answer ('A' and the data); the child's
 // errors, crash or silence past `limit` seconds (negative: none) are thrown here, naming
 // the file (`subject`, e.g. "Gmsh mesh file 'x.msh'") and what the child was `doing` with it.
-// A child that crashes or exits without answering is run a second time before that is thrown.
+// A child that crashes or exits without answering is run twice more before that is thrown.
 void answerFromChild(const std::string& subject, const std::string& doing, double limit,
                      const std::function<void(int)>& work, const std::function<bool(int)>& receive);
 

@@ -1,5 +1,6 @@
 // The forked child that runs Gmsh: its answer comes back, its own errors are thrown as they
-// are, and a child that ends without answering is run once more before the file is blamed.
+// are, what it printed before it failed is shown, and a child that ends without answering is run
+// again before the file is blamed.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -38,7 +39,7 @@ struct Attempts {
 
 const auto receiveInt = [](int& into) { return [&into](int fd) { return readAll(fd, &into, sizeof into); }; };
 
-TEST(GmshSandbox, AChildThatEndsWithoutAnswerIsRunOnceMore) {
+TEST(GmshSandbox, AChildThatEndsWithoutAnswerIsRunAgain) {
   const Attempts attempts;
   int answer = 0;
   answerFromChild("test file", "testing", 30, [&](int fd) {
@@ -63,14 +64,19 @@ std::string inputErrorOf(const Work& work) {
   return "";
 }
 
-TEST(GmshSandbox, AChildThatAlwaysFailsIsBlamedOnTheFileAfterTwoRuns) {
+TEST(GmshSandbox, AChildThatAlwaysFailsIsBlamedOnTheFileAfterThreeRuns) {
   const Attempts attempts;
   const std::string message = inputErrorOf([&](int) {
     attempts.record();
+    std::fputs("Info    : reading\nFatal   : out of fuel\n", stderr);
+    std::fflush(stderr);
     _exit(1);
   });
-  EXPECT_NE(message.find("test file 'x.geo': Gmsh stopped with exit status 1"), std::string::npos) << message;
-  EXPECT_EQ(linesIn(attempts.path), 2);
+  EXPECT_NE(message.find("test file 'x.geo': Gmsh stopped with exit status 1 while testing (it printed: "
+                         "Info    : reading Fatal   : out of fuel)"),
+            std::string::npos)
+      << message;
+  EXPECT_EQ(linesIn(attempts.path), 3);
 }
 
 TEST(GmshSandbox, AnErrorTheChildReportsIsThrownAtOnce) {
