@@ -16,6 +16,8 @@
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "assembly/CellBodies.hpp"
+#include "assembly/MortarConstraints.hpp"
 #include "assembly/OverlapStiffness.hpp"
 #include "assembly/SummedRows.hpp"
 #include "core/Collectives.hpp"
@@ -356,7 +358,7 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
 
 RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const std::shared_ptr<const DistributedSpace>& ds,
                                                       const ProblemDefinition& problem) {
-  return rcp(new MatrixFreeElasticityOperator(ds, problem.body.material, dirichletData(*ds, problem).fixed));
+  return rcp(new MatrixFreeElasticityOperator(ds, CellBodies(ds->mesh(), problem), dirichletData(*ds, problem).fixed));
 }
 
 RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDefinition& problem,
@@ -364,6 +366,7 @@ RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDe
   const LagrangeSpace& space = ds.space();
   const int dim = ds.dim(), n = dim * (dim + 1);
   const std::vector<char> fixed = dirichletData(ds, problem).fixed;
+  const CellBodies bodies(ds.mesh(), problem);
   // The grid's cells in each mesh cell, as local nodes: the cell itself, or its split at the
   // nodes. Their nodes are the grid's vertices.
   const LagrangeBasis linear(dim, 1);
@@ -387,7 +390,7 @@ RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDe
         vertices[v] = space.cellNodes(cell)[piece[v]];
         std::copy_n(&space.nodeCoordinates()[dim * vertices[v]], dim, &vertexCoords[dim * v]);
       }
-      elasticityStiffness(linear, vertexCoords.data(), problem.body.material, Ke);
+      elasticityStiffness(linear, vertexCoords.data(), bodies.of(cell).material, Ke);
       for (int a = 0; a < n; ++a) {
         if (fixed[dof(a)]) continue;
         for (int b = 0; b < n; ++b)
@@ -450,18 +453,22 @@ class CellDofs {
 void assembleCells(const DistributedSpace& ds, const ProblemDefinition& problem, CellDofs& cell,
                    OverlapStiffness* K, Vector& bOverlap) {
   const int dim = ds.dim(), npc = ds.space().nodesPerCell(), n = dim * npc;
+  const CellBodies bodies(ds.mesh(), problem);
   // Expressions are evaluated at every quadrature point of every cell: skip the zero ones.
-  std::vector<char> zeroForce(dim);
-  for (int c = 0; c < dim; ++c) zeroForce[c] = problem.body.bodyForce[c].isConstantZero();
+  std::vector<std::vector<char>> zeroForce(bodies.numBodies(), std::vector<char>(dim));
+  for (int b = 0; b < bodies.numBodies(); ++b)
+    for (int c = 0; c < dim; ++c) zeroForce[b][c] = bodies.body(b).bodyForce[c].isConstantZero();
+  int body = 0;  // of the cell being assembled
   const auto force = [&](int count, const double* x, double* f) {
     for (int c = 0; c < dim; ++c)
-      if (!zeroForce[c]) problem.body.bodyForce[c].evaluate(count, x, dim, f + c * count);
+      if (!zeroForce[body][c]) bodies.body(body).bodyForce[c].evaluate(count, x, dim, f + c * count);
   };
   std::vector<double> Ke, Fe;
   auto bData = bOverlap.getDataNonConst();
   for (long long c = 0; c < ds.mesh().numCells(); ++c) {
     cell.gather(c);
-    elasticityStiffness(ds.space().basis(), cell.vertexCoords.data(), problem.body.material, Ke);
+    body = bodies.indexOf(c);
+    elasticityStiffness(ds.space().basis(), cell.vertexCoords.data(), bodies.body(body).material, Ke);
     bodyForceLoad(ds.space().basis(), cell.vertexCoords.data(), force, problem.loadQuadratureDegree, Fe);
     eliminatePrescribed(cell.fixed, cell.value, n, Ke, Fe);
     if (K) K->addElementMatrix(dim, npc, cell.rows.data(), cell.cols.data(), Ke.data());
@@ -509,9 +516,9 @@ RCP<Vector> prescribeOnOwners(const DistributedSpace& ds, const DirichletData& d
   return b;
 }
 
-// One constraint per contact node (weighted gaps: per contact vertex), in the formulation the
-// problem asks for; contact nodes whose displacement towards the obstacle is prescribed into
-// contact are refused.
+// One constraint per contact node, in the formulation the problem asks for, against the
+// rigid obstacle (contact nodes whose displacement towards it is prescribed into contact are
+// refused) or the master boundary of another body.
 ContactConstraints contactConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
                                       const DirichletData& dirichlet) {
   const OwnedContactNodes contact = ownedContactNodes(ds, problem);
@@ -523,6 +530,10 @@ ContactConstraints contactConstraints(const DistributedSpace& ds, const ProblemD
     auto A = rcp(new CrsMatrix(constraintMap, 0));
     A->fillComplete(ds.ownedDofMap(), constraintMap);
     return {A, rcp(new Vector(constraintMap))};
+  }
+  if (!problem.contact->masterBoundary.empty()) {
+    const MortarRows rows = mortarConstraints(ds, problem, overlapNodeConstraints(ds, problem), constraintMap);
+    return {rows.A, rows.d};
   }
   checkPrescribedContactNodes(ds, problem, dirichlet, contact.nodes);
   return isWeightedGap(problem.contact->formulation)
@@ -548,6 +559,9 @@ RCP<MultiVector> ownedNodeCoordinates(const DistributedSpace& ds) {
 ContactQP assembleContactQP(const DistributedSpace& ds, const ProblemDefinition& problem, bool assembleStiffness) {
   const int dim = ds.dim();
   const DirichletData dirichlet = dirichletData(ds, problem);
+  for (const Body& body : problem.bodies)
+    if (body.bodyForce.size() != static_cast<std::size_t>(dim))
+      throw InputError("Problem/Bodies/" + body.name + ": the body force needs " + std::to_string(dim) + " components");
   if (problem.body.bodyForce.size() != static_cast<std::size_t>(dim))
     throw InputError("Problem: the body force needs " + std::to_string(dim) + " components");
 

@@ -56,6 +56,7 @@ MeshPart GlobalPartition::part(int rank) {
   SimplexMesh& mesh = part.mesh;
   mesh.dim = d;
   mesh.boundaryTags = mesh_.boundaryTags;
+  mesh.bodyTags = mesh_.bodyTags;
   part.globalCells.assign(partCells_.begin() + cellStart_[rank], partCells_.begin() + cellStart_[rank + 1]);
 
   // Vertices in global order; a vertex's node id is its vertex id in either space.
@@ -78,6 +79,8 @@ MeshPart GlobalPartition::part(int rank) {
   mesh.cells.reserve((d + 1) * part.globalCells.size());
   for (long long cell : part.globalCells)
     for (int v = 0; v <= d; ++v) mesh.cells.push_back(localNode_[mesh_.cells[(d + 1) * cell + v]]);
+  if (!mesh_.cellTags.empty())
+    for (long long cell : part.globalCells) mesh.cellTags.push_back(mesh_.cellTags[cell]);
   for (long long i = facetStart_[rank]; i < facetStart_[rank + 1]; ++i) {
     const long long facet = partFacets_[i];
     for (int v = 0; v < d; ++v) mesh.facets.push_back(localNode_[mesh_.facets[d * facet + v]]);

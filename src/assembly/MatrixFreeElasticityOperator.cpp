@@ -15,13 +15,13 @@
 namespace signorini {
 
 MatrixFreeElasticityOperator::MatrixFreeElasticityOperator(std::shared_ptr<const DistributedSpace> shared,
-                                                           const IsotropicMaterial& material,
+                                                           CellBodies bodies,
                                                            const std::vector<char>& fixedSpaceDofs)
-    : space_(std::move(shared)),
-      ds_(*space_),
-      material_(material),
-      lambda_(material.effectiveLame1(ds_.dim())),
-      mu_(material.lame2()) {
+    : space_(std::move(shared)), ds_(*space_), bodies_(std::move(bodies)) {
+  for (int b = 0; b < bodies_.numBodies(); ++b) {
+    lambda_.push_back(bodies_.body(b).material.effectiveLame1(ds_.dim()));
+    mu_.push_back(bodies_.body(b).material.lame2());
+  }
   const DistributedSpace& ds = ds_;
   const LagrangeSpace& space = ds.space();
   const LagrangeBasis& basis = space.basis();
@@ -82,6 +82,7 @@ void MatrixFreeElasticityOperator::applyCellsOf(const double* x, double* y) cons
     const double* geometry = &cellGeometry_[cell * (1 + D * D)];
     const double volume = geometry[0];
     const double* Jinv = geometry + 1;  // Jinv[s * D + e] = d xi_s / d x_e
+    const double lambda = lambda_[bodies_.indexOf(cell)], mu = mu_[bodies_.indexOf(cell)];
     for (int a = 0; a < NPC; ++a)
       for (int c = 0; c < D; ++c) {
         const int dof = D * nodes[a] + c;
@@ -104,7 +105,7 @@ void MatrixFreeElasticityOperator::applyCellsOf(const double* x, double* y) cons
       double sigma[D][D];
       for (int c = 0; c < D; ++c)
         for (int e = 0; e < D; ++e)
-          sigma[c][e] = w * (mu_ * (gradU[c][e] + gradU[e][c]) + (c == e ? lambda_ * trace : 0.0));
+          sigma[c][e] = w * (mu * (gradU[c][e] + gradU[e][c]) + (c == e ? lambda * trace : 0.0));
       double S[D][D] = {};  // S[c][s] = sum_e sigma[c][e] d xi_s / d x_e
       for (int c = 0; c < D; ++c)
         for (int s = 0; s < D; ++s)
@@ -130,6 +131,7 @@ void MatrixFreeElasticityOperator::diagonalOfCells(double* d) const {
     const int* nodes = &cellNodes_[cell * npc];
     const double* geometry = &cellGeometry_[cell * (1 + D * D)];
     const double* Jinv = geometry + 1;
+    const double lambda = lambda_[bodies_.indexOf(cell)], mu = mu_[bodies_.indexOf(cell)];
     for (int q = 0; q < numPoints_; ++q) {
       const double* dphi = &gradients_[q * npc * D];
       const double w = weights_[q] * geometry[0];
@@ -142,7 +144,7 @@ void MatrixFreeElasticityOperator::diagonalOfCells(double* d) const {
         }
         for (int c = 0; c < D; ++c) {
           const int dof = D * nodes[a] + c;
-          if (!fixed_[dof]) d[dof] += w * (mu_ * (squared + g[c] * g[c]) + lambda_ * g[c] * g[c]);
+          if (!fixed_[dof]) d[dof] += w * (mu * (squared + g[c] * g[c]) + lambda * g[c] * g[c]);
         }
       }
     }
@@ -217,7 +219,7 @@ RCP<CrsMatrix> MatrixFreeElasticityOperator::selectedRows(const Vector& selected
     for (int a = 0; a < n && !touched; ++a) touched = chosen[dofOf(nodes, a)] != 0.0;
     if (!touched) continue;
     ds_.mesh().cellVertexCoordinates(cell, vertexCoords.data());
-    elasticityStiffness(ds_.space().basis(), vertexCoords.data(), material_, Ke);
+    elasticityStiffness(ds_.space().basis(), vertexCoords.data(), bodies_.of(cell).material, Ke);
     for (int a = 0; a < n; ++a) {
       const int row = dofOf(nodes, a);
       if (chosen[row] == 0.0 || fixed_[row]) continue;
@@ -236,7 +238,7 @@ std::size_t MatrixFreeElasticityOperator::bytes() const {
     if (!v.is_null()) work += v->getLocalLength() * v->getNumVectors() * sizeof(double);
   return weights_.capacity() * sizeof(double) + gradients_.capacity() * sizeof(double) +
          cellNodes_.capacity() * sizeof(int) + cellGeometry_.capacity() * sizeof(double) + fixed_.capacity() +
-         ownedFixed_.capacity() * sizeof(LocalOrdinal) + work;
+         ownedFixed_.capacity() * sizeof(LocalOrdinal) + bodies_.bytes() + work;
 }
 
 }  // namespace signorini

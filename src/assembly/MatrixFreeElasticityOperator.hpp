@@ -10,6 +10,7 @@
 #include <memory>
 #include <vector>
 
+#include "assembly/CellBodies.hpp"
 #include "assembly/DistributedSpace.hpp"
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/fe/IsotropicMaterial.hpp"
@@ -19,9 +20,9 @@ namespace signorini {
 
 class MatrixFreeElasticityOperator : public StiffnessOperator {
  public:
-  // fixedSpaceDofs: 1 for a prescribed DOF, indexed dim * (node of ds->space()) + component.
-  // Shares ds, on whose cells it applies Q.
-  MatrixFreeElasticityOperator(std::shared_ptr<const DistributedSpace> ds, const IsotropicMaterial& material,
+  // fixedSpaceDofs: 1 for a prescribed DOF, indexed dim * (node of ds->space()) + component;
+  // bodies: the material of each cell of ds->mesh(). Shares ds, on whose cells it applies Q.
+  MatrixFreeElasticityOperator(std::shared_ptr<const DistributedSpace> ds, CellBodies bodies,
                                const std::vector<char>& fixedSpaceDofs);
 
   // Y = beta Y + alpha Q X; Q is symmetric, so every mode applies Q.
@@ -56,8 +57,8 @@ class MatrixFreeElasticityOperator : public StiffnessOperator {
 
   std::shared_ptr<const DistributedSpace> space_;
   const DistributedSpace& ds_;  // *space_
-  IsotropicMaterial material_;
-  double lambda_, mu_;
+  CellBodies bodies_;
+  std::vector<double> lambda_, mu_;  // per body
   int numPoints_ = 0;
   std::vector<double> weights_;          // reference quadrature weights
   std::vector<double> gradients_;        // [point][node][reference direction]

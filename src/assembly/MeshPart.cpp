@@ -75,6 +75,7 @@ void forEachArray(Part& part, Visit&& visit) {
   visit(part.mesh.cells);
   visit(part.mesh.facets);
   visit(part.mesh.facetTags);
+  visit(part.mesh.cellTags);
   visit(part.globalCells);
   visit(part.nodeIds);
   visit(part.nodeOwners);
@@ -128,24 +129,27 @@ std::vector<GlobalOrdinal> ownerOrderedIds(const RCP<const Comm>& comm, const st
 void sendMeshPart(const Comm& comm, const MeshPart& part, int destination) {
   Packer p;
   p.put(std::vector<int>{part.mesh.dim});
-  std::vector<int> tags;
-  for (const auto& [name, tag] : part.mesh.boundaryTags) {
-    p.put(name);
-    tags.push_back(tag);
+  for (const auto* named : {&part.mesh.boundaryTags, &part.mesh.bodyTags}) {
+    std::vector<int> tags;
+    for (const auto& [name, tag] : *named) {
+      p.put(name);
+      tags.push_back(tag);
+    }
+    p.put(tags);
   }
-  p.put(tags);
   forEachArray(part, [&](const auto& values) { p.put(values); });
   const std::vector<char>& bytes = p.bytes();
-  const long long sizes[2] = {static_cast<long long>(bytes.size()),
-                              static_cast<long long>(part.mesh.boundaryTags.size())};
-  Teuchos::send(comm, 2, sizes, destination);
+  const long long sizes[3] = {static_cast<long long>(bytes.size()),
+                              static_cast<long long>(part.mesh.boundaryTags.size()),
+                              static_cast<long long>(part.mesh.bodyTags.size())};
+  Teuchos::send(comm, 3, sizes, destination);
   for (long long at = 0; at < sizes[0]; at += kChunk)
     Teuchos::send(comm, static_cast<int>(std::min(kChunk, sizes[0] - at)), bytes.data() + at, destination);
 }
 
 MeshPart receiveMeshPart(const Comm& comm, int source) {
-  long long sizes[2] = {0, 0};
-  Teuchos::receive(comm, source, 2, sizes);
+  long long sizes[3] = {0, 0, 0};
+  Teuchos::receive(comm, source, 3, sizes);
   std::vector<char> bytes(sizes[0]);
   for (long long at = 0; at < sizes[0]; at += kChunk)
     Teuchos::receive(comm, source, static_cast<int>(std::min(kChunk, sizes[0] - at)), bytes.data() + at);
@@ -156,12 +160,15 @@ MeshPart receiveMeshPart(const Comm& comm, int source) {
   u.get(dim);
   if (dim.size() != 1) throw Error("mesh part: malformed message");
   part.mesh.dim = dim[0];
-  std::vector<std::string> names(sizes[1]);
-  for (std::string& name : names) u.get(name);
-  std::vector<int> tags;
-  u.get(tags);
-  if (tags.size() != names.size()) throw Error("mesh part: malformed message");
-  for (std::size_t i = 0; i < names.size(); ++i) part.mesh.boundaryTags[names[i]] = tags[i];
+  for (int k = 0; k < 2; ++k) {
+    std::vector<std::string> names(sizes[1 + k]);
+    for (std::string& name : names) u.get(name);
+    std::vector<int> tags;
+    u.get(tags);
+    if (tags.size() != names.size()) throw Error("mesh part: malformed message");
+    auto& named = k == 0 ? part.mesh.boundaryTags : part.mesh.bodyTags;
+    for (std::size_t i = 0; i < names.size(); ++i) named[names[i]] = tags[i];
+  }
   forEachArray(part, [&](auto& values) { u.get(values); });
   return part;
 }

@@ -73,6 +73,7 @@ RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefine
   SimplexMesh& mesh = result.mesh;
   mesh.dim = d;
   mesh.boundaryTags = coarse.boundaryTags;
+  mesh.bodyTags = coarse.bodyTags;
 
   // The ids of every coarse cell's lattice points; the vertices are their distinct values.
   const auto& points = refinement.points(level);
@@ -100,6 +101,9 @@ RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefine
   for (long long c = 0; c < coarse.numCells(); ++c)
     for (const std::array<int, 4>& cell : refinement.cellPoints(level))
       for (int v = 0; v <= d; ++v) mesh.cells.push_back(pointIds[c * perCell + cell[v]]);
+  if (!coarse.cellTags.empty())  // children are in their parent's body
+    for (long long c = 0; c < coarse.numCells(); ++c)
+      mesh.cellTags.insert(mesh.cellTags.end(), templateCells.size(), coarse.cellTags[c]);
   const auto localVertex = [&](long long id) { return std::lower_bound(ids.begin(), ids.end(), id) - ids.begin(); };
   if (!withFacets) return result;
 
@@ -135,6 +139,8 @@ DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, con
   part.mesh.facets = std::move(finest.mesh.facets);
   part.mesh.facetTags = std::move(finest.mesh.facetTags);
   part.mesh.boundaryTags = finest.mesh.boundaryTags;
+  part.mesh.cellTags = std::move(finest.mesh.cellTags);
+  part.mesh.bodyTags = finest.mesh.bodyTags;
   const long long perCoarse = static_cast<long long>(refinement.cells(levels).size());
   for (long long c = 0; c < lattice.mesh().numCells(); ++c)
     for (long long t = 0; t < perCoarse; ++t) part.globalCells.push_back(lattice.globalCell(c) * perCoarse + t);

@@ -6,6 +6,7 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "assembly/CellBodies.hpp"
 #include "assembly/DistributedSpace.hpp"
 #include "fe/ElasticityElement.hpp"
 
@@ -32,7 +33,7 @@ double vonMises(const double* s, int dim, const IsotropicMaterial& material) {
 }
 
 // The von Mises stress at each local cell's centroid, u on the overlap DOF map.
-std::vector<double> cellVonMises(const DistributedSpace& ds, const IsotropicMaterial& material, const Vector& u) {
+std::vector<double> cellVonMises(const DistributedSpace& ds, const CellBodies& bodies, const Vector& u) {
   const int dim = ds.dim();
   const LagrangeSpace& space = ds.space();
   const auto& overlap = ds.overlapSpaceNodes();
@@ -48,6 +49,7 @@ std::vector<double> cellVonMises(const DistributedSpace& ds, const IsotropicMate
     const long long* nodes = space.cellNodes(cell);
     for (int i = 0; i < npc; ++i)
       for (int c = 0; c < dim; ++c) local[dim * i + c] = ud[dim * localIndex[nodes[i]] + c];
+    const IsotropicMaterial& material = bodies.of(cell).material;
     cellStress(space.basis(), coords.data(), material, local.data(), centroid, sigma.data());
     mises.push_back(vonMises(sigma.data(), dim, material));
   }
@@ -84,7 +86,7 @@ SolutionFields solutionFields(const DistributedSpace& ds, const ProblemDefinitio
     const double* x = &ds.space().nodeCoordinates()[dim * overlap[i]];
     fields.gap.push_back(onContact[overlap[i]] ? problem.contact->gap(x, dim) + normalDisplacement : 0.0);
   }
-  fields.vonMisesStress = cellVonMises(ds, problem.body.material, u);
+  fields.vonMisesStress = cellVonMises(ds, CellBodies(ds.mesh(), problem), u);
   return fields;
 }
 

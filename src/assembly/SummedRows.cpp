@@ -28,7 +28,8 @@ RCP<const Map> SummedRows::addedRows(const RCP<const Comm>& comm) const {
   return rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ids), 0, comm));
 }
 
-RCP<CrsMatrix> SummedRows::onOwners(const RCP<const Map>& rowMap) const {
+RCP<CrsMatrix> SummedRows::onOwners(const RCP<const Map>& rowMap, RCP<const Map> domainMap) const {
+  if (domainMap.is_null()) domainMap = rowMap;
   const RCP<const Map> sourceRows = addedRows(rowMap->getComm());
   Teuchos::Array<std::size_t> counts;
   for (const auto& entries : rows_)
@@ -47,9 +48,9 @@ RCP<CrsMatrix> SummedRows::onOwners(const RCP<const Map>& rowMap) const {
     source->insertGlobalValues(rowIds_[i], Teuchos::ArrayView<const GlobalOrdinal>(columns),
                                Teuchos::ArrayView<const double>(values));
   }
-  source->fillComplete(rowMap, rowMap);
+  source->fillComplete(domainMap, rowMap);
   // Tpetra adds the entries that meet in one row of the target.
-  return Tpetra::exportAndFillCompleteCrsMatrix<CrsMatrix>(source, Export(sourceRows, rowMap), rowMap, rowMap);
+  return Tpetra::exportAndFillCompleteCrsMatrix<CrsMatrix>(source, Export(sourceRows, rowMap), domainMap, rowMap);
 }
 
 RCP<CrsMatrix> SummedRows::onOwners(const RCP<const Comm>& comm) const {

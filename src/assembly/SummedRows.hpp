@@ -17,9 +17,9 @@ class SummedRows {
 
   void add(std::size_t row, GlobalOrdinal column, double value);
 
-  // The rows summed over the ranks, on `rowMap` (one-to-one), which is also the domain and
-  // range map; rows no rank added to are empty. Collective.
-  RCP<CrsMatrix> onOwners(const RCP<const Map>& rowMap) const;
+  // The rows summed over the ranks, on `rowMap` (one-to-one), which is also the range map and,
+  // unless given, the domain map; rows no rank added to are empty. Collective.
+  RCP<CrsMatrix> onOwners(const RCP<const Map>& rowMap, RCP<const Map> domainMap = Teuchos::null) const;
   // The same on the one-to-one map of the rows added on all ranks.
   RCP<CrsMatrix> onOwners(const RCP<const Comm>& comm) const;
 

@@ -163,10 +163,13 @@ void writeDocumented(const Teuchos::ParameterList& list, const std::string& name
     if (!entry.docString().empty())
       out << indent << "  <!-- " << (isExpert(entry) ? kExpert : "") << commentText(entry.docString()) << " -->\n";
     if (key == kAnyNameSublist) {
-      // A template for user-named sublists: shown commented out, not a parameter.
+      // A template for user-named sublists: shown commented out, not a parameter. They are
+      // named after bodies in "Bodies", after boundaries elsewhere.
+      const std::string named = name == "Bodies" ? "body" : "boundary";
       std::ostringstream templ;
-      writeDocumented(Teuchos::getValue<Teuchos::ParameterList>(entry), "BOUNDARY NAME", depth + 1, all, templ);
-      out << indent << "  <!-- one sublist per boundary, named after it:\n" << commentText(templ.str()) << indent
+      writeDocumented(Teuchos::getValue<Teuchos::ParameterList>(entry), named == "body" ? "BODY NAME" : "BOUNDARY NAME",
+                      depth + 1, all, templ);
+      out << indent << "  <!-- one sublist per " << named << ", named after it:\n" << commentText(templ.str()) << indent
           << "  -->\n";
     } else if (entry.isList()) {
       writeDocumented(Teuchos::getValue<Teuchos::ParameterList>(entry), key, depth + 1, all, out);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <climits>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -55,6 +56,7 @@ struct ElementBlock {
   int type = 0;
   std::vector<Tag> elementTags;
   std::vector<Tag> nodeTags;  // numNodes(type) per element
+  int entity = -1;            // the geometric entity the elements belong to
 };
 
 struct BoundaryGroup {
@@ -67,6 +69,13 @@ std::string boundaryName(const BoundaryGroup& group) {
   return group.name.empty() ? "physical" + std::to_string(group.tag) : group.name;
 }
 
+// A physical group of the domain's dimension: a body, made of the cells of its entities.
+struct BodyGroup {
+  int tag = 0;
+  std::string name;
+  std::vector<int> entities;
+};
+
 struct RawMesh {
   int dim = 0;  // 2 or 3; 0 if the file has no element of dimension 2 or 3
   int highestDimensionFound = -1;
@@ -74,6 +83,7 @@ struct RawMesh {
   std::vector<double> nodeCoords;  // x, y, z per node
   std::vector<ElementBlock> cellBlocks;
   std::vector<BoundaryGroup> boundaryGroups;
+  std::vector<BodyGroup> bodyGroups;
   // Of a meshed .geo geometry: the blocks of every entity of dimension dim - 1 and, in 3D, of
   // every curve, with the entity's tag.
   std::vector<std::pair<int, ElementBlock>> geometryFacetBlocks, geometryEdgeBlocks;
@@ -171,7 +181,7 @@ void appendElements(int dim, int entity, std::vector<ElementBlock>& blocks) {
   gmsh::model::mesh::getElements(types, elementTags, nodeTags, dim, entity);
   for (std::size_t i = 0; i < types.size(); ++i) {
     if (elementTags[i].empty()) continue;
-    blocks.push_back({types[i], std::move(elementTags[i]), std::move(nodeTags[i])});
+    blocks.push_back({types[i], std::move(elementTags[i]), std::move(nodeTags[i]), entity});
   }
 }
 
@@ -193,6 +203,22 @@ std::vector<ElementBlock> domainElements(int dim) {
   }
   for (int entity : entities) appendElements(dim, entity, blocks);
   return blocks;
+}
+
+// The physical groups of dimension dim, with their entities.
+std::vector<BodyGroup> bodyGroups(int dim) {
+  gmsh::vectorpair groups;
+  gmsh::model::getPhysicalGroups(groups, dim);
+  std::vector<BodyGroup> bodies;
+  for (const auto& group : groups) {
+    BodyGroup body;
+    body.tag = group.second;
+    gmsh::model::getPhysicalName(dim, group.second, body.name);
+    if (body.name.empty()) body.name = "physical" + std::to_string(group.second);
+    gmsh::model::getEntitiesForPhysicalGroup(dim, group.second, body.entities);
+    bodies.push_back(std::move(body));
+  }
+  return bodies;
 }
 
 // The elements of `type` on every entity of dimension `dim`, each block with its entity.
@@ -223,6 +249,7 @@ RawMesh extractMesh(bool withGeometry) {
   gmsh::model::mesh::getNodes(raw.nodeTags, raw.nodeCoords, parametricCoords, -1, -1,
                               /*includeBoundary=*/false, /*returnParametricCoord=*/false);
   raw.cellBlocks = domainElements(raw.dim);
+  raw.bodyGroups = bodyGroups(raw.dim);
 
   gmsh::vectorpair groups;
   gmsh::model::getPhysicalGroups(groups, raw.dim - 1);
@@ -412,6 +439,35 @@ void addGeometryEntities(const std::vector<std::pair<int, ElementBlock>>& blocks
     }
 }
 
+// Each cell's body: the physical group of dimension dim its entity is in (of several, the one
+// with the lowest tag); no tags when the file has no such groups.
+void addCellTags(const RawMesh& raw, const std::vector<std::pair<Tag, const Tag*>>& cellElements,
+                 const std::string& prefix, SimplexMesh& mesh) {
+  if (raw.bodyGroups.empty()) return;
+  std::map<int, int> entityBody;
+  for (const BodyGroup& body : raw.bodyGroups) {
+    if (!mesh.bodyTags.emplace(body.name, body.tag).second)
+      throw InputError(prefix + "two physical groups of dimension " + std::to_string(mesh.dim) + " (tags " +
+                       std::to_string(mesh.bodyTags.at(body.name)) + " and " + std::to_string(body.tag) +
+                       ") have the same name \"" + body.name + "\"");
+    for (int entity : body.entities) {
+      const auto [it, fresh] = entityBody.emplace(entity, body.tag);
+      if (!fresh) it->second = std::min(it->second, body.tag);
+    }
+  }
+  std::vector<std::pair<Tag, int>> elementEntity;  // (element tag, entity), sorted
+  for (const ElementBlock& block : raw.cellBlocks)
+    for (Tag element : block.elementTags) elementEntity.emplace_back(element, block.entity);
+  std::sort(elementEntity.begin(), elementEntity.end());
+  mesh.cellTags.resize(cellElements.size());
+  for (std::size_t c = 0; c < cellElements.size(); ++c) {
+    const auto it = std::lower_bound(elementEntity.begin(), elementEntity.end(), std::make_pair(cellElements[c].first, INT_MIN));
+    const auto body = it == elementEntity.end() ? entityBody.end() : entityBody.find(it->second);
+    if (body == entityBody.end()) throw Error(prefix + "a cell outside every physical group was read");
+    mesh.cellTags[c] = body->second;
+  }
+}
+
 SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
   const int dim = raw.dim;
   const int nodesPerCell = dim + 1;
@@ -467,6 +523,7 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
     if (det < 0) std::swap(cell[1], cell[2]);
   }
 
+  addCellTags(raw, cellElements, prefix, mesh);
   addBoundaryFacets(raw, used, prefix, mesh);
   addGeometryEntities(raw.geometryFacetBlocks, used, dim, mesh.geometryFacets, mesh.geometryFacetEntities);
   addGeometryEntities(raw.geometryEdgeBlocks, used, 2, mesh.geometryEdges, mesh.geometryEdgeEntities);
@@ -528,6 +585,33 @@ SimplexMesh readInThisProcess(const std::string& path, double sizeFactor) {
   return buildMesh(raw, prefix);
 }
 
+// Names and their tags through the pipe: the names, each ended by '\0', then the tags.
+void sendNames(int fd, const std::map<std::string, int>& named) {
+  std::vector<char> names;
+  std::vector<int> tags;
+  for (const auto& [name, tag] : named) {
+    names.insert(names.end(), name.begin(), name.end());
+    names.push_back('\0');
+    tags.push_back(tag);
+  }
+  sendArray(fd, names);
+  sendArray(fd, tags);
+}
+
+bool receiveNames(int fd, std::map<std::string, int>& named) {
+  std::vector<char> names;
+  std::vector<int> tags;
+  if (!receiveArray(fd, names) || !receiveArray(fd, tags)) return false;
+  std::size_t start = 0;
+  for (int tag : tags) {
+    const std::size_t end = std::find(names.begin() + start, names.end(), '\0') - names.begin();
+    if (end == names.size()) return false;
+    named[std::string(names.begin() + start, names.begin() + end)] = tag;
+    start = end + 1;
+  }
+  return true;
+}
+
 void sendMesh(int fd, const SimplexMesh& mesh) {
   writeAll(fd, &mesh.dim, sizeof mesh.dim);
   sendArray(fd, mesh.vertices);
@@ -538,34 +622,17 @@ void sendMesh(int fd, const SimplexMesh& mesh) {
   sendArray(fd, mesh.geometryFacetEntities);
   sendArray(fd, mesh.geometryEdges);
   sendArray(fd, mesh.geometryEdgeEntities);
-  std::vector<char> names;
-  std::vector<int> tags;
-  for (const auto& [name, tag] : mesh.boundaryTags) {
-    names.insert(names.end(), name.begin(), name.end());
-    names.push_back('\0');
-    tags.push_back(tag);
-  }
-  sendArray(fd, names);
-  sendArray(fd, tags);
+  sendArray(fd, mesh.cellTags);
+  sendNames(fd, mesh.boundaryTags);
+  sendNames(fd, mesh.bodyTags);
 }
 
 bool receiveMesh(int fd, SimplexMesh& mesh) {
-  std::vector<char> names;
-  std::vector<int> tags;
-  if (!readAll(fd, &mesh.dim, sizeof mesh.dim) || !receiveArray(fd, mesh.vertices) || !receiveArray(fd, mesh.cells) ||
-      !receiveArray(fd, mesh.facets) || !receiveArray(fd, mesh.facetTags) || !receiveArray(fd, mesh.geometryFacets) ||
-      !receiveArray(fd, mesh.geometryFacetEntities) || !receiveArray(fd, mesh.geometryEdges) ||
-      !receiveArray(fd, mesh.geometryEdgeEntities) || !receiveArray(fd, names) ||
-      !receiveArray(fd, tags))
-    return false;
-  std::size_t start = 0;
-  for (int tag : tags) {
-    const std::size_t end = std::find(names.begin() + start, names.end(), '\0') - names.begin();
-    if (end == names.size()) return false;
-    mesh.boundaryTags[std::string(names.begin() + start, names.begin() + end)] = tag;
-    start = end + 1;
-  }
-  return true;
+  return readAll(fd, &mesh.dim, sizeof mesh.dim) && receiveArray(fd, mesh.vertices) && receiveArray(fd, mesh.cells) &&
+         receiveArray(fd, mesh.facets) && receiveArray(fd, mesh.facetTags) && receiveArray(fd, mesh.geometryFacets) &&
+         receiveArray(fd, mesh.geometryFacetEntities) && receiveArray(fd, mesh.geometryEdges) &&
+         receiveArray(fd, mesh.geometryEdgeEntities) && receiveArray(fd, mesh.cellTags) &&
+         receiveNames(fd, mesh.boundaryTags) && receiveNames(fd, mesh.bodyTags);
 }
 
 double defaultTimeLimit(const std::string& path) {

@@ -15,6 +15,10 @@ struct SimplexMesh {
   std::vector<long long> facets;            // dim * numFacets(): boundary facets (edges in 2D, triangles in 3D)
   std::vector<int> facetTags;               // one tag per boundary facet
   std::map<std::string, int> boundaryTags;  // boundary name -> tag
+  // The body each cell belongs to: one tag per cell, or empty when the mesh names no bodies
+  // (every cell then has tag 0). A Gmsh mesh's bodies are its physical groups of dimension dim.
+  std::vector<int> cellTags;
+  std::map<std::string, int> bodyTags;  // body name -> tag
   // Of a mesh Gmsh made from a .geo geometry (else empty): the geometry entity each facet on
   // the geometry's boundary lies on (a surface in 3D, a curve in 2D; dim vertex ids per
   // facet) and, in 3D, each edge on a geometry curve (2 vertex ids per edge), so that a
@@ -28,6 +32,9 @@ struct SimplexMesh {
 
   // Tag of a named boundary; throws InputError listing the known names if it is absent.
   int tag(const std::string& boundaryName) const;
+  // Tag of a named body; throws InputError listing the known names if it is absent.
+  int bodyTag(const std::string& bodyName) const;
+  int cellTag(long long cell) const { return cellTags.empty() ? 0 : cellTags[cell]; }
 
   // The cell's (dim + 1) vertices, dim coordinates each, in cell order: the input the
   // element routines expect.

@@ -31,7 +31,13 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const Contac
   }
   CellField mises{"von Mises stress", 1, fields.vonMisesStress},
       rank{"rank", 1, std::vector<double>(fields.vonMisesStress.size(), ds.comm()->getRank())};
-  writeVtu(ds, {displacement, pressure, force, gap, active}, {mises, rank}, directory, "solution");
+  std::vector<CellField> cellFields{mises, rank};
+  if (!ds.mesh().bodyTags.empty()) {  // the body of each cell: its physical group's tag
+    CellField body{"body", 1, {}};
+    for (long long c = 0; c < ds.mesh().numCells(); ++c) body.values.push_back(ds.mesh().cellTag(c));
+    cellFields.push_back(std::move(body));
+  }
+  writeVtu(ds, {displacement, pressure, force, gap, active}, cellFields, directory, "solution");
 }
 
 // contact.csv on rank 0: every rank's samples, gathered (the contact boundary is a surface).

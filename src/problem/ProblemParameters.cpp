@@ -51,8 +51,33 @@ std::vector<BoundaryField> boundaryFields(const ParameterList& problem, const st
   return fields;
 }
 
+// One Body per sublist of "Bodies" (named after it), what it does not give taken from `problem`.
+std::vector<Body> namedBodies(const ParameterList& p, const Body& problem) {
+  std::vector<Body> bodies;
+  const ParameterList& list = p.sublist("Bodies");
+  for (auto it = list.begin(); it != list.end(); ++it) {
+    const ParameterList& given = list.sublist(list.name(it));
+    Body body = problem;
+    body.name = list.name(it);
+    body.material.youngsModulus = autoOrNumber(given, "material: young's modulus", problem.material.youngsModulus);
+    body.material.poissonRatio = autoOrNumber(given, "material: poisson ratio", problem.material.poissonRatio);
+    for (std::size_t i = 0; i < problem.bodyForce.size(); ++i) {
+      const std::string name = std::string("body force: ") + kAxes[i], text = given.get<std::string>(name);
+      if (!text.empty()) body.bodyForce[i] = Expression(text, "Problem/Bodies/" + body.name + "/" + name);
+    }
+    bodies.push_back(std::move(body));
+  }
+  return bodies;
+}
+
 void addContactParameters(ParameterList& contact) {
   contact.set("boundary", "", "Name of the contact boundary; empty: no contact");
+  contact.set("master boundary", "",
+              "The surface of another body that the contact boundary (then the slave side) touches: mortar "
+              "constraints between the two bodies, normals and gaps from the slave side (doc/algorithms.md). So "
+              "far: 2D, P1, each body held by its Dirichlet conditions, and the outputs' gap and contact force "
+              "are not yet those of the pair. Make the slave the side that lies within the master's reach, the "
+              "finer one where both do. Empty: the rigid obstacle of the gap and obstacle parameters");
   contact.set("obstacle: direction", Array<double>(),
               "Vector from the obstacle into the body (normalised); empty: the last axis, "
               "(0,1) in 2D and (0,0,1) in 3D");
@@ -71,7 +96,7 @@ void addContactParameters(ParameterList& contact) {
               "the pressure's coefficients; \"dual mortar\": the same with the dual (biorthogonal) basis "
               "psi_j, so that each constraint holds its own node and the multipliers are the pressure's "
               "nodal values (local means, never negative); \"auto\": nodal for P1, dual mortar for P2 and "
-              "P3 (whose nodal multipliers are no pressure: doc/hertz-validation.md)",
+              "P3 (whose nodal multipliers are no pressure: doc/hertz-validation.md) and between two bodies",
               choices({"auto", "nodal", "weighted gap", "dual mortar"}));
 }
 
@@ -136,6 +161,20 @@ ParameterList validProblemParameters() {
   for (const char* axis : kAxes)
     load.set(std::string("traction: ") + axis, "0", "Surface traction component (expression)");
 
+  ParameterList& bodies = p.sublist(
+      "Bodies", false,
+      "One sublist per body of the mesh with a material or body force of its own, named after it: a Gmsh "
+      "mesh's bodies are its physical groups of the domain's dimension (surfaces in 2D, volumes in 3D; a "
+      "cell in several of them belongs to the one with the lowest tag). Cells of no listed body have the "
+      "Problem-level material and body force");
+  ParameterList& body = bodies.sublist(kAnyNameSublist);
+  body.set("material: young's modulus", "auto", "Young's modulus E; \"auto\": the Problem's",
+           autoOrRange(1e-300, 1e300));
+  body.set("material: poisson ratio", "auto", "Poisson ratio nu; \"auto\": the Problem's", autoOrRange(-0.999, 0.4999));
+  for (const char* axis : kAxes)
+    body.set(std::string("body force: ") + axis, "",
+             std::string("Body force component ") + axis + " (expression); empty: the Problem's");
+
   addContactParameters(p.sublist("Contact", false, "Frictionless contact with a rigid obstacle"));
   return p;
 }
@@ -197,8 +236,9 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
     text = contact.get<std::string>("gap: expression");
   }
   const std::string formulation = contact.get<std::string>("formulation");
-  const bool dual = formulation == "dual mortar" || (formulation == "auto" && def.degree > 1);
-  def.contact = ContactPair{boundary, unit, Expression(text, "Problem/Contact/gap"),
+  const std::string master = contact.get<std::string>("master boundary");
+  const bool dual = formulation == "dual mortar" || (formulation == "auto" && (def.degree > 1 || !master.empty()));
+  def.contact = ContactPair{boundary, master, unit, Expression(text, "Problem/Contact/gap"),
                             formulation == "weighted gap" ? ContactFormulation::weightedGap
                             : dual                        ? ContactFormulation::dualMortar
                                                           : ContactFormulation::nodal};
@@ -250,6 +290,7 @@ ProblemDefinition detail::definitionOf(const ParameterList& p, int meshDim) {
       stiffness == "matrix-free" || (stiffness == "auto" && def.degree > 1);
   def.gridRefinedAtNodes = def.degree > 1 && p.get<std::string>("stiffness: P1 grid") == "refined at nodes";
 
+  def.bodies = namedBodies(p, def.body);
   def.dirichlet = boundaryFields(p, "Dirichlet", "displacement: ", dim);
   def.traction = boundaryFields(p, "Traction", "traction: ", dim);
 

@@ -205,7 +205,6 @@ TEST(GmshProblem, RefinedAtNodesTheGridIsTheRefinedMeshsP1Space) {
     problem.set("stiffness: operator", "assembled");
     problem.set("stiffness: P1 grid", "refined at nodes");
     const AssembledProblem refined = rectangle(problem, comm);
-    const ContactQP& qp = refined.qp;
     const MultigridInput& mg = refined.multigrid;
     ASSERT_TRUE(mg.grid != nullptr && mg.grid->refinesFineCells()) << label;
     EXPECT_EQ(mg.grid->numVertices(), refined.space->numGlobalNodes()) << label;

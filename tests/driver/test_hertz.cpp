@@ -52,14 +52,14 @@ NodalField nodalField(const Vector& pressure, const Vector& active) {
   auto p = pressure.getData();
   auto a = active.getData();
   double smallest = 0, largest = 0, offActive = 0;
-  for (std::size_t i = 0; i < p.size(); ++i) {
+  for (Teuchos::ArrayRCP<const double>::size_type i = 0; i < p.size(); ++i) {
     smallest = std::min(smallest, p[i]);
     largest = std::max(largest, p[i]);
     if (a[i] == 0) offActive = std::max(offActive, p[i]);
   }
   const double peak = maxOverRanks(comm, largest);
   bool peakActive = false;
-  for (std::size_t i = 0; i < p.size(); ++i) peakActive = peakActive || (p[i] == peak && a[i] != 0);
+  for (Teuchos::ArrayRCP<const double>::size_type i = 0; i < p.size(); ++i) peakActive = peakActive || (p[i] == peak && a[i] != 0);
   return {minOverRanks(comm, smallest) / peak, maxOverRanks(comm, offActive) / peak,
           maxOverRanks(comm, peakActive ? 1 : 0) == 1};
 }

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Install test: installs Signorini into a scratch prefix; checks that exactly the public
 # headers are installed and that each compiles on its own; runs the installed program on
-# xml/default.xml; runs the Python example with the installed module; builds every C++
-# example against the exported CMake package and runs it on 2 MPI ranks.
+# xml/default.xml and examples/bodies; runs the Python example with the installed module;
+# builds every C++ example against the exported CMake package and runs it on 2 MPI ranks.
 set -euo pipefail
 source_dir=$1
 build_dir=$2
@@ -21,6 +21,18 @@ diff <(cd "$work/prefix/include" && find signorini -name '*.hpp' | sort) \
 (cd "$work" && mpiexec -np 2 "$work/prefix/bin/signorini" "$source_dir/xml/default.xml" --output "$work/default") ||
   { echo "the installed bin/signorini does not solve xml/default.xml"; exit 1; }
 test -s "$work/default/summary.json"
+
+# A part of two materials from a Gmsh geometry (Problem/Bodies), force controlled: the
+# contact carries the load, and the output names each cell's body.
+(cd "$work" && mpiexec -np 2 "$work/prefix/bin/signorini" "$source_dir/examples/bodies/padded-block-2d.xml" \
+   --output "$work/padded-block") || { echo "the installed bin/signorini does not solve examples/bodies"; exit 1; }
+/usr/bin/python3 - "$work/padded-block/summary.json" <<'CHECK'
+import json, sys
+summary = json.load(open(sys.argv[1]))
+force = summary["contact"]["normal_force"]
+assert summary["status"] == "converged" and abs(force - 80.0) < 1e-6 * 80.0, (summary["status"], force)
+CHECK
+grep -q 'Name="body"' "$work/padded-block/solution_0.vtu" || { echo "no body field in the padded block's output"; exit 1; }
 
 # The installed Python module, from the prefix alone: the hand-over example.
 (cd "$work" && PYTHONPATH="$work/prefix/lib/python3/dist-packages" /usr/bin/python3 \

@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// What the user asks to solve: mesh source, element degree, the body (material, body
+/// What the user asks to solve: mesh source, element degree, the bodies (material, body
 /// force), boundary conditions and the contact pair; what the assembly turns into a
 /// ContactQP. readProblemDefinition (ProblemParameters.hpp) fills it from the "Problem"
 /// parameter list, each part from its own sublist or parameters.
@@ -21,7 +21,8 @@ struct BoundaryField {
 };
 
 /// How the non-penetration condition -n_o . u <= g is imposed on the contact boundary, one
-/// constraint per node of Gamma_c in both cases.
+/// constraint per node of Gamma_c in every case (between two bodies: the weighted gap of
+/// MortarConstraints, a weighted formulation).
 ///  nodal:        at the node (the paper's constraints);
 ///  weightedGap:  integral of psi_j (g + n_o . u) >= 0 with the multiplier function psi_j of
 ///                node j (ContactMultiplierBasis): every constraint has the positive weight
@@ -35,15 +36,20 @@ enum class ContactFormulation { nodal, weightedGap, dualMortar };
 /// Whether the constraints are integrals against multiplier functions (weighted gaps).
 inline bool isWeightedGap(ContactFormulation f) { return f != ContactFormulation::nodal; }
 
-/// The elastic body: its material and the body force on it.
+/// An elastic body: its material and the body force on it.
 struct Body {
+  /// The mesh's body it is (a Gmsh physical group of the domain's dimension); empty for the
+  /// Problem-level body, which holds every cell of no named body.
+  std::string name;
   IsotropicMaterial material;
   std::vector<Expression> bodyForce;  ///< dim components
 };
 
-/// Frictionless contact of a boundary of the body with a rigid obstacle.
+/// Frictionless contact of a boundary with a rigid obstacle or, given a master boundary, with
+/// the surface of another body (mortar constraints, the contact boundary their slave side).
 struct ContactPair {
   std::string boundary;  ///< the body's contact boundary Gamma_c (a boundary name)
+  std::string masterBoundary;  ///< the other body's surface; empty: the rigid obstacle below
   std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body
   Expression gap;  ///< g(x), the distance to the obstacle along obstacleDirection
   ContactFormulation formulation = ContactFormulation::nodal;
@@ -59,7 +65,8 @@ struct ProblemDefinition {
   double meshSizeFactor = 1.0;  ///< of a .geo geometry
   int meshRefinements = 0;      ///< uniform refinements of a Gmsh mesh
   int degree = 1;
-  Body body;
+  Body body;                ///< the Problem-level material and body force
+  std::vector<Body> bodies;  ///< Problem/Bodies: bodies of the mesh with their own (unnamed: body)
   int loadQuadratureDegree = 5;
   /// Q applied cell by cell (assembled as well for P1); by default of degree 2 and 3
   bool matrixFreeStiffness = false;

@@ -37,7 +37,6 @@ Recorded solve(const AssembledProblem& problem, bool finish) {
 TEST(ActiveSetFinish, EndsTheSolveAtTheOptimumOfTheBarrierIterations) {
   for (const char* name : {"K", "L"}) {
     const AssembledProblem problem = buildProblem(shippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm());
-    const ContactQP& qp = problem.qp;
     const Recorded withFinish = solve(problem, true), withoutFinish = solve(problem, false);
     const SolveResult &with = withFinish.result, &without = withoutFinish.result;
     const std::vector<NewtonStepRecord>& history = withFinish.record.history();

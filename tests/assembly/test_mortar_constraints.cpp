@@ -1,0 +1,163 @@
+// Mortar contact between two bodies meshed independently: two stacked blocks whose interface
+// meshes do not match (10 slave and 7 master segments, and a perturbed slave side). The rows
+// of A move with the bodies (a common rigid translation leaves every weighted gap unchanged),
+// an initial gap is weighted as it should, and the contact patch test passes: pressed
+// uniformly, the multipliers, nodal pressures of the dual basis, equal the exact pressure.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Tpetra_Core.hpp>
+#include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Vector.hpp>
+
+#include "core/Collectives.hpp"
+#include "signorini/core/Error.hpp"
+#include "signorini/problem/ProblemBuilder.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
+
+namespace {
+
+using namespace signorini;
+
+// Two unit squares, "lower" [0,1]^2 and "upper" [0,1] x [1 + gap, 2 + gap], meshed apart
+// (Geometry.AutoCoherence = 0 keeps their interface points distinct): the lower one's top
+// "lower top" in 10 segments (their inner points moved by `perturbation` along it), the upper
+// one's bottom "upper bottom" in 7. Boundaries "bottom", "top", "sides". Written by rank 0.
+std::string writeBlocks(const Comm& comm, double gap, double perturbation) {
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  std::ostringstream name;
+  name << std::string(binary ? binary : "/tmp") << "/mortar-np" << comm.getSize();
+  const std::string directory = name.str();
+  std::ostringstream file;
+  file << "blocks-" << gap << "-" << perturbation << ".geo";
+  if (comm.getRank() == 0) {
+    std::filesystem::create_directories(directory);
+    std::ofstream geo(directory + "/" + file.str());
+    geo << "Geometry.AutoCoherence = 0;\ng = " << gap << ";\nh = 0.12;\n"
+        << "Point(1) = {0, 0, 0, h}; Point(2) = {1, 0, 0, h}; Point(4) = {0, 1, 0, h};\n"
+        << "Point(3) = {1, 1, 0, h};\n";
+    // The lower top's inner points, moved along it to break any regularity.
+    for (int i = 1; i < 10; ++i)
+      geo << "Point(" << 100 + i << ") = {" << i / 10.0 + perturbation * std::sin(7.0 * i) << ", 1, 0, h};\n";
+    geo << "Point(5) = {0, 1 + g, 0, h}; Point(6) = {1, 1 + g, 0, h}; Point(7) = {1, 2 + g, 0, h};\n"
+        << "Point(8) = {0, 2 + g, 0, h};\n"
+        << "Line(1) = {1, 2}; Line(2) = {2, 3};\n"
+        << "Line(110) = {3, 109};\n";
+    for (int i = 9; i > 1; --i) geo << "Line(" << 100 + i << ") = {" << 100 + i << ", " << 99 + i << "};\n";
+    geo << "Line(101) = {101, 4};\nLine(4) = {4, 1};\n"
+        << "Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};\n"
+        << "Transfinite Curve{5} = 8;\n"
+        << "Curve Loop(1) = {1, 2, 110, 109, 108, 107, 106, 105, 104, 103, 102, 101, 4}; Plane Surface(1) = {1};\n"
+        << "Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};\n"
+        << "Physical Curve(\"bottom\") = {1}; Physical Curve(\"top\") = {7};\n"
+        << "Physical Curve(\"sides\") = {2, 4, 6, 8};\n"
+        << "Physical Curve(\"lower top\") = {101:110};\n"
+        << "Physical Curve(\"upper bottom\") = {5};\n"
+        << "Physical Surface(\"lower\") = {1}; Physical Surface(\"upper\") = {2};\n";
+  }
+  comm.barrier();
+  return directory + "/" + file.str();
+}
+
+// The blocks on rollers (sides), the lower one on the ground, the upper one's top moved down
+// by `approach`; "lower top" the slave side.
+Teuchos::ParameterList pressedBlocks(const std::string& file, double approach) {
+  Teuchos::ParameterList problem("Problem");
+  problem.set("mesh: type", "gmsh");
+  problem.set("mesh: file", file);
+  problem.set("material: poisson ratio", 0.3);
+  problem.sublist("Dirichlet").sublist("sides").set("displacement: x", "0");
+  problem.sublist("Dirichlet").sublist("bottom").set("displacement: y", "0");
+  std::ostringstream down;
+  down.precision(17);
+  down << -approach;
+  problem.sublist("Dirichlet").sublist("top").set("displacement: y", down.str());
+  problem.sublist("Contact").set("boundary", "lower top");
+  problem.sublist("Contact").set("master boundary", "upper bottom");
+  return problem;
+}
+
+AssembledProblem build(const Teuchos::ParameterList& problem) {
+  auto comm = Tpetra::getDefaultComm();
+  return buildProblem(problem, comm);
+}
+
+// Each row's entries summed per component: A applied to a translation of both bodies.
+double largestRowSum(const CrsMatrix& A, int component) {
+  Vector t(A.getDomainMap()), At(A.getRangeMap());
+  auto data = t.getDataNonConst();
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(data.size()); ++i)
+    data[i] = A.getDomainMap()->getGlobalElement(i) % 2 == component;
+  data = Teuchos::null;
+  A.apply(t, At);
+  return At.normInf();
+}
+
+TEST(MortarConstraints, RowsMoveWithTheBodies) {
+  for (double perturbation : {0.0, 0.03}) {
+    const AssembledProblem p = build(pressedBlocks(writeBlocks(*Tpetra::getDefaultComm(), 0.0, perturbation), 0.0));
+    const CrsMatrix& A = *p.qp.A;
+    EXPECT_EQ(static_cast<long long>(A.getGlobalNumRows()), 11) << perturbation;  // the slave nodes
+    // Full coverage: the master terms of each row cancel its slave terms.
+    EXPECT_LT(largestRowSum(A, 0), 1e-14) << perturbation;
+    EXPECT_LT(largestRowSum(A, 1), 1e-14) << perturbation;
+    EXPECT_LT(p.qp.d->normInf(), 1e-14) << perturbation;
+  }
+}
+
+// An initial gap g along the slave normal: d_j = g times the integral of psi_j, whose sum
+// over the slave nodes is the interface's length.
+TEST(MortarConstraints, AnInitialGapIsWeightedByTheMultiplierFunctions) {
+  const double gap = 0.05;
+  const AssembledProblem p = build(pressedBlocks(writeBlocks(*Tpetra::getDefaultComm(), gap, 0.03), 0.0));
+  auto d = p.qp.d->getData();
+  double local = 0, smallest = 1;
+  for (double value : d) {
+    local += value;
+    smallest = std::min(smallest, value);
+  }
+  EXPECT_NEAR(sumOverRanks(*p.qp.d->getMap()->getComm(), local), gap * 1.0, 1e-14);
+  EXPECT_GT(minOverRanks(*p.qp.d->getMap()->getComm(), smallest), 0.0);
+}
+
+// Uniaxial strain (rollers on the sides): sigma_yy = -M approach / 2 in both blocks,
+// M = E (1 - nu) / ((1 + nu)(1 - 2 nu)); every multiplier is that pressure (with the
+// paper's sign, lambda = -p).
+TEST(MortarConstraints, PassTheContactPatchTest) {
+  const double approach = 0.01, nu = 0.3, pressure = (1 - nu) / ((1 + nu) * (1 - 2 * nu)) * approach / 2;
+  for (double perturbation : {0.0, 0.03}) {
+    const AssembledProblem p = build(pressedBlocks(writeBlocks(*Tpetra::getDefaultComm(), 0.0, perturbation), approach));
+    Teuchos::ParameterList solver;  // the KKT measures well below the 1e-8 asked of the pressure
+    solver.set("kkt: tolerance", 1e-12);
+    const SolveResult r = InteriorPointSolver(solver).solve(p.qp, p.multigrid);
+    ASSERT_TRUE(r.converged()) << r.message;
+    auto lambda = r.lambda->getData();
+    double local = 0;
+    for (double value : lambda) local = std::max(local, std::abs(-value / pressure - 1.0));  // lambda <= 0
+    EXPECT_LT(maxOverRanks(*p.qp.A->getComm(), local), 1e-8) << perturbation;
+  }
+}
+
+TEST(MortarConstraints, BadPairsAreInputErrors) {
+  const std::string file = writeBlocks(*Tpetra::getDefaultComm(), 0.0, 0.0);
+  Teuchos::ParameterList same = pressedBlocks(file, 0.0);
+  same.sublist("Contact").set("master boundary", "lower top");
+  EXPECT_THROW(build(same), InputError);
+  Teuchos::ParameterList nodal = pressedBlocks(file, 0.0);
+  nodal.sublist("Contact").set("formulation", "nodal");
+  EXPECT_THROW(build(nodal), InputError);
+  Teuchos::ParameterList p2 = pressedBlocks(file, 0.0);
+  p2.set("element: degree", 2);
+  EXPECT_THROW(build(p2), InputError);
+  Teuchos::ParameterList away = pressedBlocks(file, 0.0);  // the ground never faces the slave side
+  away.sublist("Contact").set("master boundary", "bottom");
+  EXPECT_THROW(build(away), InputError);
+}
+
+}  // namespace
