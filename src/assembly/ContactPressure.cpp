@@ -248,6 +248,17 @@ RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
 
 int ContactPressure::dim() const { return space_.dim(); }
 
+RCP<Vector> ContactPressure::contactBoundaryDofs() const {
+  const DistributedSpace& ds = distributedSpace(space_);
+  const int dim = ds.dim();
+  auto dofs = rcp(new Vector(ds.ownedDofMap()));
+  auto data = dofs->getDataNonConst();
+  for (std::size_t i = 0; i < ds.ownedNodeMap()->getNodeNumElements(); ++i)  // owned nodes come first
+    if (overlapNodeConstraint_[i] >= 0)
+      for (int c = 0; c < dim; ++c) data[dim * i + c] = 1.0;
+  return dofs;
+}
+
 RCP<Vector> ContactPressure::pressure(const Vector& lambda, const Vector& active) const {
   const RCP<const Vector> loaded = loadedNodes(active);
   if (weightedGap_) {  // -lambda: the pressure's coefficients in the basis psi

@@ -14,10 +14,12 @@
 namespace signorini {
 namespace {
 
-// A^T lambda summed per component, DOF dim * node + component. Collective.
-std::array<double, 3> forceResultant(const CrsMatrix& A, const Vector& lambda, int dim) {
+// A^T lambda summed per component, DOF dim * node + component, over the DOFs where `only` is
+// nonzero if given. Collective.
+std::array<double, 3> forceResultant(const CrsMatrix& A, const Vector& lambda, int dim, const Vector* only = nullptr) {
   Vector force(A.getDomainMap());
   A.apply(lambda, force, Teuchos::TRANS);
+  if (only) force.elementWiseMultiply(1.0, *only, force, 0.0);
   const auto map = A.getDomainMap();
   auto f = force.getData();
   std::array<double, 3> local{{0, 0, 0}}, total{{0, 0, 0}};
@@ -33,7 +35,7 @@ ContactStatistics contactStatistics(const ContactPressure& recovery, const Vecto
                                     const std::array<double, 3>& obstacleDirection) {
   ContactStatistics s;
   s.dim = recovery.dim();
-  s.force = forceResultant(A, lambda, s.dim);
+  s.force = forceResultant(A, lambda, s.dim, recovery.contactBoundaryDofs().get());
   for (int c = 0; c < 3; ++c) s.normalForce += s.force[c] * obstacleDirection[c];
   double peak = -std::numeric_limits<double>::infinity();
   for (double p : pressure.getData()) peak = std::max(peak, p);

@@ -17,6 +17,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "assembly/CellBodies.hpp"
+#include "assembly/MeshPieces.hpp"
 #include "assembly/MortarConstraints.hpp"
 #include "assembly/OverlapStiffness.hpp"
 #include "assembly/SummedRows.hpp"
@@ -586,6 +587,8 @@ MultigridInput meshMultigridInput(const DistributedSpace& ds) {
   MultigridInput multigrid;
   multigrid.blockSize = ds.dim();
   multigrid.coordinates = ownedNodeCoordinates(ds);
+  MeshPieces pieces = meshPieces(ds);  // bodies meshed apart: the rigid body check takes each
+  if (pieces.count > 1) multigrid.nodeBodies = std::move(pieces.ofOwnedNode);
   return multigrid;
 }
 

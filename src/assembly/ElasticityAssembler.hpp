@@ -20,8 +20,9 @@ namespace signorini {
 ContactQP assembleContactQP(const DistributedSpace& space, const ProblemDefinition& problem,
                             bool assembleStiffness = true);
 
-// What the space gives the multigrid of every mesh: its block size (the dimension) and the
-// coordinates of the owned nodes. Grids are the problem builder's.
+// What the space gives the multigrid of every mesh: its block size (the dimension), the
+// coordinates of the owned nodes and, for bodies meshed apart, each node's body. Grids are
+// the problem builder's. Collective.
 MultigridInput meshMultigridInput(const DistributedSpace& space);
 
 // The P1 stiffness of `grid`, the space's mesh (a MeshVertexGrid or a BoxGrid of the same

@@ -21,26 +21,49 @@
 namespace signorini {
 namespace {
 
-// A boundary segment (2D, P1): its nodes' global ids, their coordinates and the outward
-// normal of its body.
+// A boundary segment (2D, P1 to P3): its nodes' global ids and coordinates, its end
+// vertices first, and the outward normal of its body.
 struct Segment {
-  GlobalOrdinal nodes[2];
-  double x[2][2];
+  int count = 0;  // degree + 1 nodes
+  GlobalOrdinal nodes[4];
+  double x[4][2];
   double normal[2];
 
   double length() const { return std::hypot(x[1][0] - x[0][0], x[1][1] - x[0][1]); }
+  // The position of point p along the segment: 0 at x[0], 1 at x[1] (of its projection).
+  double along(const double* p) const {
+    const double t[2] = {x[1][0] - x[0][0], x[1][1] - x[0][1]};
+    return ((p[0] - x[0][0]) * t[0] + (p[1] - x[0][1]) * t[1]) / (t[0] * t[0] + t[1] * t[1]);
+  }
+  // The values at position xi of the Lagrange functions of the segment's nodes.
+  void shapeValues(double xi, double* values) const {
+    for (int i = 0; i < count; ++i) {
+      values[i] = 1.0;
+      for (int m = 0; m < count; ++m)
+        if (m != i) values[i] *= (xi - along(x[m])) / (along(x[i]) - along(x[m]));
+    }
+  }
 };
-constexpr int kSegmentDoubles = 8;  // as sent between ranks
+constexpr int kSegmentDoubles = 15;  // as sent between ranks
 
 void pack(const Segment& s, std::vector<double>& out) {
-  out.insert(out.end(), {static_cast<double>(s.nodes[0]), static_cast<double>(s.nodes[1]), s.x[0][0], s.x[0][1],
-                         s.x[1][0], s.x[1][1], s.normal[0], s.normal[1]});
+  out.push_back(s.count);
+  for (int i = 0; i < 4; ++i) out.push_back(static_cast<double>(s.nodes[i]));
+  for (int i = 0; i < 4; ++i) out.insert(out.end(), {s.x[i][0], s.x[i][1]});
+  out.insert(out.end(), {s.normal[0], s.normal[1]});
 }
 
 Segment unpack(const double* in) {
-  return {{static_cast<GlobalOrdinal>(in[0]), static_cast<GlobalOrdinal>(in[1])},
-          {{in[2], in[3]}, {in[4], in[5]}},
-          {in[6], in[7]}};
+  Segment s;
+  s.count = static_cast<int>(in[0]);
+  for (int i = 0; i < 4; ++i) {
+    s.nodes[i] = static_cast<GlobalOrdinal>(in[1 + i]);
+    s.x[i][0] = in[5 + 2 * i];
+    s.x[i][1] = in[6 + 2 * i];
+  }
+  s.normal[0] = in[13];
+  s.normal[1] = in[14];
+  return s;
 }
 
 // The boundary segments of this rank's part with the given tag, each with its cell and local facet.
@@ -55,9 +78,10 @@ LocalSegments boundarySegments(const DistributedSpace& ds, int tag) {
   result.facets = space.boundaryFacets(tag);
   for (const auto& [cell, facet] : result.facets) {
     const long long* nodes = space.cellNodes(cell);
-    const std::vector<int> onFacet = space.basis().facetNodes(facet);
+    const std::vector<int> onFacet = space.basis().facetNodes(facet);  // the vertices first
     Segment s{};
-    for (int i = 0; i < 2; ++i) {
+    s.count = static_cast<int>(onFacet.size());
+    for (int i = 0; i < s.count; ++i) {
       s.nodes[i] = ds.globalNode(nodes[onFacet[i]]);
       std::copy_n(&space.nodeCoordinates()[2 * nodes[onFacet[i]]], 2, s.x[i]);
     }
@@ -78,10 +102,10 @@ LocalSegments boundarySegments(const DistributedSpace& ds, int tag) {
 std::array<double, 4> boundingBox(const std::vector<Segment>& segments) {
   std::array<double, 4> box{{1e300, 1e300, -1e300, -1e300}};
   for (const Segment& s : segments)
-    for (const auto& x : s.x)
+    for (int i = 0; i < 2; ++i)
       for (int c = 0; c < 2; ++c) {
-        box[c] = std::min(box[c], x[c]);
-        box[2 + c] = std::max(box[2 + c], x[c]);
+        box[c] = std::min(box[c], s.x[i][c]);
+        box[2 + c] = std::max(box[2 + c], s.x[i][c]);
       }
   return box;
 }
@@ -113,49 +137,50 @@ double cross(const double* a, const double* b) { return a[0] * b[1] - a[1] * b[0
 
 // One slave segment's rows: per master segment facing it, the piece of the slave segment
 // its projection covers, integrated by Gauss points. `add(j, column, value)` and
-// `gap(j, value)` take the entries of slave facet node j (0 or 1); returns the covered
+// `gap(j, value)` take the entries of the slave segment's node j; returns the covered
 // fraction of the slave segment.
 template <class AddEntry, class AddGap>
 double integrateSegment(const Segment& s, const std::vector<Segment>& master, double reach,
-                        const ContactMultiplierBasis& psi, int facet, const int facetNodes[2], int nodesPerCell,
-                        const QuadratureRule& rule, AddEntry&& add, AddGap&& gap) {
+                        const ContactMultiplierBasis& psi, int facet, const std::vector<int>& facetNodes,
+                        int nodesPerCell, const QuadratureRule& rule, AddEntry&& add, AddGap&& gap) {
   const double* n = s.normal;
   const double t[2] = {s.x[1][0] - s.x[0][0], s.x[1][1] - s.x[0][1]}, length = s.length();
-  const auto along = [&](const double* x) { return ((x[0] - s.x[0][0]) * t[0] + (x[1] - s.x[0][1]) * t[1]) / (length * length); };
   double covered = 0;
   std::vector<double> phi(nodesPerCell, 0.0);
+  double slave[4], masterValues[4];
   for (const Segment& m : master) {
     if (n[0] * m.normal[0] + n[1] * m.normal[1] >= 0) continue;  // not facing the slave side
-    const double a = along(m.x[0]), b = along(m.x[1]);
+    const double a = s.along(m.x[0]), b = s.along(m.x[1]);
     const double lo = std::max(0.0, std::min(a, b)), hi = std::min(1.0, std::max(a, b));
     if (hi - lo <= 1e-12) continue;
     const double e[2] = {m.x[1][0] - m.x[0][0], m.x[1][1] - m.x[0][1]};
     const double facing = cross(e, n);
     if (std::abs(facing) < 1e-12 * m.length()) continue;
-    // The initial gap at the piece's middle: a master segment beyond reach is another part of the surface.
-    const double middle = 0.5 * (lo + hi), xm[2] = {s.x[0][0] + middle * t[0], s.x[0][1] + middle * t[1]};
-    const double dm[2] = {xm[0] - m.x[0][0], xm[1] - m.x[0][1]};
-    const double etaMiddle = cross(dm, n) / facing;
-    const double gapMiddle = (m.x[0][0] + etaMiddle * e[0] - xm[0]) * n[0] + (m.x[0][1] + etaMiddle * e[1] - xm[1]) * n[1];
-    if (std::abs(gapMiddle) > reach) continue;
+    // The point of m along n from x_s (x_s + alpha n = x_m(eta)) and the distance alpha.
+    const auto onMaster = [&](const double* xs, double& eta) {
+      const double d[2] = {xs[0] - m.x[0][0], xs[1] - m.x[0][1]};
+      eta = cross(d, n) / facing;
+      return (m.x[0][0] + eta * e[0] - xs[0]) * n[0] + (m.x[0][1] + eta * e[1] - xs[1]) * n[1];
+    };
+    // A master segment beyond reach at the piece's middle is another part of the surface.
+    double eta = 0;
+    const double middle[2] = {s.x[0][0] + 0.5 * (lo + hi) * t[0], s.x[0][1] + 0.5 * (lo + hi) * t[1]};
+    if (std::abs(onMaster(middle, eta)) > reach) continue;
     covered += hi - lo;
     for (int q = 0; q < rule.size(); ++q) {
       const double xi = lo + (hi - lo) * rule.points[q], w = rule.weights[q] * (hi - lo) * length;
       const double xs[2] = {s.x[0][0] + xi * t[0], s.x[0][1] + xi * t[1]};
-      const double d[2] = {xs[0] - m.x[0][0], xs[1] - m.x[0][1]};
-      const double eta = cross(d, n) / facing;  // x_s + alpha n = x_m(eta)
-      const double g0 = (m.x[0][0] + eta * e[0] - xs[0]) * n[0] + (m.x[0][1] + eta * e[1] - xs[1]) * n[1];
-      const double slave[2] = {1.0 - xi, xi}, masterValues[2] = {1.0 - eta, eta};
-      phi[facetNodes[0]] = slave[0];
-      phi[facetNodes[1]] = slave[1];
-      for (int j = 0; j < 2; ++j) {
+      const double g0 = onMaster(xs, eta);
+      s.shapeValues(xi, slave);
+      m.shapeValues(eta, masterValues);
+      for (int i = 0; i < s.count; ++i) phi[facetNodes[i]] = slave[i];
+      for (int j = 0; j < s.count; ++j) {
         const double psiJ = w * psi.value(facet, facetNodes[j], phi.data());
         gap(j, psiJ * g0);
-        for (int k = 0; k < 2; ++k)
-          for (int c = 0; c < 2; ++c) {
-            add(j, 2 * s.nodes[k] + c, psiJ * slave[k] * n[c]);
-            add(j, 2 * m.nodes[k] + c, -psiJ * masterValues[k] * n[c]);
-          }
+        for (int c = 0; c < 2; ++c) {
+          for (int k = 0; k < s.count; ++k) add(j, 2 * s.nodes[k] + c, psiJ * slave[k] * n[c]);
+          for (int l = 0; l < m.count; ++l) add(j, 2 * m.nodes[l] + c, -psiJ * masterValues[l] * n[c]);
+        }
       }
     }
   }
@@ -167,10 +192,8 @@ void checkPair(const DistributedSpace& ds, const ContactPair& pair) {
     throw InputError("Problem/Contact: the master boundary \"" + pair.masterBoundary +
                      "\" is the contact boundary itself; name the other body's surface");
   ds.mesh().tag(pair.masterBoundary);  // throws naming the known boundaries
-  if (ds.dim() != 2 || ds.space().degree() != 1)
-    throw InputError("Problem/Contact/master boundary: contact between two bodies is available in 2D with P1 "
-                     "elements so far (this problem: " + std::to_string(ds.dim()) + "D, P" +
-                     std::to_string(ds.space().degree()) + ")");
+  if (ds.dim() != 2)
+    throw InputError("Problem/Contact/master boundary: contact between two bodies is available in 2D so far");
   if (!isWeightedGap(pair.formulation))
     throw InputError("Problem/Contact/formulation: contact between two bodies needs weighted constraints "
                      "(\"dual mortar\" or \"weighted gap\"), not nodal ones");
@@ -184,10 +207,17 @@ MortarRows mortarConstraints(const DistributedSpace& ds, const ProblemDefinition
   checkPair(ds, pair);
   const LocalSegments slave = boundarySegments(ds, ds.mesh().tag(pair.boundary));
   const LocalSegments master = boundarySegments(ds, ds.mesh().tag(pair.masterBoundary));
+  // How far a master facet may be from the slave facets it faces: twice the longest facet of
+  // either side, or the size of the whole slave boundary (its bounding box's diagonal).
   double longest = 0;
   for (const auto* side : {&slave, &master})
     for (const Segment& s : side->segments) longest = std::max(longest, s.length());
-  const double reach = 2.0 * maxOverRanks(*ds.comm(), longest);
+  std::array<double, 4> box = boundingBox(slave.segments);
+  for (int c = 0; c < 2; ++c) {
+    box[c] = minOverRanks(*ds.comm(), box[c]);
+    box[2 + c] = maxOverRanks(*ds.comm(), box[2 + c]);
+  }
+  const double reach = std::max(2.0 * maxOverRanks(*ds.comm(), longest), std::hypot(box[2] - box[0], box[3] - box[1]));
   const std::vector<Segment> near = nearMasterSegments(*ds.comm(), slave.segments, master.segments, reach);
 
   std::vector<long long> rowOfOverlapNode(ds.space().numNodes(), -1);
@@ -197,14 +227,13 @@ MortarRows mortarConstraints(const DistributedSpace& ds, const ProblemDefinition
   std::vector<double> gaps;
   std::vector<std::vector<std::pair<GlobalOrdinal, double>>> entries;
   const ContactMultiplierBasis psi(ds.space().basis(), pair.formulation);
-  const QuadratureRule rule = simplexQuadrature(1, 4);
+  const QuadratureRule rule = simplexQuadrature(1, 2 * ds.space().degree());  // psi_j N_l exactly
   long long uncovered = 0;
   for (std::size_t f = 0; f < slave.segments.size(); ++f) {
     const auto [cell, facet] = slave.facets[f];
-    const std::vector<int> onFacet = ds.space().basis().facetNodes(facet);
-    const int facetNodes[2] = {onFacet[0], onFacet[1]};
-    std::size_t rows[2];
-    for (int j = 0; j < 2; ++j) {
+    const std::vector<int> facetNodes = ds.space().basis().facetNodes(facet);
+    std::size_t rows[4];
+    for (std::size_t j = 0; j < facetNodes.size(); ++j) {
       const long long row = rowOfOverlapNode[ds.space().cellNodes(cell)[facetNodes[j]]];
       if (row < 0) throw Error("mortar constraints: a slave node has no constraint");
       const auto [it, fresh] = localRow.emplace(row, rowIds.size());

@@ -8,6 +8,7 @@
 
 #include "assembly/CellBodies.hpp"
 #include "assembly/DistributedSpace.hpp"
+#include "assembly/ElasticityAssembler.hpp"
 #include "fe/ElasticityElement.hpp"
 
 namespace signorini {
@@ -56,10 +57,34 @@ std::vector<double> cellVonMises(const DistributedSpace& ds, const CellBodies& b
   return mises;
 }
 
+// (d - A v)_j / integral psi_j at the overlap nodes of the constraints, 0 elsewhere.
+std::vector<double> weightedGaps(const DistributedSpace& ds, const ProblemDefinition& problem, const CrsMatrix& A,
+                                 const Vector& d, const Vector& v) {
+  Vector slack(A.getRangeMap());
+  A.apply(v, slack);
+  slack.update(1.0, d, -1.0);
+  Vector inverseWeights(A.getRangeMap());
+  inverseWeights.reciprocal(*contactNodeWeights(ds, problem, A.getRangeMap()));
+  slack.elementWiseMultiply(1.0, slack, inverseWeights, 0.0);
+  const std::vector<long long> constraintOf = overlapNodeConstraints(ds, problem);
+  std::vector<GlobalOrdinal> ids;
+  for (long long k : constraintOf)
+    if (k >= 0) ids.push_back(k);
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto here = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ids), 0, ds.comm()));
+  Vector slackHere(here);
+  slackHere.doImport(slack, Import(A.getRangeMap(), here), Tpetra::INSERT);
+  auto s = slackHere.getData();
+  std::vector<double> gaps(constraintOf.size(), 0.0);
+  for (std::size_t i = 0, next = 0; i < constraintOf.size(); ++i)
+    if (constraintOf[i] >= 0) gaps[i] = s[next++];
+  return gaps;
+}
+
 }  // namespace
 
 SolutionFields solutionFields(const DistributedSpace& ds, const ProblemDefinition& problem, const CrsMatrix& A,
-                              const Vector& v, const Vector& lambda) {
+                              const Vector& d, const Vector& v, const Vector& lambda) {
   const int dim = ds.dim();
   const auto& overlap = ds.overlapSpaceNodes();
   const Import toOverlap(ds.ownedDofMap(), ds.overlapDofMap());
@@ -86,6 +111,7 @@ SolutionFields solutionFields(const DistributedSpace& ds, const ProblemDefinitio
     const double* x = &ds.space().nodeCoordinates()[dim * overlap[i]];
     fields.gap.push_back(onContact[overlap[i]] ? problem.contact->gap(x, dim) + normalDisplacement : 0.0);
   }
+  if (problem.contact && !problem.contact->masterBoundary.empty()) fields.gap = weightedGaps(ds, problem, A, d, v);
   fields.vonMisesStress = cellVonMises(ds, CellBodies(ds.mesh(), problem), u);
   return fields;
 }

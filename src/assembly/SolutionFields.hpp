@@ -14,12 +14,13 @@ class DistributedSpace;
 struct SolutionFields {
   std::vector<double> displacement;        // dim values per node
   std::vector<double> normalContactForce;  // (A^T lambda) . n_o, n_o the obstacle direction
-  std::vector<double> gap;                 // g + n_o . u on the contact boundary, 0 elsewhere
+  std::vector<double> gap;  // g + n_o . u on the contact boundary (a pair of bodies: the weighted gap), 0 elsewhere
   std::vector<double> vonMisesStress;      // at each cell's centroid
 };
 
-// v on the owned DOF map, lambda on A's range map. Collective.
+// v on the owned DOF map, d and lambda on A's range map. The gap of a pair of bodies is its
+// constraint's slack over the constraint's weight, (d - A v)_j / integral psi_j. Collective.
 SolutionFields solutionFields(const DistributedSpace& space, const ProblemDefinition& problem, const CrsMatrix& A,
-                              const Vector& v, const Vector& lambda);
+                              const Vector& d, const Vector& v, const Vector& lambda);
 
 }  // namespace signorini

@@ -19,7 +19,7 @@ namespace signorini {
 void writeSolution(const AssembledProblem& p, const SolveResult& r, const ContactFields* contact,
                    const std::string& directory) {
   const DistributedSpace& ds = distributedSpace(*p.space);
-  const SolutionFields fields = solutionFields(ds, p.definition, *p.qp.A, *r.v, *r.lambda);
+  const SolutionFields fields = solutionFields(ds, p.definition, *p.qp.A, *p.qp.d, *r.v, *r.lambda);
   const std::size_t nodes = ds.overlapSpaceNodes().size();
   NodeField displacement{"displacement", ds.dim(), fields.displacement},
       force{"contact force", 1, fields.normalContactForce}, gap{"gap", 1, fields.gap},

@@ -74,10 +74,10 @@ void addContactParameters(ParameterList& contact) {
   contact.set("boundary", "", "Name of the contact boundary; empty: no contact");
   contact.set("master boundary", "",
               "The surface of another body that the contact boundary (then the slave side) touches: mortar "
-              "constraints between the two bodies, normals and gaps from the slave side (doc/algorithms.md). So "
-              "far: 2D, P1, each body held by its Dirichlet conditions, and the outputs' gap and contact force "
-              "are not yet those of the pair. Make the slave the side that lies within the master's reach, the "
-              "finer one where both do. Empty: the rigid obstacle of the gap and obstacle parameters");
+              "constraints between the two bodies, normals and gaps from the slave side (doc/algorithms.md; 2D, "
+              "P1, without mesh: refinements so far). Make the slave the side that lies within the master's reach, the finer one where "
+              "both do; obstacle: direction then points from the master into the slave body (the sign of the "
+              "normal force reported). Empty: the rigid obstacle of the gap and obstacle parameters");
   contact.set("obstacle: direction", Array<double>(),
               "Vector from the obstacle into the body (normalised); empty: the last axis, "
               "(0,1) in 2D and (0,0,1) in 3D");
@@ -237,6 +237,12 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
   }
   const std::string formulation = contact.get<std::string>("formulation");
   const std::string master = contact.get<std::string>("master boundary");
+  // The multigrid's P1 grids of P2/P3 and of refined meshes find nodes by their coordinates,
+  // which the coincident nodes of two bodies share.
+  if (!master.empty() && (def.degree > 1 || def.meshRefinements > 0))
+    throw InputError("Problem/Contact/master boundary: contact between two bodies is available with P1 elements "
+                     "on meshes read as they are so far (this problem: P" + std::to_string(def.degree) +
+                     ", mesh: refinements " + std::to_string(def.meshRefinements) + ")");
   const bool dual = formulation == "dual mortar" || (formulation == "auto" && (def.degree > 1 || !master.empty()));
   def.contact = ContactPair{boundary, master, unit, Expression(text, "Problem/Contact/gap"),
                             formulation == "weighted gap" ? ContactFormulation::weightedGap

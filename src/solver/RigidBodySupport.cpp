@@ -183,7 +183,7 @@ RCP<Vector> motionTheLoadPullsFree(const ContactQP& qp, const MultiVector& F) {
 }  // namespace
 
 RCP<const MultiVector> checkRigidBodyMotionsHeld(const ContactQP& qp, const MultigridInput& multigrid) {
-  const RCP<const MultiVector> modes = multigrid.nearNullspace(qp);
+  const RCP<const MultiVector> modes = multigrid.bodyMotions(qp);
   if (modes.is_null() || modes->getNumVectors() == 0) return Teuchos::null;
   const MultiVector& R = *modes;
   const int k = static_cast<int>(R.getNumVectors());

@@ -82,6 +82,10 @@ class ContactPressure {
   /// p_h at the quadrature points of this rank's contact facets. Collective.
   ContactPressureSamples samples(const Vector& pressure) const;
 
+  /// 1 on the owned DOFs of the contact boundary's nodes (the slave side of a pair of
+  /// bodies), 0 elsewhere, on the space's owned DOF map.
+  RCP<Vector> contactBoundaryDofs() const;
+
   const CrsMatrix& massMatrix() const { return *mass_; }
   int dim() const;
 

@@ -12,8 +12,10 @@ namespace signorini {
 
 struct ContactStatistics {
   int dim = 0;
-  std::array<double, 3> force{{0, 0, 0}};  ///< the obstacle's force on the body: A^T lambda summed per component
-  double normalForce = 0;                  ///< force . obstacle direction (>= 0 when pressing)
+  /// the obstacle's (or the master body's) force on the contact boundary: A^T lambda summed
+  /// per component over its nodes' DOFs (with the mesh; over every DOF without)
+  std::array<double, 3> force{{0, 0, 0}};
+  double normalForce = 0;  ///< force . obstacle direction (>= 0 when pressing)
   double area = 0;          ///< lumped boundary measure of the active nodes (a length in 2D); NaN without a mesh
   double peakPressure = 0;  ///< largest nodal value of p_h; NaN without a mesh
   long long activeNodes = 0;               ///< active constraints (one per contact node)

@@ -1,0 +1,20 @@
+#pragma once
+// Private to the library: the connected pieces of a distributed mesh, cells that share a node
+// being in one piece: the bodies of a problem whose bodies were meshed apart (a body made of
+// several materials meshed together is one piece).
+#include <vector>
+
+#include "assembly/DistributedSpace.hpp"
+
+namespace signorini {
+
+struct MeshPieces {
+  int count = 0;
+  std::vector<int> ofOwnedNode;  // the piece of each owned node, in ownedNodeMap() order
+};
+
+// Pieces numbered in the order of their smallest global node id. Collective; a few Tpetra
+// exchanges of one value per node (as many as the pieces cross rank boundaries in a chain).
+MeshPieces meshPieces(const DistributedSpace& space);
+
+}  // namespace signorini
