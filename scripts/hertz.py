@@ -2,7 +2,9 @@
 """Hertz validation: refinement studies of a rigid cylinder (2D) and sphere (3D) pressed into
 an elastic block, of a rigid sphere pressed into a deep block meshed by Gmsh, of an elastic
 half-disk and half-ball meshed by Gmsh pressed onto a rigid plane, and of a rigid flat punch
-(examples/hertz/). For each run, the computed contact half-width or radius, peak pressure and
+(examples/hertz/); and of an elastic half-disk pressed onto an elastic block meshed apart
+(examples/bodies/disk-on-block-2d, mortar contact), of equal moduli and with a disk 100 times
+stiffer than the block. For each run, the computed contact half-width or radius, peak pressure and
 the L2 error of the pressure on the contact boundary are compared with Hertz' solution for the
 computed total force, and the nodal pressure field a user sees (solution.pvtu) is checked for
 tension (its most negative value), for pressure off the active nodes and for whether the
@@ -46,10 +48,18 @@ STUDIES["half-disk-2d"] = (2, {1: [2.0, 1.0, 0.5, 0.25], 2: [2.0, 1.0, 0.5, 0.25
 STUDIES["half-ball-3d"] = (3, {1: [2.0, 1.4, 1.0, 0.7], 2: [2.0, 1.4, 1.0]})
 STUDIES["deep-block-3d"] = (3, {1: [1.4, 1.0, 0.7], 2: [2.0, 1.4]})
 STUDIES["punch-2d"] = (2, {1: [(80, 40), (160, 80), (320, 160)], 2: [(40, 20), (80, 40), (160, 80)]})
+STUDIES["disk-on-block-2d"] = (2, {1: [1.0, 0.5, 0.25, 0.125]})
+STUDIES["stiff-disk-on-block-2d"] = (2, {1: [1.0, 0.5, 0.25, 0.125]})
+# Studies whose input is not examples/hertz/<name>.xml: the input (under examples/) and settings.
+INPUT = {"disk-on-block-2d": ("bodies/disk-on-block-2d", []),
+         "stiff-disk-on-block-2d": ("bodies/disk-on-block-2d", ["Problem/Bodies/disk/material: young's modulus=100"])}
+TWO_BODIES = set(INPUT)  # their contact is mortar, whose constraints are dual mortar ones
 PUNCH_HALF_WIDTH = 0.25
-GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004, "half-ball-3d": 0.01, "deep-block-3d": 0.002}  # the .geo's mesh size at the contact, factor 1
+GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004, "half-ball-3d": 0.01, "deep-block-3d": 0.002, "disk-on-block-2d": 0.005,
+                     "stiff-disk-on-block-2d": 0.005}  # the .geo's mesh size at the contact, factor 1
 QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2, 3: 1}, "half-disk-2d": {1: 2, 2: 2, 3: 1},
-         "half-ball-3d": {1: 2, 2: 1}, "deep-block-3d": {1: 1, 2: 1}, "punch-2d": {1: 2, 2: 2}}
+         "half-ball-3d": {1: 2, 2: 1}, "deep-block-3d": {1: 1, 2: 1}, "punch-2d": {1: 2, 2: 2},
+         "disk-on-block-2d": {1: 2}, "stiff-disk-on-block-2d": {1: 2}}
 # The force-approach law on the deep block: (degree, mesh size factor) and the approaches.
 FORCE_APPROACH = (2, 1.4, [0.0002, 0.0004, 0.0008])
 # (Contact/formulation, Output/contact pressure): the nodal constraints with each pressure
@@ -60,7 +70,9 @@ VARIANTS = [("nodal", "consistent"), ("nodal", "lumped"), ("nodal", "patch"), ("
 P1_ONLY = {("nodal", "patch")}
 
 
-def variants(degree):
+def variants(example, degree):
+    if example in TWO_BODIES:
+        return [("dual mortar", "auto")]
     return [v for v in VARIANTS if degree == 1 or v not in P1_ONLY]
 
 
@@ -95,14 +107,16 @@ def spacing(example, dim, mesh):
 
 
 def run(args, example, degree, cells, formulation, recovery, directory, settings=()):
-    xml = os.path.join(ROOT, "examples", "hertz", example + ".xml")
+    relative, extra = INPUT.get(example, ("hertz/" + example, []))
+    xml = os.path.join(ROOT, "examples", relative + ".xml")
     cmd = ["mpirun", "-np", str(args.np), os.path.join(args.build, "bin", "signorini"), xml,
+           "--set", "Output/write contact samples=true",
            "--set", mesh_setting(cells),
            "--set", "Problem/element: degree=%d" % degree,
            "--set", "Output/write history=false",
            "--set", "Problem/Contact/formulation=" + formulation,
            "--set", "Output/contact pressure=" + recovery, "--output", directory]
-    for setting in settings:
+    for setting in list(extra) + list(settings):
         cmd += ["--set", setting]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(directory, "summary.json")) as f:
@@ -216,8 +230,11 @@ def main():
 
 
 E_STAR = 1.0 / (1.0 - 0.3 ** 2)
+# Of two elastic bodies: 1 / E* = (1 - nu^2) (1 / E_disk + 1 / E_block), E_block = 1.
+E_STARS = {"disk-on-block-2d": 1.0 / ((1.0 - 0.3 ** 2) * 2.0), "stiff-disk-on-block-2d": 1.0 / ((1.0 - 0.3 ** 2) * 1.01)}
 GEOMETRY = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0), "deep-block-3d": ((0.0, 0.0), 1.0),
-            "half-disk-2d": ((0.0, 0.0), 1.0), "half-ball-3d": ((0.0, 0.0), 1.0), "punch-2d": ((1.0, 0.0), None)}
+            "half-disk-2d": ((0.0, 0.0), 1.0), "half-ball-3d": ((0.0, 0.0), 1.0), "punch-2d": ((1.0, 0.0), None),
+            "disk-on-block-2d": ((0.0, 0.0), 1.0), "stiff-disk-on-block-2d": ((0.0, 0.0), 1.0)}
 
 
 def run_study(args, example, tmp):
@@ -228,7 +245,7 @@ def run_study(args, example, tmp):
     rows, profiles = [], {}
     for degree, meshes in plan.items():
         for cells in meshes[:QUICK[example][degree]] if args.quick else meshes:
-            for formulation, recovery in variants(degree):
+            for formulation, recovery in variants(example, degree):
                 if (args.formulation and formulation != args.formulation) or (
                         args.recovery and recovery != args.recovery):
                     continue
@@ -241,7 +258,7 @@ def run_study(args, example, tmp):
                 if example == "punch-2d":
                     row.update(measure_punch(summary, samples, center))
                 else:
-                    row.update(measure(dim, summary, samples, center, radius, E_STAR))
+                    row.update(measure(dim, summary, samples, center, radius, E_STARS.get(example, E_STAR)))
                     r, p = profile(dim, samples, center, row["a_hertz"], row["p0_hertz"])
                     profiles[(degree, formulation, recovery)] = {
                         "example": example, "degree": degree, "formulation": formulation, "recovery": recovery,
