@@ -100,6 +100,37 @@ std::string vectorText(const double* v, int dim, bool keepSign) {
   return text + ")";
 }
 
+// The nodes (blockSize entries of u each) that u moves: more than 1e-8 of its largest move.
+std::vector<char> movingNodes(const Vector& u, int dim) {
+  auto data = u.getData();
+  const std::size_t nodes = u.getLocalLength() / dim;
+  std::vector<double> squares(nodes, 0.0);
+  for (std::size_t i = 0; i < nodes; ++i)
+    for (int c = 0; c < dim; ++c) squares[i] += data[dim * i + c] * data[dim * i + c];
+  const double largest = maxOverRanks(*u.getMap()->getComm(), squares.empty() ? 0.0 : *std::max_element(squares.begin(), squares.end()));
+  std::vector<char> moves(nodes);
+  for (std::size_t i = 0; i < nodes; ++i) moves[i] = squares[i] > 1e-16 * largest;
+  return moves;
+}
+
+// "the body", or of several bodies "the body around (x, y)", the centroid of the nodes u moves.
+std::string movingBody(const Vector& u, const MultigridInput& multigrid) {
+  if (multigrid.nodeBodies.empty() || multigrid.coordinates.is_null()) return "the body";
+  const int dim = multigrid.blockSize;
+  const Comm& comm = *u.getMap()->getComm();
+  const std::vector<char> moves = movingNodes(u, dim);
+  const double count = sumOverRanks(comm, static_cast<double>(std::count(moves.begin(), moves.end(), 1)));
+  std::string text = "the body around (";
+  for (int c = 0; c < dim; ++c) {
+    auto x = multigrid.coordinates->getData(c);
+    const double centroid = sumOverEntries(comm, moves.size(), [&](std::size_t i) { return moves[i] ? x[i] : 0.0; }) / count;
+    char number[32];
+    std::snprintf(number, sizeof number, "%s%.3g", c ? ", " : "", centroid);
+    text += number;
+  }
+  return text + ")";
+}
+
 // "a translation along (0, 1)" or "a rotation about an axis along (0, 0, 1)" for the rigid
 // motion u (blockSize components per node); a direction of either sign unless `keepSign`. The axis of u(x) = t + w x (x - x0) solves
 // J w = sum (x - x0) x (u - u0), J the inertia tensor of the nodes about their centroid x0.
@@ -108,11 +139,15 @@ std::string describeMotion(const Vector& u, const MultigridInput& multigrid, boo
   const Comm& comm = *u.getMap()->getComm();
   auto data = u.getData();
   const std::size_t nodes = u.getLocalLength() / dim;
-  const long long numNodes = sumOverRanks(comm, static_cast<long long>(nodes));
+  // Over the nodes that move: the motion of one body of several is zero on the others.
+  const std::vector<char> moves = movingNodes(u, dim);
+  const long long numNodes = sumOverRanks(comm, static_cast<long long>(std::count(moves.begin(), moves.end(), 1)));
+  const auto onMoving = [&](auto term) { return [&, term](std::size_t i) { return moves[i] ? term(i) : 0.0; }; };
   double mean[3] = {0, 0, 0};
   for (int c = 0; c < dim; ++c)
-    mean[c] = sumOverEntries(comm, nodes, [&](std::size_t i) { return data[dim * i + c]; }) / numNodes;
-  const double square = sumOverEntries(comm, u.getLocalLength(), [&](std::size_t i) { return data[i] * data[i]; });
+    mean[c] = sumOverEntries(comm, nodes, onMoving([&, c](std::size_t i) { return data[dim * i + c]; })) / numNodes;
+  const double square = sumOverEntries(comm, u.getLocalLength(),
+                                       [&](std::size_t i) { return moves[i / dim] ? data[i] * data[i] : 0.0; });
   double meanSquare = 0;
   for (int c = 0; c < dim; ++c) meanSquare += mean[c] * mean[c];
   if (square - numNodes * meanSquare <= 1e-10 * square) return "a translation along " + vectorText(mean, dim, keepSign);
@@ -121,9 +156,11 @@ std::string describeMotion(const Vector& u, const MultigridInput& multigrid, boo
   Teuchos::ArrayRCP<const double> x[3];
   for (int c = 0; c < 3; ++c) x[c] = multigrid.coordinates->getData(c);
   double centroid[3];
-  for (int c = 0; c < 3; ++c) centroid[c] = sumOverEntries(comm, nodes, [&](std::size_t i) { return x[c][i]; }) / numNodes;
+  for (int c = 0; c < 3; ++c)
+    centroid[c] = sumOverEntries(comm, nodes, onMoving([&, c](std::size_t i) { return x[c][i]; })) / numNodes;
   Dense inertia(9, 0.0), moment(3, 0.0), localInertia(9, 0.0), localMoment(3, 0.0);
   for (std::size_t i = 0; i < nodes; ++i) {
+    if (!moves[i]) continue;
     double y[3], w[3];
     for (int c = 0; c < 3; ++c) {
       y[c] = x[c][i] - centroid[c];
@@ -199,13 +236,14 @@ RCP<const MultiVector> checkRigidBodyMotionsHeld(const ContactQP& qp, const Mult
   const RCP<const MultiVector> F = combine(R, energy.vectors, free);  // orthonormal columns
 
   if (const RCP<Vector> r = motionNoConstraintStops(qp, *F))
-    throw InputError("the body is free to move by " + describeMotion(*r, multigrid, false) +
+    throw InputError(movingBody(*r, multigrid) + " is free to move by " + describeMotion(*r, multigrid, false) +
                      ": no prescribed displacement removes it and no contact constraint stops it "
                      "(frictionless contact holds a body only in the obstacle's direction); prescribe "
                      "displacements that remove it on a boundary (Problem/Dirichlet), for instance the "
                      "normal component on a symmetry plane");
   if (const RCP<Vector> r = motionTheLoadPullsFree(qp, *F))
-    throw InputError("the load pulls the body off the obstacle by " + describeMotion(*r, multigrid, true) +
+    throw InputError("the load pulls " + movingBody(*r, multigrid) + " off the obstacle by " +
+                     describeMotion(*r, multigrid, true) +
                      ", which no prescribed displacement removes and no contact constraint resists: the "
                      "problem has no equilibrium; prescribe a displacement that holds the body "
                      "(Problem/Dirichlet) or check the direction of the load");

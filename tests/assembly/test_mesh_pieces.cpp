@@ -15,6 +15,7 @@
 #include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
+#include "signorini/solver/InteriorPointSolver.hpp"
 #include "support/TestProblems.hpp"
 
 namespace {
@@ -27,8 +28,11 @@ std::string writeTwoSquares(const Comm& comm) {
   const std::string directory = std::string(binary ? binary : "/tmp") + "/pieces-np" + std::to_string(comm.getSize());
   if (comm.getRank() == 0) {
     std::filesystem::create_directories(directory);
-    std::ofstream(directory + "/squares.geo") << "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 1, 1};\nRectangle(2) = {2, 0, 0, 1, 1};\n"
-                                                 "MeshSize{ PointsOf{ Surface{1, 2}; } } = 0.2;\n";
+    std::ofstream(directory + "/squares.geo")
+        << "SetFactory(\"OpenCASCADE\");\nRectangle(1) = {0, 0, 0, 1, 1};\nRectangle(2) = {2, 0, 0, 1, 1};\n"
+           "MeshSize{ PointsOf{ Surface{1, 2}; } } = 0.2;\n"
+           "Physical Curve(\"left\") = Curve In BoundingBox{-0.1, -0.1, -0.1, 0.1, 1.1, 0.1};\n"
+           "Physical Surface(\"squares\") = {1, 2};\n";
   }
   comm.barrier();
   return directory + "/squares.geo";
@@ -61,6 +65,25 @@ TEST(MeshPieces, SquaresMeshedApartAreTwoPieces) {
   }
   EXPECT_NE(minOverRanks(*ds.comm(), lowest[0]), minOverRanks(*ds.comm(), lowest[1]));
   EXPECT_EQ(p.multigrid.nodeBodies, pieces.ofOwnedNode);
+}
+
+// The right square, which nothing holds, is refused by the rigid body check, named by where
+// it is (the left one is clamped).
+TEST(MeshPieces, AnUnheldPieceIsNamedByWhereItIs) {
+  Teuchos::ParameterList problem("Problem");
+  problem.set("mesh: type", "gmsh");
+  problem.set("mesh: file", writeTwoSquares(*Tpetra::getDefaultComm()));
+  problem.sublist("Dirichlet").sublist("left").set("displacement: x", "0");
+  problem.sublist("Dirichlet").sublist("left").set("displacement: y", "0");
+  const AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+  try {
+    InteriorPointSolver().solve(p.qp, p.multigrid);
+    ADD_FAILURE() << "no error";
+  } catch (const InputError& e) {
+    const std::string message = e.what();  // the centroid of its nodes: (2.5, 0.5) up to the mesh
+    EXPECT_EQ(message.rfind("the body around (2.5, 0.5", 0), 0u) << message;
+    EXPECT_NE(message.find(") is free to move by a "), std::string::npos) << message;
+  }
 }
 
 }  // namespace
