@@ -98,16 +98,21 @@ LocalSegments boundarySegments(const DistributedSpace& ds, int tag) {
   return result;
 }
 
-// Lower and upper corner of the segments' bounding box; empty (lower > upper) without segments.
-std::array<double, 4> boundingBox(const std::vector<Segment>& segments) {
+// Lower and upper corner of the bounding box of segments [begin, end); empty (lower > upper)
+// without segments.
+std::array<double, 4> boundingBox(const Segment* begin, const Segment* end) {
   std::array<double, 4> box{{1e300, 1e300, -1e300, -1e300}};
-  for (const Segment& s : segments)
+  for (const Segment* s = begin; s != end; ++s)
     for (int i = 0; i < 2; ++i)
       for (int c = 0; c < 2; ++c) {
-        box[c] = std::min(box[c], s.x[i][c]);
-        box[2 + c] = std::max(box[2 + c], s.x[i][c]);
+        box[c] = std::min(box[c], s->x[i][c]);
+        box[2 + c] = std::max(box[2 + c], s->x[i][c]);
       }
   return box;
+}
+
+std::array<double, 4> boundingBox(const std::vector<Segment>& segments) {
+  return boundingBox(segments.data(), segments.data() + segments.size());
 }
 
 // The master segments of every rank that lie within `reach` of this rank's slave segments'
@@ -118,13 +123,15 @@ std::vector<Segment> nearMasterSegments(const Comm& comm, const std::vector<Segm
   const std::array<double, 4> mine = boundingBox(slave);
   std::vector<double> boxes(4 * size);
   Teuchos::gatherAll(comm, 4, mine.data(), 4 * size, boxes.data());
+  std::vector<std::array<double, 4>> own;
+  for (const Segment& s : master) own.push_back(boundingBox(&s, &s + 1));
   std::vector<std::vector<double>> toRank(size);
   for (int r = 0; r < size; ++r) {
     const double* box = &boxes[4 * r];
-    for (const Segment& s : master) {
-      const std::array<double, 4> own = boundingBox({s});
-      if (own[0] <= box[2] + reach && own[2] >= box[0] - reach && own[1] <= box[3] + reach && own[3] >= box[1] - reach)
-        pack(s, toRank[r]);
+    for (std::size_t k = 0; k < master.size(); ++k) {
+      const std::array<double, 4>& b = own[k];
+      if (b[0] <= box[2] + reach && b[2] >= box[0] - reach && b[1] <= box[3] + reach && b[3] >= box[1] - reach)
+        pack(master[k], toRank[r]);
     }
   }
   const std::vector<double> received = exchangeWithRanks(comm, toRank);

@@ -99,7 +99,8 @@ SolutionFields solutionFields(const DistributedSpace& ds, const ProblemDefinitio
   fields.displacement.assign(ud.begin(), ud.end());
   std::vector<char> onContact(ds.space().numNodes(), 0);
   const std::array<double, 3> n = problem.contact ? problem.contact->obstacleDirection : std::array<double, 3>{};
-  if (problem.contact)
+  const bool pair = problem.contact && !problem.contact->masterBoundary.empty();  // its gap from A, d
+  if (problem.contact && !pair)
     for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contact->boundary))) onContact[node] = 1;
   for (std::size_t i = 0; i < overlap.size(); ++i) {
     double normalForce = 0, normalDisplacement = 0;
@@ -111,7 +112,7 @@ SolutionFields solutionFields(const DistributedSpace& ds, const ProblemDefinitio
     const double* x = &ds.space().nodeCoordinates()[dim * overlap[i]];
     fields.gap.push_back(onContact[overlap[i]] ? problem.contact->gap(x, dim) + normalDisplacement : 0.0);
   }
-  if (problem.contact && !problem.contact->masterBoundary.empty()) fields.gap = weightedGaps(ds, problem, A, d, v);
+  if (pair) fields.gap = weightedGaps(ds, problem, A, d, v);
   fields.vonMisesStress = cellVonMises(ds, CellBodies(ds.mesh(), problem), u);
   return fields;
 }

@@ -131,7 +131,7 @@ TEST(CellBodies, TwoMaterialsInSeriesGiveTheExactDisplacement) {
 
 // Without the stiff body's own modulus the bar is uniform: the end moves by 2 / E_soft, which
 // the two-material displacement is not (the check above can fail).
-TEST(CellBodies, WithoutItsOwnMaterialTheBodyHasTheProblems) {
+TEST(CellBodies, WithoutItsOwnMaterialTheBodyHasTheProblemLevelOne) {
   Teuchos::ParameterList problem = pulledBar(2, 1, 0);
   problem.sublist("Bodies").sublist("stiff").set("material: young's modulus", "auto");
   const AssembledProblem p = build(problem, 2);
