@@ -4,7 +4,8 @@ an elastic block, of a rigid sphere pressed into a deep block meshed by Gmsh, of
 half-disk and half-ball meshed by Gmsh pressed onto a rigid plane, and of a rigid flat punch
 (examples/hertz/); and of an elastic half-disk pressed onto an elastic block meshed apart
 (examples/bodies/disk-on-block-2d, mortar contact), of equal moduli and with a disk 100 times
-stiffer than the block. For each run, the computed contact half-width or radius, peak pressure and
+stiffer than the block, and of an elastic half-ball pressed onto an elastic block meshed apart
+(examples/bodies/ball-on-block-3d), of equal moduli and with a block 100 times stiffer. For each run, the computed contact half-width or radius, peak pressure and
 the L2 error of the pressure on the contact boundary are compared with Hertz' solution for the
 computed total force, and the nodal pressure field a user sees (solution.pvtu) is checked for
 tension (its most negative value), for pressure off the active nodes and for whether the
@@ -50,16 +51,22 @@ STUDIES["deep-block-3d"] = (3, {1: [1.4, 1.0, 0.7], 2: [2.0, 1.4]})
 STUDIES["punch-2d"] = (2, {1: [(80, 40), (160, 80), (320, 160)], 2: [(40, 20), (80, 40), (160, 80)]})
 STUDIES["disk-on-block-2d"] = (2, {1: [1.0, 0.5, 0.25, 0.125]})
 STUDIES["stiff-disk-on-block-2d"] = (2, {1: [1.0, 0.5, 0.25, 0.125]})
+STUDIES["ball-on-block-3d"] = (3, {1: [1.0, 0.7, 0.5, 0.35]})
+STUDIES["ball-on-stiff-block-3d"] = (3, {1: [1.0, 0.7, 0.5, 0.35]})
 # Studies whose input is not examples/hertz/<name>.xml: the input (under examples/) and settings.
 INPUT = {"disk-on-block-2d": ("bodies/disk-on-block-2d", []),
-         "stiff-disk-on-block-2d": ("bodies/disk-on-block-2d", ["Problem/Bodies/disk/material: young's modulus=100"])}
+         "stiff-disk-on-block-2d": ("bodies/disk-on-block-2d", ["Problem/Bodies/disk/material: young's modulus=100"]),
+         "ball-on-block-3d": ("bodies/ball-on-block-3d", []),
+         "ball-on-stiff-block-3d": ("bodies/ball-on-block-3d", ["Problem/material: young's modulus=100"])}
 TWO_BODIES = set(INPUT)  # their contact is mortar, whose constraints are dual mortar ones
 PUNCH_HALF_WIDTH = 0.25
 GMSH_CONTACT_SIZE = {"half-disk-2d": 0.004, "half-ball-3d": 0.01, "deep-block-3d": 0.002, "disk-on-block-2d": 0.005,
-                     "stiff-disk-on-block-2d": 0.005}  # the .geo's mesh size at the contact, factor 1
+                     "stiff-disk-on-block-2d": 0.005, "ball-on-block-3d": 0.02,
+                     "ball-on-stiff-block-3d": 0.02}  # the .geo's mesh size at the contact, factor 1
 QUICK = {"cylinder-2d": {1: 2, 2: 2, 3: 1}, "sphere-3d": {1: 2, 2: 2, 3: 1}, "half-disk-2d": {1: 2, 2: 2, 3: 1},
          "half-ball-3d": {1: 2, 2: 1}, "deep-block-3d": {1: 1, 2: 1}, "punch-2d": {1: 2, 2: 2},
-         "disk-on-block-2d": {1: 2}, "stiff-disk-on-block-2d": {1: 2}}
+         "disk-on-block-2d": {1: 2}, "stiff-disk-on-block-2d": {1: 2}, "ball-on-block-3d": {1: 2},
+         "ball-on-stiff-block-3d": {1: 2}}
 # The force-approach law on the deep block: (degree, mesh size factor) and the approaches.
 FORCE_APPROACH = (2, 1.4, [0.0002, 0.0004, 0.0008])
 # (Contact/formulation, Output/contact pressure): the nodal constraints with each pressure
@@ -230,11 +237,13 @@ def main():
 
 
 E_STAR = 1.0 / (1.0 - 0.3 ** 2)
-# Of two elastic bodies: 1 / E* = (1 - nu^2) (1 / E_disk + 1 / E_block), E_block = 1.
-E_STARS = {"disk-on-block-2d": 1.0 / ((1.0 - 0.3 ** 2) * 2.0), "stiff-disk-on-block-2d": 1.0 / ((1.0 - 0.3 ** 2) * 1.01)}
+# Of two elastic bodies: 1 / E* = (1 - nu^2) (1 / E_1 + 1 / E_2), moduli 1 and 1 or 1 and 100.
+E_STARS = {"disk-on-block-2d": 1.0 / ((1.0 - 0.3 ** 2) * 2.0), "stiff-disk-on-block-2d": 1.0 / ((1.0 - 0.3 ** 2) * 1.01),
+           "ball-on-block-3d": 1.0 / ((1.0 - 0.3 ** 2) * 2.0), "ball-on-stiff-block-3d": 1.0 / ((1.0 - 0.3 ** 2) * 1.01)}
 GEOMETRY = {"cylinder-2d": ((1.0, 0.0), 1.0), "sphere-3d": ((0.5, 0.5), 1.0), "deep-block-3d": ((0.0, 0.0), 1.0),
             "half-disk-2d": ((0.0, 0.0), 1.0), "half-ball-3d": ((0.0, 0.0), 1.0), "punch-2d": ((1.0, 0.0), None),
-            "disk-on-block-2d": ((0.0, 0.0), 1.0), "stiff-disk-on-block-2d": ((0.0, 0.0), 1.0)}
+            "disk-on-block-2d": ((0.0, 0.0), 1.0), "stiff-disk-on-block-2d": ((0.0, 0.0), 1.0),
+            "ball-on-block-3d": ((0.0, 0.0), 1.0), "ball-on-stiff-block-3d": ((0.0, 0.0), 1.0)}
 
 
 def run_study(args, example, tmp):

@@ -308,10 +308,13 @@ RCP<Vector> ContactPressure::recover(PressureRecovery how, const Vector& lambda,
   }
 }
 
+// The multipliers of the dual basis are nodal pressures, whose forces are their products with
+// the integrals of psi: the same average applies, and removes the same oscillation.
 RCP<Vector> ContactPressure::patchPressure(const Vector& lambda, const Vector& active) const {
-  if (weightedGap_) return pressure(lambda, active);
+  if (weightedGap_ && !multipliers_->biorthogonal()) return pressure(lambda, active);
   Vector force(constraintMap_), weight(constraintMap_), forceSum(constraintMap_), weightSum(constraintMap_);
   force.elementWiseMultiply(-1.0, active, lambda, 0.0);
+  if (weightedGap_) force.elementWiseMultiply(1.0, force, *lumpedWeights_, 0.0);
   weight.elementWiseMultiply(1.0, active, *lumpedWeights_, 0.0);
   patchSum_->apply(force, forceSum);
   patchSum_->apply(weight, weightSum);

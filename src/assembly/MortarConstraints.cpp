@@ -4,14 +4,17 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <sstream>
 #include <string>
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
 #include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "assembly/ContactMultiplierBasis.hpp"
+#include "assembly/MortarFacet.hpp"
 #include "assembly/SummedRows.hpp"
 #include "core/Collectives.hpp"
 #include "core/NeighbourExchange.hpp"
@@ -21,172 +24,107 @@
 namespace signorini {
 namespace {
 
-// A boundary segment (2D, P1 to P3): its nodes' global ids and coordinates, its end
-// vertices first, and the outward normal of its body.
-struct Segment {
-  int count = 0;  // degree + 1 nodes
-  GlobalOrdinal nodes[4];
-  double x[4][2];
-  double normal[2];
-
-  double length() const { return std::hypot(x[1][0] - x[0][0], x[1][1] - x[0][1]); }
-  // The position of point p along the segment: 0 at x[0], 1 at x[1] (of its projection).
-  double along(const double* p) const {
-    const double t[2] = {x[1][0] - x[0][0], x[1][1] - x[0][1]};
-    return ((p[0] - x[0][0]) * t[0] + (p[1] - x[0][1]) * t[1]) / (t[0] * t[0] + t[1] * t[1]);
-  }
-  // The values at position xi of the Lagrange functions of the segment's nodes.
-  void shapeValues(double xi, double* values) const {
-    for (int i = 0; i < count; ++i) {
-      values[i] = 1.0;
-      for (int m = 0; m < count; ++m)
-        if (m != i) values[i] *= (xi - along(x[m])) / (along(x[i]) - along(x[m]));
+// The bounding box of facets [begin, end) (lower corner, upper corner); empty (lower > upper)
+// without facets.
+std::array<double, 6> boundingBox(const MortarFacet* begin, const MortarFacet* end) {
+  std::array<double, 6> box{{1e300, 1e300, 1e300, -1e300, -1e300, -1e300}};
+  for (const MortarFacet* f = begin; f != end; ++f) {
+    const std::array<double, 6> own = f->boundingBox();
+    for (int c = 0; c < 3; ++c) {
+      box[c] = std::min(box[c], own[c]);
+      box[3 + c] = std::max(box[3 + c], own[3 + c]);
     }
   }
-};
-constexpr int kSegmentDoubles = 15;  // as sent between ranks
-
-void pack(const Segment& s, std::vector<double>& out) {
-  out.push_back(s.count);
-  for (int i = 0; i < 4; ++i) out.push_back(static_cast<double>(s.nodes[i]));
-  for (int i = 0; i < 4; ++i) out.insert(out.end(), {s.x[i][0], s.x[i][1]});
-  out.insert(out.end(), {s.normal[0], s.normal[1]});
-}
-
-Segment unpack(const double* in) {
-  Segment s;
-  s.count = static_cast<int>(in[0]);
-  for (int i = 0; i < 4; ++i) {
-    s.nodes[i] = static_cast<GlobalOrdinal>(in[1 + i]);
-    s.x[i][0] = in[5 + 2 * i];
-    s.x[i][1] = in[6 + 2 * i];
-  }
-  s.normal[0] = in[13];
-  s.normal[1] = in[14];
-  return s;
-}
-
-// The boundary segments of this rank's part with the given tag, each with its cell and local facet.
-struct LocalSegments {
-  std::vector<Segment> segments;
-  std::vector<std::pair<long long, int>> facets;
-};
-
-LocalSegments boundarySegments(const DistributedSpace& ds, int tag) {
-  const LagrangeSpace& space = ds.space();
-  LocalSegments result;
-  result.facets = space.boundaryFacets(tag);
-  for (const auto& [cell, facet] : result.facets) {
-    const long long* nodes = space.cellNodes(cell);
-    const std::vector<int> onFacet = space.basis().facetNodes(facet);  // the vertices first
-    Segment s{};
-    s.count = static_cast<int>(onFacet.size());
-    for (int i = 0; i < s.count; ++i) {
-      s.nodes[i] = ds.globalNode(nodes[onFacet[i]]);
-      std::copy_n(&space.nodeCoordinates()[2 * nodes[onFacet[i]]], 2, s.x[i]);
-    }
-    const double t[2] = {s.x[1][0] - s.x[0][0], s.x[1][1] - s.x[0][1]}, length = s.length();
-    s.normal[0] = t[1] / length;
-    s.normal[1] = -t[0] / length;
-    const double* opposite = &space.nodeCoordinates()[2 * nodes[facet]];  // local facet f is opposite vertex f
-    if (s.normal[0] * (opposite[0] - s.x[0][0]) + s.normal[1] * (opposite[1] - s.x[0][1]) > 0) {
-      s.normal[0] = -s.normal[0];
-      s.normal[1] = -s.normal[1];
-    }
-    result.segments.push_back(s);
-  }
-  return result;
-}
-
-// Lower and upper corner of the bounding box of segments [begin, end); empty (lower > upper)
-// without segments.
-std::array<double, 4> boundingBox(const Segment* begin, const Segment* end) {
-  std::array<double, 4> box{{1e300, 1e300, -1e300, -1e300}};
-  for (const Segment* s = begin; s != end; ++s)
-    for (int i = 0; i < 2; ++i)
-      for (int c = 0; c < 2; ++c) {
-        box[c] = std::min(box[c], s->x[i][c]);
-        box[2 + c] = std::max(box[2 + c], s->x[i][c]);
-      }
   return box;
 }
 
-std::array<double, 4> boundingBox(const std::vector<Segment>& segments) {
-  return boundingBox(segments.data(), segments.data() + segments.size());
+bool boxesMeet(const double* a, const double* b, double reach) {
+  for (int c = 0; c < 3; ++c)
+    if (a[c] > b[3 + c] + reach || a[3 + c] < b[c] - reach) return false;
+  return true;
 }
 
-// The master segments of every rank that lie within `reach` of this rank's slave segments'
-// bounding box: each rank sends every other the master segments in that rank's box.
-std::vector<Segment> nearMasterSegments(const Comm& comm, const std::vector<Segment>& slave,
-                                        const std::vector<Segment>& master, double reach) {
+double diagonal(const std::array<double, 6>& box) {
+  return std::sqrt(std::pow(box[3] - box[0], 2) + std::pow(box[4] - box[1], 2) + std::pow(box[5] - box[2], 2));
+}
+
+// The master facets of every rank that lie within `reach` of this rank's slave facets'
+// bounding box: each rank sends every other the master facets in that rank's box.
+std::vector<MortarFacet> nearMasterFacets(const Comm& comm, const std::vector<MortarFacet>& slave,
+                                          const std::vector<MortarFacet>& master, double reach) {
   const int size = comm.getSize();
-  const std::array<double, 4> mine = boundingBox(slave);
-  std::vector<double> boxes(4 * size);
-  Teuchos::gatherAll(comm, 4, mine.data(), 4 * size, boxes.data());
-  std::vector<std::array<double, 4>> own;
-  for (const Segment& s : master) own.push_back(boundingBox(&s, &s + 1));
+  const std::array<double, 6> mine = boundingBox(slave.data(), slave.data() + slave.size());
+  std::vector<double> boxes(6 * size);
+  Teuchos::gatherAll(comm, 6, mine.data(), 6 * size, boxes.data());
+  std::vector<std::array<double, 6>> own;
+  for (const MortarFacet& f : master) own.push_back(f.boundingBox());
   std::vector<std::vector<double>> toRank(size);
-  for (int r = 0; r < size; ++r) {
-    const double* box = &boxes[4 * r];
-    for (std::size_t k = 0; k < master.size(); ++k) {
-      const std::array<double, 4>& b = own[k];
-      if (b[0] <= box[2] + reach && b[2] >= box[0] - reach && b[1] <= box[3] + reach && b[3] >= box[1] - reach)
-        pack(master[k], toRank[r]);
-    }
-  }
-  const std::vector<double> received = exchangeWithRanks(comm, toRank);
-  std::vector<Segment> near;
-  for (std::size_t i = 0; i + kSegmentDoubles <= received.size(); i += kSegmentDoubles) near.push_back(unpack(&received[i]));
-  return near;
+  for (int r = 0; r < size; ++r)
+    for (std::size_t k = 0; k < master.size(); ++k)
+      if (boxesMeet(own[k].data(), &boxes[6 * r], reach)) pack(master[k], toRank[r]);
+  return unpackFacets(exchangeWithRanks(comm, toRank));
 }
 
-double cross(const double* a, const double* b) { return a[0] * b[1] - a[1] * b[0]; }
+double dot(const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-// One slave segment's rows: per master segment facing it, the piece of the slave segment
-// its projection covers, integrated by Gauss points. `add(j, column, value)` and
-// `gap(j, value)` take the entries of the slave segment's node j; returns the covered
-// fraction of the slave segment.
+// One slave facet's rows: per master facet facing it, the pieces of the slave facet its
+// projection covers, integrated by Gauss points. `add(j, column, value)` takes the entries of
+// the slave facet's node j, `gap(j, weight, value)` the integrals of psi_j and psi_j g0;
+// returns the covered fraction of the facet.
 template <class AddEntry, class AddGap>
-double integrateSegment(const Segment& s, const std::vector<Segment>& master, double reach,
-                        const ContactMultiplierBasis& psi, int facet, const std::vector<int>& facetNodes,
-                        int nodesPerCell, const QuadratureRule& rule, AddEntry&& add, AddGap&& gap) {
+double integrateFacet(const MortarFacet& s, const std::vector<MortarFacet>& master, double reach,
+                      const ContactMultiplierBasis& psi, int facet, const std::vector<int>& facetNodes,
+                      int nodesPerCell, const QuadratureRule& rule, AddEntry&& add, AddGap&& gap) {
+  const int dim = s.dim;
   const double* n = s.normal;
-  const double t[2] = {s.x[1][0] - s.x[0][0], s.x[1][1] - s.x[0][1]}, length = s.length();
+  const double measure = s.measure(), referenceMeasure = dim == 2 ? 1.0 : 0.5;
   double covered = 0;
   std::vector<double> phi(nodesPerCell, 0.0);
-  double slave[4], masterValues[4];
-  for (const Segment& m : master) {
-    if (n[0] * m.normal[0] + n[1] * m.normal[1] >= 0) continue;  // not facing the slave side
-    const double a = s.along(m.x[0]), b = s.along(m.x[1]);
-    const double lo = std::max(0.0, std::min(a, b)), hi = std::min(1.0, std::max(a, b));
-    if (hi - lo <= 1e-12) continue;
-    const double e[2] = {m.x[1][0] - m.x[0][0], m.x[1][1] - m.x[0][1]};
-    const double facing = cross(e, n);
-    if (std::abs(facing) < 1e-12 * m.length()) continue;
-    // The point of m along n from x_s (x_s + alpha n = x_m(eta)) and the distance alpha.
-    const auto onMaster = [&](const double* xs, double& eta) {
-      const double d[2] = {xs[0] - m.x[0][0], xs[1] - m.x[0][1]};
-      eta = cross(d, n) / facing;
-      return (m.x[0][0] + eta * e[0] - xs[0]) * n[0] + (m.x[0][1] + eta * e[1] - xs[1]) * n[1];
+  double slave[MortarFacet::kMaxNodes], masterValues[MortarFacet::kMaxNodes];
+  for (const MortarFacet& m : master) {
+    const double facing = dot(n, m.normal);
+    if (facing > -1e-12) continue;  // not facing the slave side
+    const auto pieces = projectedOverlap(s, m);
+    if (pieces.empty()) continue;
+    // The distance along n from x_s to the master facet's plane (line).
+    const auto distance = [&](const double* xs) {
+      const double r[3] = {m.x[0][0] - xs[0], m.x[0][1] - xs[1], m.x[0][2] - xs[2]};
+      return dot(r, m.normal) / facing;
     };
-    // A master segment beyond reach at the piece's middle is another part of the surface.
-    double eta = 0;
-    const double middle[2] = {s.x[0][0] + 0.5 * (lo + hi) * t[0], s.x[0][1] + 0.5 * (lo + hi) * t[1]};
-    if (std::abs(onMaster(middle, eta)) > reach) continue;
-    covered += hi - lo;
-    for (int q = 0; q < rule.size(); ++q) {
-      const double xi = lo + (hi - lo) * rule.points[q], w = rule.weights[q] * (hi - lo) * length;
-      const double xs[2] = {s.x[0][0] + xi * t[0], s.x[0][1] + xi * t[1]};
-      const double g0 = onMaster(xs, eta);
-      s.shapeValues(xi, slave);
-      m.shapeValues(eta, masterValues);
-      for (int i = 0; i < s.count; ++i) phi[facetNodes[i]] = slave[i];
-      for (int j = 0; j < s.count; ++j) {
-        const double psiJ = w * psi.value(facet, facetNodes[j], phi.data());
-        gap(j, psiJ * g0);
-        for (int c = 0; c < 2; ++c) {
-          for (int k = 0; k < s.count; ++k) add(j, 2 * s.nodes[k] + c, psiJ * slave[k] * n[c]);
-          for (int l = 0; l < m.count; ++l) add(j, 2 * m.nodes[l] + c, -psiJ * masterValues[l] * n[c]);
+    // A master facet beyond reach at a piece's middle is another part of the surface.
+    double middle[3] = {0, 0, 0}, centroid[3] = {0, 0, 0};
+    for (int v = 0; v < dim; ++v)
+      for (int a = 0; a < 3; ++a) centroid[a] += pieces[0][v][a] / dim;
+    s.point(centroid, middle);
+    if (std::abs(distance(middle)) > reach) continue;
+    for (const auto& piece : pieces) {
+      // The piece's measure relative to the slave facet's: its barycentric simplex's.
+      double e[2][2];
+      for (int v = 1; v < dim; ++v)
+        for (int a = 1; a < 3; ++a) e[v - 1][a - 1] = piece[v][a] - piece[0][a];
+      const double fraction = dim == 2 ? std::abs(e[0][0]) : std::abs(e[0][0] * e[1][1] - e[0][1] * e[1][0]);
+      covered += fraction;
+      for (int q = 0; q < rule.size(); ++q) {
+        double lambda[3], xs[3] = {0, 0, 0}, xm[3], mu[3];
+        for (int a = 0; a < 3; ++a) {
+          lambda[a] = piece[0][a];
+          for (int v = 1; v < dim; ++v) lambda[a] += rule.points[(dim - 1) * q + v - 1] * (piece[v][a] - piece[0][a]);
+        }
+        const double w = rule.weights[q] / referenceMeasure * fraction * measure;
+        s.point(lambda, xs);
+        const double g0 = distance(xs);
+        for (int c = 0; c < 3; ++c) xm[c] = xs[c] + g0 * n[c];
+        m.barycentric(xm, mu);
+        s.shapeValues(lambda, slave);
+        m.shapeValues(mu, masterValues);
+        for (int i = 0; i < s.count; ++i) phi[facetNodes[i]] = slave[i];
+        for (int j = 0; j < s.count; ++j) {
+          const double psiJ = w * psi.value(facet, facetNodes[j], phi.data());
+          gap(j, psiJ, psiJ * g0);
+          for (int c = 0; c < dim; ++c) {
+            for (int k = 0; k < s.count; ++k) add(j, dim * s.nodes[k] + c, psiJ * slave[k] * n[c]);
+            for (int l = 0; l < m.count; ++l) add(j, dim * m.nodes[l] + c, -psiJ * masterValues[l] * n[c]);
+          }
         }
       }
     }
@@ -194,13 +132,56 @@ double integrateSegment(const Segment& s, const std::vector<Segment>& master, do
   return covered;
 }
 
+// Per constraint row, the integrals of psi_j g0 and psi_j, and psi_j's integral times the size
+// of the facets (their bounding box's diagonal) and times the node's coordinates.
+constexpr int kRowSums = 6;
+
+// The sums of this rank's rows (ids rowIds), added up on the rows' owners.
+RCP<const MultiVector> onOwners(const std::vector<GlobalOrdinal>& rowIds,
+                                const std::vector<std::array<double, kRowSums>>& sums, const RCP<const Map>& rowMap) {
+  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+  auto touched = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(rowIds), 0, rowMap->getComm()));
+  MultiVector local(touched, kRowSums);
+  for (int c = 0; c < kRowSums; ++c) {
+    auto data = local.getDataNonConst(c);
+    for (std::size_t i = 0; i < sums.size(); ++i) data[i] = sums[i][c];
+  }
+  auto owned = rcp(new MultiVector(rowMap, kRowSums));
+  owned->doExport(local, Tpetra::Export<LocalOrdinal, GlobalOrdinal, Node>(touched, rowMap), Tpetra::ADD);
+  return owned;
+}
+
+// Refuses bodies that overlap at the start: a weighted gap d_j / integral of psi_j below
+// -tolerance times the size of the slave facets at node j.
+void checkInitialOverlap(const MultiVector& rowSums, const ContactPair& pair) {
+  std::array<double, 5> worst{{-1e300, 0, 0, 0, 0}};  // overlap / size, overlap, x
+  for (std::size_t i = 0; i < rowSums.getLocalLength(); ++i) {
+    const double weight = rowSums.getData(1)[i], overlap = -rowSums.getData(0)[i] / weight;
+    const double relative = overlap / (rowSums.getData(2)[i] / weight);
+    if (relative > worst[0])
+      worst = {relative, overlap, rowSums.getData(3)[i] / weight, rowSums.getData(4)[i] / weight,
+               rowSums.getData(5)[i] / weight};
+  }
+  const Comm& comm = *rowSums.getMap()->getComm();
+  std::vector<double> all(5 * comm.getSize());
+  Teuchos::gatherAll(comm, 5, worst.data(), static_cast<int>(all.size()), all.data());
+  for (int r = 0; r < comm.getSize(); ++r)
+    if (all[5 * r] > worst[0]) std::copy_n(&all[5 * r], 5, worst.data());
+  if (worst[0] <= pair.initialOverlapTolerance) return;
+  std::ostringstream message;
+  message.precision(3);
+  message << "Problem/Contact: the bodies overlap by " << worst[1] << " at the start, at (" << worst[2] << ", "
+          << worst[3] << ", " << worst[4] << ") on the contact boundary \"" << pair.boundary << "\" ("
+          << worst[0] << " of its facets' size there, more than initial overlap: tolerance "
+          << pair.initialOverlapTolerance << "): move them apart";
+  throw InputError(message.str());
+}
+
 void checkPair(const DistributedSpace& ds, const ContactPair& pair) {
   if (pair.masterBoundary == pair.boundary)
     throw InputError("Problem/Contact: the master boundary \"" + pair.masterBoundary +
                      "\" is the contact boundary itself; name the other body's surface");
   ds.mesh().tag(pair.masterBoundary);  // throws naming the known boundaries
-  if (ds.dim() != 2)
-    throw InputError("Problem/Contact/master boundary: contact between two bodies is available in 2D so far");
   if (!isWeightedGap(pair.formulation))
     throw InputError("Problem/Contact/formulation: contact between two bodies needs weighted constraints "
                      "(\"dual mortar\" or \"weighted gap\"), not nodal ones");
@@ -212,49 +193,57 @@ MortarRows mortarConstraints(const DistributedSpace& ds, const ProblemDefinition
                              const std::vector<long long>& constraintOf, const RCP<const Map>& constraintMap) {
   const ContactPair& pair = *problem.contact;
   checkPair(ds, pair);
-  const LocalSegments slave = boundarySegments(ds, ds.mesh().tag(pair.boundary));
-  const LocalSegments master = boundarySegments(ds, ds.mesh().tag(pair.masterBoundary));
-  // How far a master facet may be from the slave facets it faces: twice the longest facet of
+  const LocalFacets slave = boundaryFacets(ds, ds.mesh().tag(pair.boundary));
+  const LocalFacets master = boundaryFacets(ds, ds.mesh().tag(pair.masterBoundary));
+  // How far a master facet may be from the slave facets it faces: twice the largest facet of
   // either side, or the size of the whole slave boundary (its bounding box's diagonal).
-  double longest = 0;
+  double largest = 0;
   for (const auto* side : {&slave, &master})
-    for (const Segment& s : side->segments) longest = std::max(longest, s.length());
-  std::array<double, 4> box = boundingBox(slave.segments);
-  for (int c = 0; c < 2; ++c) {
+    for (const MortarFacet& f : side->facets) largest = std::max(largest, diagonal(f.boundingBox()));
+  std::array<double, 6> box = boundingBox(slave.facets.data(), slave.facets.data() + slave.facets.size());
+  for (int c = 0; c < 3; ++c) {
     box[c] = minOverRanks(*ds.comm(), box[c]);
-    box[2 + c] = maxOverRanks(*ds.comm(), box[2 + c]);
+    box[3 + c] = maxOverRanks(*ds.comm(), box[3 + c]);
   }
-  const double reach = std::max(2.0 * maxOverRanks(*ds.comm(), longest), std::hypot(box[2] - box[0], box[3] - box[1]));
-  const std::vector<Segment> near = nearMasterSegments(*ds.comm(), slave.segments, master.segments, reach);
+  const double reach = std::max(2.0 * maxOverRanks(*ds.comm(), largest), diagonal(box));
+  const std::vector<MortarFacet> near = nearMasterFacets(*ds.comm(), slave.facets, master.facets, reach);
 
   std::vector<long long> rowOfOverlapNode(ds.space().numNodes(), -1);
   for (std::size_t i = 0; i < constraintOf.size(); ++i) rowOfOverlapNode[ds.overlapSpaceNodes()[i]] = constraintOf[i];
   std::map<GlobalOrdinal, std::size_t> localRow;
   std::vector<GlobalOrdinal> rowIds;
-  std::vector<double> gaps;
+  std::vector<std::array<double, kRowSums>> sums;
   std::vector<std::vector<std::pair<GlobalOrdinal, double>>> entries;
   const ContactMultiplierBasis psi(ds.space().basis(), pair.formulation);
-  const QuadratureRule rule = simplexQuadrature(1, 2 * ds.space().degree());  // psi_j N_l exactly
+  const QuadratureRule rule = simplexQuadrature(ds.dim() - 1, 2 * ds.space().degree());  // psi_j N_l exactly
   long long uncovered = 0;
-  for (std::size_t f = 0; f < slave.segments.size(); ++f) {
-    const auto [cell, facet] = slave.facets[f];
-    const std::vector<int> facetNodes = ds.space().basis().facetNodes(facet);
-    std::size_t rows[4];
+  for (std::size_t f = 0; f < slave.facets.size(); ++f) {
+    const MortarFacet& facet = slave.facets[f];
+    const auto [cell, local] = slave.cellFacets[f];
+    const std::vector<int> facetNodes = ds.space().basis().facetNodes(local);
+    std::size_t rows[MortarFacet::kMaxNodes];
     for (std::size_t j = 0; j < facetNodes.size(); ++j) {
       const long long row = rowOfOverlapNode[ds.space().cellNodes(cell)[facetNodes[j]]];
       if (row < 0) throw Error("mortar constraints: a slave node has no constraint");
       const auto [it, fresh] = localRow.emplace(row, rowIds.size());
       if (fresh) {
         rowIds.push_back(row);
-        gaps.push_back(0.0);
+        sums.push_back({});
         entries.emplace_back();
       }
       rows[j] = it->second;
     }
-    const double covered = integrateSegment(
-        slave.segments[f], near, reach, psi, facet, facetNodes, ds.space().nodesPerCell(), rule,
+    const double size = diagonal(facet.boundingBox());
+    const double covered = integrateFacet(
+        facet, near, reach, psi, local, facetNodes, ds.space().nodesPerCell(), rule,
         [&](int j, GlobalOrdinal column, double value) { entries[rows[j]].emplace_back(column, value); },
-        [&](int j, double value) { gaps[rows[j]] += value; });
+        [&](int j, double weight, double value) {
+          std::array<double, kRowSums>& row = sums[rows[j]];
+          row[0] += value;
+          row[1] += weight;
+          row[2] += weight * size;
+          for (int c = 0; c < 3; ++c) row[3 + c] += weight * facet.x[j][c];
+        });
     if (covered < 1.0 - 1e-9) ++uncovered;
   }
   if (const long long total = sumOverRanks(*ds.comm(), uncovered); total > 0)
@@ -267,15 +256,9 @@ MortarRows mortarConstraints(const DistributedSpace& ds, const ProblemDefinition
     for (const auto& [column, value] : entries[i]) summed.add(i, column, value);
   MortarRows result;
   result.A = summed.onOwners(constraintMap, ds.ownedDofMap());
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  auto touched = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(rowIds), 0, ds.comm()));
-  Vector local(touched);
-  {
-    auto data = local.getDataNonConst();
-    for (std::size_t i = 0; i < gaps.size(); ++i) data[i] = gaps[i];
-  }
-  result.d = rcp(new Vector(constraintMap));
-  result.d->doExport(local, Tpetra::Export<LocalOrdinal, GlobalOrdinal, Node>(touched, constraintMap), Tpetra::ADD);
+  const RCP<const MultiVector> rowSums = onOwners(rowIds, sums, constraintMap);
+  checkInitialOverlap(*rowSums, pair);
+  result.d = rcp(new Vector(*rowSums->getVector(0)));
   return result;
 }
 

@@ -9,13 +9,13 @@
 // distance along n to it. As a row of A v <= d: the slave terms integral psi_j phi_k n . u_k,
 // the master terms -integral psi_j (N_l o pi) n . u_l, d_j = integral psi_j g0.
 //
-// Integration is segment based (Popp, Gitterle, Gee and Wall; Puso and Laursen): each slave
-// facet is cut where the projections of the master facets facing it begin and end, and each
-// piece is integrated by a Gauss rule exact for the products of the pieces' affine
-// functions, so that a pressure that is constant passes from one side to the other exactly
-// (the contact patch test). Each rank integrates its own slave facets; the master facets it
-// needs come from the ranks that hold them, chosen by the bounding box of its slave facets
-// (no rank gathers a whole surface). 2D and P1 so far.
+// Integration is segment based (Popp, Gitterle, Gee and Wall; Puso and Laursen): each master
+// facet facing a slave facet is projected onto it along n and clipped to it (an interval in
+// 2D, a convex polygon in 3D, cut into triangles), and each piece is integrated by a Gauss
+// rule exact for the products of the pieces' polynomial functions, so that a pressure that
+// is constant passes from one side to the other exactly (the contact patch test). Each rank
+// integrates its own slave facets; the master facets it needs come from the ranks that hold
+// them, chosen by the bounding box of its slave facets (no rank gathers a whole surface).
 #include <vector>
 
 #include "assembly/DistributedSpace.hpp"

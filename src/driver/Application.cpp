@@ -53,8 +53,10 @@ Teuchos::ParameterList outputParameters() {
   p.set("write history", true, "Write history.csv, one row per Newton step");
   p.set("contact pressure", "auto",
         "Pressure recovered from nodal multipliers: \"consistent\" (boundary mass matrix solve), "
-        "\"lumped\" (HRZ weights), \"patch\" (lumped, averaged over each active node's facet patch) or "
-        "\"auto\" (lumped for 2D P1, patch for 3D P1, consistent for P2, P3); see doc/hertz-validation.md",
+        "\"lumped\" (HRZ weights), \"patch\" (lumped, averaged over each active node's facet patch; the "
+        "nodal pressures of dual mortar constraints are averaged the same way) or \"auto\" (lumped for 2D P1, "
+        "patch for 3D P1, consistent for P2, P3); the multipliers of weighted gaps are the pressure's "
+        "coefficients already; see doc/hertz-validation.md",
         choices<PressureRecovery>({{"auto", PressureRecovery::Auto},
                                    {"consistent", PressureRecovery::Consistent},
                                    {"lumped", PressureRecovery::Lumped},

@@ -74,10 +74,17 @@ void addContactParameters(ParameterList& contact) {
   contact.set("boundary", "", "Name of the contact boundary; empty: no contact");
   contact.set("master boundary", "",
               "The surface of another body that the contact boundary (then the slave side) touches: mortar "
-              "constraints between the two bodies, normals and gaps from the slave side (doc/algorithms.md; 2D, "
-              "P1, without mesh: refinements so far). Make the slave the side that lies within the master's reach, the finer one where "
-              "both do; obstacle: direction then points from the master into the slave body (the sign of the "
-              "normal force reported). Empty: the rigid obstacle of the gap and obstacle parameters");
+              "constraints between the two bodies, normals and gaps from the slave side (doc/algorithms.md; "
+              "2D and 3D, P1, without mesh: refinements so far). Make the slave the side that lies within the "
+              "master's reach, and where both do, the finer and the softer one (a slave much stiffer than its "
+              "master shows an oscillating pressure); obstacle: direction then points from the master into the "
+              "slave body (the sign of the normal force reported). Empty: the rigid obstacle of the gap and "
+              "obstacle parameters");
+  contact.set("initial overlap: tolerance", 0.1,
+              "With a master boundary: how far the bodies may overlap at the start (a slave node's weighted "
+              "gap below zero), relative to the size of the slave facets there; a larger overlap is an "
+              "input error",
+              range(0.0, 1e300));
   contact.set("obstacle: direction", Array<double>(),
               "Vector from the obstacle into the body (normalised); empty: the last axis, "
               "(0,1) in 2D and (0,0,1) in 3D");
@@ -247,7 +254,8 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
   def.contact = ContactPair{boundary, master, unit, Expression(text, "Problem/Contact/gap"),
                             formulation == "weighted gap" ? ContactFormulation::weightedGap
                             : dual                        ? ContactFormulation::dualMortar
-                                                          : ContactFormulation::nodal};
+                                                          : ContactFormulation::nodal,
+                            contact.get<double>("initial overlap: tolerance")};
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 // Mortar contact between two bodies meshed independently: two stacked blocks whose interface
-// meshes do not match (10 slave and 7 master segments, and a perturbed slave side). The rows
+// meshes do not match (2D: 10 slave and 7 master segments, and a perturbed slave side; 3D:
+// unit cubes meshed at different sizes). The rows
 // of A move with the bodies (a common rigid translation leaves every weighted gap unchanged),
 // an initial gap is weighted as it should, and the contact patch test passes: pressed
 // uniformly, the multipliers, nodal pressures of the dual basis, equal the exact pressure.
@@ -20,6 +21,8 @@
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/ElasticityAssembler.hpp"
 #include "core/Collectives.hpp"
+#include "signorini/assembly/ContactPressure.hpp"
+#include "signorini/assembly/ContactStatistics.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
@@ -70,20 +73,46 @@ std::string writeBlocks(const Comm& comm, double gap, double perturbation) {
   return directory + "/" + file.str();
 }
 
+// Two unit cubes, "lower" [0,1]^3 and "upper" [0,1]^2 x [1 + gap, 2 + gap], meshed apart at
+// sizes h and H (OpenCASCADE boxes without a boolean fragment keep their own faces), so
+// that their interface triangles do not match. Boundaries "bottom", "top", "sides" (x = 0, 1),
+// "y sides", "lower top" and "upper bottom". Written by rank 0.
+std::string writeCubes(const Comm& comm, double gap, double h, double H) {
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  std::ostringstream name, file;
+  name << std::string(binary ? binary : "/tmp") << "/mortar-np" << comm.getSize();
+  file << name.str() << "/cubes-" << gap << "-" << h << "-" << H << ".geo";
+  if (comm.getRank() == 0) {
+    std::filesystem::create_directories(name.str());
+    std::ofstream geo(file.str());
+    geo << "SetFactory(\"OpenCASCADE\");\n"
+        << "Box(1) = {0, 0, 0, 1, 1, 1};\nBox(2) = {0, 0, " << 1 + gap << ", 1, 1, 1};\n"
+        << "MeshSize{PointsOf{Volume{1};}} = " << h << ";\nMeshSize{PointsOf{Volume{2};}} = " << H << ";\n"
+        << "Physical Surface(\"bottom\") = {5}; Physical Surface(\"lower top\") = {6};\n"
+        << "Physical Surface(\"upper bottom\") = {11}; Physical Surface(\"top\") = {12};\n"
+        << "Physical Surface(\"sides\") = {1, 2, 7, 8}; Physical Surface(\"y sides\") = {3, 4, 9, 10};\n"
+        << "Physical Volume(\"lower\") = {1}; Physical Volume(\"upper\") = {2};\n";
+  }
+  comm.barrier();
+  return file.str();
+}
+
 // The blocks on rollers (sides), the lower one on the ground, the upper one's top moved down
 // by `approach`; "lower top" the slave side.
-Teuchos::ParameterList pressedBlocks(const std::string& file, double approach, int degree = 1) {
+Teuchos::ParameterList pressedBlocks(const std::string& file, double approach, int degree = 1, int dim = 2) {
+  const std::string vertical = dim == 2 ? "displacement: y" : "displacement: z";
   Teuchos::ParameterList problem("Problem");
   problem.set("mesh: type", "gmsh");
   problem.set("mesh: file", file);
   problem.set("element: degree", degree);
   problem.set("material: poisson ratio", 0.3);
   problem.sublist("Dirichlet").sublist("sides").set("displacement: x", "0");
-  problem.sublist("Dirichlet").sublist("bottom").set("displacement: y", "0");
+  if (dim == 3) problem.sublist("Dirichlet").sublist("y sides").set("displacement: y", "0");
+  problem.sublist("Dirichlet").sublist("bottom").set(vertical, "0");
   std::ostringstream down;
   down.precision(17);
   down << -approach;
-  problem.sublist("Dirichlet").sublist("top").set("displacement: y", down.str());
+  problem.sublist("Dirichlet").sublist("top").set(vertical, down.str());
   problem.sublist("Contact").set("boundary", "lower top");
   problem.sublist("Contact").set("master boundary", "upper bottom");
   return problem;
@@ -95,11 +124,11 @@ AssembledProblem build(const Teuchos::ParameterList& problem) {
 }
 
 // Each row's entries summed per component: A applied to a translation of both bodies.
-double largestRowSum(const CrsMatrix& A, int component) {
+double largestRowSum(const CrsMatrix& A, int component, int dim = 2) {
   Vector t(A.getDomainMap()), At(A.getRangeMap());
   auto data = t.getDataNonConst();
   for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(data.size()); ++i)
-    data[i] = A.getDomainMap()->getGlobalElement(i) % 2 == component;
+    data[i] = A.getDomainMap()->getGlobalElement(i) % dim == component;
   data = Teuchos::null;
   A.apply(t, At);
   return At.normInf();
@@ -213,6 +242,74 @@ TEST(MortarConstraints, TwoElasticBodiesFollowHertz) {
   }
 }
 
+// The same in 3D, where each master triangle's projection is clipped to the slave triangles
+// it covers: a translation of both bodies leaves every row unchanged, an initial gap g sums
+// to g times the interface's area, and the patch test passes under a prescribed approach and
+// under a pressure, for two pairs of mesh sizes.
+TEST(MortarConstraints, RowsMoveWithTheBodiesIn3D) {
+  const Comm& comm = *Tpetra::getDefaultComm();
+  for (const auto& [h, H] : {std::pair{0.3, 0.22}, std::pair{0.2, 0.33}}) {
+    const AssembledProblem p = build(pressedBlocks(writeCubes(comm, 0.0, h, H), 0.0, 1, 3));
+    for (int c = 0; c < 3; ++c) EXPECT_LT(largestRowSum(*p.qp.A, c, 3), 1e-14) << h;
+    EXPECT_LT(p.qp.d->normInf(), 1e-14) << h;
+  }
+  const double gap = 0.05;
+  const AssembledProblem p = build(pressedBlocks(writeCubes(comm, gap, 0.3, 0.22), 0.0, 1, 3));
+  auto d = p.qp.d->getData();
+  double local = 0;
+  for (double value : d) local += value;
+  EXPECT_NEAR(sumOverRanks(comm, local), gap * 1.0, 1e-14);
+}
+
+TEST(MortarConstraints, PassTheContactPatchTestIn3D) {
+  const double approach = 0.01, nu = 0.3, modulus = (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  for (const auto& [h, H] : {std::pair{0.3, 0.22}, std::pair{0.2, 0.33}})
+    for (bool underAPressure : {false, true}) {
+      const std::string file = writeCubes(*Tpetra::getDefaultComm(), 0.0, h, H);
+      Teuchos::ParameterList problem = pressedBlocks(file, underAPressure ? 0.0 : approach, 1, 3);
+      const double pressure = underAPressure ? 0.01 : modulus * approach / 2;
+      if (underAPressure) {
+        problem.sublist("Dirichlet").remove("top");
+        problem.sublist("Traction").sublist("top").set("traction: z", "-0.01");
+      }
+      Teuchos::ParameterList solver;
+      solver.set("kkt: tolerance", 1e-12);
+      const AssembledProblem p = build(problem);
+      const SolveResult r = InteriorPointSolver(solver).solve(p.qp, p.multigrid);
+      ASSERT_TRUE(r.converged()) << r.message;
+      auto lambda = r.lambda->getData();
+      double local = 0;
+      for (double value : lambda) local = std::max(local, std::abs(-value / pressure - 1.0));
+      EXPECT_LT(maxOverRanks(*p.qp.A->getComm(), local), 1e-8) << h << " " << underAPressure;
+    }
+}
+
+// Hertz between two elastic bodies in 3D (examples/bodies/ball-on-block-3d.xml, its coarsest
+// mesh): a half-ball of radius 1 pressed onto a block, for equal moduli and a block 100 times
+// stiffer. The pressure as users see it (recovered as Output/contact pressure's default
+// does) peaks within 5% of Hertz' p0 = 3P/(2 pi a^2) and the active area's radius is within
+// 5% of a = (3 P R / (4 E*))^(1/3), P the computed force.
+TEST(MortarConstraints, TwoElasticBodiesFollowHertzIn3D) {
+  const std::string directory = signorini::testing::sourceDir() + "/examples/bodies";
+  for (double block : {1.0, 100.0}) {
+    Teuchos::ParameterList problem =
+        Teuchos::getParametersFromXmlFile(directory + "/ball-on-block-3d.xml")->sublist("Problem");
+    problem.set("material: young's modulus", block);  // the block's; the ball's is its own
+    const AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm(), directory);
+    const SolveResult r = InteriorPointSolver().solve(p.qp, p.multigrid);
+    ASSERT_TRUE(r.converged()) << r.message;
+    const RCP<const Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
+    const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
+    const RCP<Vector> pressure = recovery.recover(PressureRecovery::Auto, *r.lambda, *active);
+    const ContactStatistics contact = contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active,
+                                                        p.definition.contact->obstacleDirection);
+    const double eStar = 1.0 / ((1 - 0.3 * 0.3) * (1.0 + 1.0 / block));
+    const double a = std::cbrt(3 * contact.normalForce / (4 * eStar)), p0 = 3 * contact.normalForce / (2 * M_PI * a * a);
+    EXPECT_NEAR(contact.peakPressure / p0, 1.0, 0.05) << block;
+    EXPECT_NEAR(std::sqrt(contact.area / M_PI) / a, 1.0, 0.05) << block;
+  }
+}
+
 TEST(MortarConstraints, BadPairsAreInputErrors) {
   const std::string file = writeBlocks(*Tpetra::getDefaultComm(), 0.0, 0.0);
   Teuchos::ParameterList same = pressedBlocks(file, 0.0);
@@ -226,6 +323,11 @@ TEST(MortarConstraints, BadPairsAreInputErrors) {
   Teuchos::ParameterList away = pressedBlocks(file, 0.0);  // the upper top faces away from the slave side
   away.sublist("Contact").set("master boundary", "top");
   EXPECT_THROW(build(away), InputError);
+  // Bodies that overlap at the start by half a facet; within the tolerance, they are posed.
+  const Comm& comm = *Tpetra::getDefaultComm();
+  EXPECT_THROW(build(pressedBlocks(writeBlocks(comm, -0.05, 0.0), 0.0)), InputError);
+  EXPECT_THROW(build(pressedBlocks(writeCubes(comm, -0.1, 0.3, 0.22), 0.0, 1, 3)), InputError);
+  EXPECT_LT(build(pressedBlocks(writeBlocks(comm, -0.001, 0.0), 0.0)).qp.d->normInf(), 0.001);
 }
 
 }  // namespace

@@ -33,15 +33,17 @@ force = summary["contact"]["normal_force"]
 assert summary["status"] == "converged" and abs(force - 80.0) < 1e-6 * 80.0, (summary["status"], force)
 CHECK
 grep -q 'Name="body"' "$work/padded-block/solution_0.vtu" || { echo "no body field in the padded block's output"; exit 1; }
-# Two bodies meshed apart in mortar contact, the upper one held by the contact alone: the
-# contact pressure is the applied one.
-(cd "$work" && mpiexec -np 2 "$work/prefix/bin/signorini" "$source_dir/examples/bodies/two-blocks-2d.xml" \
-   --output "$work/two-blocks") || { echo "the installed bin/signorini does not solve the two blocks"; exit 1; }
-/usr/bin/python3 - "$work/two-blocks/summary.json" <<'CHECK'
+# Two bodies meshed apart in mortar contact, the upper one held by the contact alone (2D and
+# 3D): the contact pressure is the applied one.
+for dim in 2d 3d; do
+  (cd "$work" && mpiexec -np 2 "$work/prefix/bin/signorini" "$source_dir/examples/bodies/two-blocks-$dim.xml" \
+     --output "$work/two-blocks-$dim") || { echo "the installed bin/signorini does not solve the two blocks ($dim)"; exit 1; }
+  /usr/bin/python3 - "$work/two-blocks-$dim/summary.json" <<'CHECK'
 import json, sys
 contact = json.load(open(sys.argv[1]))["contact"]
 assert abs(contact["normal_force"] - 0.01) < 1e-8 and abs(contact["peak_pressure"] - 0.01) < 1e-8, contact
 CHECK
+done
 
 # The installed Python module, from the prefix alone: the hand-over example.
 (cd "$work" && PYTHONPATH="$work/prefix/lib/python3/dist-packages" /usr/bin/python3 \

@@ -34,9 +34,9 @@ struct ContactPressureSamples {
 };
 
 /// How the pressure is recovered from nodal-constraint multipliers (weighted gaps need no
-/// recovery): ContactPressure's consistent pressure(), lumpedPressure() or patchPressure();
-/// Auto is lumped for 2D P1, patch for 3D P1 and consistent for P2/P3, chosen by the Hertz
-/// studies (doc/hertz-validation.md).
+/// recovery, but for the patch average of the dual basis' nodal pressures): ContactPressure's
+/// consistent pressure(), lumpedPressure() or patchPressure(); Auto is lumped for 2D P1, patch
+/// for 3D P1 and consistent for P2/P3, chosen by the Hertz studies (doc/hertz-validation.md).
 enum class PressureRecovery { Auto, Consistent, Lumped, Patch };
 
 class ContactPressure {
@@ -64,8 +64,9 @@ class ContactPressure {
   /// over the active nodes j that share a contact facet with node i (i included), f = -lambda,
   /// w the HRZ weights; p_i = 0 where i is not active. Exact for a uniform pressure; removes
   /// the node-to-node oscillation of P1 nodal forces on meshes whose boundary vertices
-  /// alternate in valence (structured tetrahedral meshes). With weighted gaps, the same as
-  /// pressure(). Collective.
+  /// alternate in valence (structured tetrahedral meshes). Dual mortar: the same average of the
+  /// nodal pressures -lambda_j with the weights w_j = integral of psi_j (f_j = -lambda_j w_j);
+  /// other weighted gaps: the same as pressure(). Collective.
   RCP<Vector> patchPressure(const Vector& lambda, const Vector& active) const;
 
   /// The pressure by the recovery `how`. Collective.

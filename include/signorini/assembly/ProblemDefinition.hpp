@@ -53,6 +53,9 @@ struct ContactPair {
   std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body
   Expression gap;  ///< g(x), the distance to the obstacle along obstacleDirection
   ContactFormulation formulation = ContactFormulation::nodal;
+  /// Between two bodies: the overlap at the start that is refused, relative to the size of
+  /// the slave facets where it is
+  double initialOverlapTolerance = 0.1;
 };
 
 struct ProblemDefinition {
