@@ -173,6 +173,7 @@ ContactPressure::ContactPressure(const FiniteElementSpace& feSpace, const Proble
       multipliers_(std::make_shared<MultiplierBasis>(distributedSpace(feSpace).space().basis(),
                                                      formulationOf(problem))),
       weightedGap_(isWeightedGap(formulationOf(problem))),
+      betweenBodies_(problem.contact && !problem.contact->masterBoundary.empty()),
       constraintMap_(constraintMap) {
   const DistributedSpace& ds = distributedSpace(feSpace);
   const LagrangeSpace& space = ds.space();

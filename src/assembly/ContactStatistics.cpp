@@ -35,7 +35,14 @@ ContactStatistics contactStatistics(const ContactPressure& recovery, const Vecto
                                     const std::array<double, 3>& obstacleDirection) {
   ContactStatistics s;
   s.dim = recovery.dim();
-  s.force = forceResultant(A, lambda, s.dim, recovery.contactBoundaryDofs().get());
+  const RCP<Vector> slaveDofs = recovery.contactBoundaryDofs();
+  s.force = forceResultant(A, lambda, s.dim, slaveDofs.get());
+  if (recovery.betweenBodies()) {
+    Vector masterDofs(slaveDofs->getMap());
+    masterDofs.putScalar(1.0);
+    masterDofs.update(-1.0, *slaveDofs, 1.0);
+    s.masterForce = forceResultant(A, lambda, s.dim, &masterDofs);
+  }
   for (int c = 0; c < 3; ++c) s.normalForce += s.force[c] * obstacleDirection[c];
   double peak = -std::numeric_limits<double>::infinity();
   for (double p : pressure.getData()) peak = std::max(peak, p);

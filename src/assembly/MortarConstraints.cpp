@@ -9,11 +9,13 @@
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
 #include "assembly/ContactMultiplierBasis.hpp"
+#include "assembly/MeshPieces.hpp"
 #include "assembly/MortarFacet.hpp"
 #include "assembly/SummedRows.hpp"
 #include "core/Collectives.hpp"
@@ -177,6 +179,35 @@ void checkInitialOverlap(const MultiVector& rowSums, const ContactPair& pair) {
   throw InputError(message.str());
 }
 
+// The master boundary must lie on other bodies than the slave side: the connected pieces of
+// the mesh that hold their facets' nodes do not meet.
+void checkDifferentBodies(const DistributedSpace& ds, const LocalFacets& slave, const LocalFacets& master,
+                          const ContactPair& pair) {
+  const MeshPieces pieces = meshPieces(ds);
+  Vector owned(ds.ownedNodeMap()), overlap(ds.overlapNodeMap());
+  {
+    auto data = owned.getDataNonConst();
+    for (std::size_t i = 0; i < pieces.ofOwnedNode.size(); ++i) data[i] = pieces.ofOwnedNode[i];
+  }
+  overlap.doImport(owned, Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>(ds.ownedNodeMap(), ds.overlapNodeMap()),
+                   Tpetra::INSERT);
+  auto piece = overlap.getData();
+  std::vector<int> onSide[2] = {std::vector<int>(pieces.count, 0), std::vector<int>(pieces.count, 0)};
+  for (int side = 0; side < 2; ++side)
+    for (const MortarFacet& f : (side == 0 ? slave : master).facets)
+      onSide[side][static_cast<int>(piece[ds.overlapNodeMap()->getLocalElement(f.nodes[0])])] = 1;
+  for (int side = 0; side < 2; ++side) {
+    std::vector<int> all(pieces.count);
+    Teuchos::reduceAll(*ds.comm(), Teuchos::REDUCE_MAX, pieces.count, onSide[side].data(), all.data());
+    onSide[side] = all;
+  }
+  for (int p = 0; p < pieces.count; ++p)
+    if (onSide[0][p] && onSide[1][p])
+      throw InputError("Problem/Contact: the master boundary \"" + pair.masterBoundary +
+                       "\" lies on the same body as the contact boundary \"" + pair.boundary +
+                       "\"; name a surface of the other body (a body meshed apart from it)");
+}
+
 void checkPair(const DistributedSpace& ds, const ContactPair& pair) {
   if (pair.masterBoundary == pair.boundary)
     throw InputError("Problem/Contact: the master boundary \"" + pair.masterBoundary +
@@ -195,6 +226,7 @@ MortarRows mortarConstraints(const DistributedSpace& ds, const ProblemDefinition
   checkPair(ds, pair);
   const LocalFacets slave = boundaryFacets(ds, ds.mesh().tag(pair.boundary));
   const LocalFacets master = boundaryFacets(ds, ds.mesh().tag(pair.masterBoundary));
+  checkDifferentBodies(ds, slave, master, pair);
   // How far a master facet may be from the slave facets it faces: twice the largest facet of
   // either side, or the size of the whole slave boundary (its bounding box's diagonal).
   double largest = 0;

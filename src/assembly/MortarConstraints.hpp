@@ -30,8 +30,9 @@ struct MortarRows {
 };
 
 // constraintOf: the constraint of each overlap node (overlapNodeConstraints), -1 off the slave
-// boundary. Throws InputError for a pair it cannot pose: the same boundary on both sides, a
-// dimension or degree it does not support, slave nodes that no master facet faces.
+// boundary. Throws InputError for a pair it cannot pose: the same boundary on both sides or
+// on one body, a formulation it does not support, slave facets that no master facet covers,
+// bodies that overlap at the start (ContactPair::initialOverlapTolerance).
 // Collective.
 MortarRows mortarConstraints(const DistributedSpace& space, const ProblemDefinition& problem,
                              const std::vector<long long>& constraintOf, const RCP<const Map>& constraintMap);

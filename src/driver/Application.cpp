@@ -120,7 +120,13 @@ Teuchos::ParameterEntry parseLike(const Teuchos::ParameterEntry* model, const st
 void logContact(const ContactStatistics& c, std::ostream& out) {
   out << "Contact: force (";
   for (int i = 0; i < c.dim; ++i) out << (i ? ", " : "") << c.force[i];
-  out << "), normal force " << c.normalForce << ", ";
+  out << ")";
+  if (c.masterForce) {
+    out << " (on the master body: (";
+    for (int i = 0; i < c.dim; ++i) out << (i ? ", " : "") << (*c.masterForce)[i];
+    out << "))";
+  }
+  out << ", normal force " << c.normalForce << ", ";
   if (std::isfinite(c.area))
     out << (c.dim == 2 ? "length " : "area ") << c.area << ", peak pressure " << c.peakPressure << ", ";
   out << c.activeNodes << " active nodes" << (std::isfinite(c.area) ? "" : " (no mesh: no pressure)") << "\n";

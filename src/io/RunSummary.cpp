@@ -84,6 +84,10 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     const ContactStatistics& c = *s.contact;
     j << "  \"contact\": {\"force\": [";
     for (int i = 0; i < c.dim; ++i) j << (i ? ", " : "") << number(c.force[i]);
+    if (c.masterForce) {
+      j << "], \"master_force\": [";
+      for (int i = 0; i < c.dim; ++i) j << (i ? ", " : "") << number((*c.masterForce)[i]);
+    }
     j << "], \"normal_force\": " << number(c.normalForce) << ", \"" << (c.dim == 2 ? "length" : "area")
       << "\": " << number(c.area) << ", \"peak_pressure\": " << number(c.peakPressure)
       << ", \"active_nodes\": " << c.activeNodes << "},\n";

@@ -307,6 +307,8 @@ TEST(MortarConstraints, TwoElasticBodiesFollowHertzIn3D) {
     const double a = std::cbrt(3 * contact.normalForce / (4 * eStar)), p0 = 3 * contact.normalForce / (2 * M_PI * a * a);
     EXPECT_NEAR(contact.peakPressure / p0, 1.0, 0.05) << block;
     EXPECT_NEAR(std::sqrt(contact.area / M_PI) / a, 1.0, 0.05) << block;
+    ASSERT_TRUE(contact.masterForce.has_value());  // action and reaction
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR((*contact.masterForce)[c], -contact.force[c], 1e-10 * contact.normalForce);
   }
 }
 
@@ -323,6 +325,9 @@ TEST(MortarConstraints, BadPairsAreInputErrors) {
   Teuchos::ParameterList away = pressedBlocks(file, 0.0);  // the upper top faces away from the slave side
   away.sublist("Contact").set("master boundary", "top");
   EXPECT_THROW(build(away), InputError);
+  Teuchos::ParameterList sameBody = pressedBlocks(file, 0.0);  // the lower block's bottom
+  sameBody.sublist("Contact").set("master boundary", "bottom");
+  EXPECT_THROW(build(sameBody), InputError);
   // Bodies that overlap at the start by half a facet; within the tolerance, they are posed.
   const Comm& comm = *Tpetra::getDefaultComm();
   EXPECT_THROW(build(pressedBlocks(writeBlocks(comm, -0.05, 0.0), 0.0)), InputError);

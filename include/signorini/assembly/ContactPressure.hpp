@@ -89,6 +89,8 @@ class ContactPressure {
 
   const CrsMatrix& massMatrix() const { return *mass_; }
   int dim() const;
+  /// True for contact between two bodies (ContactPair::masterBoundary given).
+  bool betweenBodies() const { return betweenBodies_; }
 
  private:
   /// The nodal values of sum_a c_a psi_a (weighted gaps; c itself for the dual basis), on the
@@ -106,6 +108,7 @@ class ContactPressure {
   const FiniteElementSpace& space_;
   std::shared_ptr<const MultiplierBasis> multipliers_;
   bool weightedGap_;
+  bool betweenBodies_;
   RCP<const Map> constraintMap_, overlapMap_;
   RCP<CrsMatrix> mass_, scaledMass_;
   RCP<CrsMatrix> patchSum_;  ///< M's pattern with unit values: sums over a node's facet patch

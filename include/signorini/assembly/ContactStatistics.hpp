@@ -3,6 +3,7 @@
 /// Totals of one solution's contact forces and pressure, reported in the log and in
 /// summary.json. The same on every rank.
 #include <array>
+#include <optional>
 
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/solver/ContactQP.hpp"
@@ -15,6 +16,9 @@ struct ContactStatistics {
   /// the obstacle's (or the master body's) force on the contact boundary: A^T lambda summed
   /// per component over its nodes' DOFs (with the mesh; over every DOF without)
   std::array<double, 3> force{{0, 0, 0}};
+  /// between two bodies, the slave side's force on the master body: A^T lambda summed over
+  /// the DOFs off the contact boundary, which balances `force`
+  std::optional<std::array<double, 3>> masterForce;
   double normalForce = 0;  ///< force . obstacle direction (>= 0 when pressing)
   double area = 0;          ///< lumped boundary measure of the active nodes (a length in 2D); NaN without a mesh
   double peakPressure = 0;  ///< largest nodal value of p_h; NaN without a mesh
