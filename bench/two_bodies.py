@@ -10,7 +10,7 @@ boundary clamped normally instead: for two bodies, each body then on its own), o
 (--ranks), the default parameters; and the contact force, to compare with the load (0.01 on
 the unit area), the largest pressure (0.01 everywhere) and the master body's force.
 
-    /usr/bin/python3 bench/two_bodies.py [--ranks 2] [--size-factor 0.16]
+    /usr/bin/python3 bench/two_bodies.py [--ranks 2] [--size-factor 0.11]
 
 Writes bench/results/two-bodies.{json,md}.
 """
@@ -106,7 +106,7 @@ def table(runs):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--ranks", default="2")
-    parser.add_argument("--size-factor", type=float, default=0.16)
+    parser.add_argument("--size-factor", type=float, default=0.11)
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "two-bodies"))
     args = parser.parse_args()
     ranks = [int(r) for r in args.ranks.split(",")]
