@@ -375,8 +375,10 @@ RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDe
       grid.refinesFineCells() ? space.basis().subSimplices() : linear.subSimplices();
   const long long numVertexNodes = grid.refinesFineCells() ? space.numNodes() : ds.mesh().numVertices();
   std::vector<long long> gridVertex(numVertexNodes);
+  const MeshPieces apart = meshPieces(ds);  // bodies meshed apart may have nodes at one place
   for (long long v = 0; v < numVertexNodes; ++v) {
-    gridVertex[v] = grid.vertexAt(&space.nodeCoordinates()[dim * v]);
+    const double* x = &space.nodeCoordinates()[dim * v];
+    gridVertex[v] = apart.count > 1 ? grid.vertexOfBodyAt(x, apart.ofSpaceNode[v]) : grid.vertexAt(x);
     if (gridVertex[v] < 0) throw Error("assembleGridStiffness: a mesh node is not a vertex of " + grid.description());
   }
   std::vector<GlobalOrdinal> rowIds(dim * numVertexNodes);
@@ -548,7 +550,7 @@ RCP<MultiVector> ownedNodeCoordinates(const DistributedSpace& ds) {
   auto coordinates = rcp(new MultiVector(ds.ownedNodeMap(), dim));
   for (int c = 0; c < dim; ++c) {
     auto data = coordinates->getDataNonConst(c);
-    for (std::size_t i = 0; i < data.size(); ++i) data[i] = ds.space().nodeCoordinates()[dim * overlap[i] + c];
+    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(data.size()); ++i) data[i] = ds.space().nodeCoordinates()[dim * overlap[i] + c];
   }
   return coordinates;
 }

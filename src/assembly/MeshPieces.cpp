@@ -81,8 +81,11 @@ MeshPieces meshPieces(const DistributedSpace& ds) {
   all.erase(std::unique(all.begin(), all.end()), all.end());
   MeshPieces pieces;
   pieces.count = static_cast<int>(all.size());
+  const auto pieceOf = [&](double l) { return static_cast<int>(std::lower_bound(all.begin(), all.end(), l) - all.begin()); };
   for (std::size_t i = 0; i < ds.ownedNodeMap()->getNodeNumElements(); ++i)
-    pieces.ofOwnedNode.push_back(static_cast<int>(std::lower_bound(all.begin(), all.end(), label[overlap[i]]) - all.begin()));
+    pieces.ofOwnedNode.push_back(pieceOf(label[overlap[i]]));
+  pieces.ofSpaceNode.assign(numNodes, -1);
+  for (long long n : overlap) pieces.ofSpaceNode[n] = pieceOf(label[n]);
   return pieces;
 }
 

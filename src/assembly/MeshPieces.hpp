@@ -11,6 +11,7 @@ namespace signorini {
 struct MeshPieces {
   int count = 0;
   std::vector<int> ofOwnedNode;  // the piece of each owned node, in ownedNodeMap() order
+  std::vector<int> ofSpaceNode;  // the piece of each local node of the space, by space node
 };
 
 // Pieces numbered in the order of their smallest global node id. Collective; a few Tpetra

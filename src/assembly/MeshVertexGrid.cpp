@@ -7,6 +7,7 @@
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "assembly/MeshPieces.hpp"
 #include "fe/ElasticityElement.hpp"
 #include "signorini/core/Error.hpp"
 
@@ -35,6 +36,7 @@ MeshVertexGrid::MeshVertexGrid(std::shared_ptr<const DistributedSpace> space, Re
   std::sort(nodesByPlace_.begin(), nodesByPlace_.end(), [&](long long a, long long b) {
     return std::lexicographical_compare(xyz + dim * a, xyz + dim * (a + 1), xyz + dim * b, xyz + dim * (b + 1));
   });
+  bodyOfNode_ = meshPieces(ds).ofSpaceNode;
   vertexById_.resize(vertexId_.size());
   std::iota(vertexById_.begin(), vertexById_.end(), 0LL);
   std::sort(vertexById_.begin(), vertexById_.end(), [&](long long a, long long b) { return vertexId_[a] < vertexId_[b]; });
@@ -70,18 +72,21 @@ void MeshVertexGrid::numberMeshVertices() {
     throw Error("MeshVertexGrid: a vertex of the local cells has no owner's id");
 }
 
-long long MeshVertexGrid::nodeAt(const double* x) const {
+long long MeshVertexGrid::nodeAt(const double* x, int body) const {
   const int dim = dimension();
   const double* xyz = space_->space().nodeCoordinates().data();
-  const auto at = std::lower_bound(nodesByPlace_.begin(), nodesByPlace_.end(), x, [&](long long node, const double* p) {
+  auto at = std::lower_bound(nodesByPlace_.begin(), nodesByPlace_.end(), x, [&](long long node, const double* p) {
     return std::lexicographical_compare(xyz + dim * node, xyz + dim * (node + 1), p, p + dim);
   });
-  if (at == nodesByPlace_.end() || !std::equal(x, x + dim, xyz + dim * *at)) return -1;
-  return *at;
+  for (; at != nodesByPlace_.end() && std::equal(x, x + dim, xyz + dim * *at); ++at)
+    if (body < 0 || bodyOfNode_[*at] == body) return *at;
+  return -1;
 }
 
-long long MeshVertexGrid::vertexAt(const double* x) const {
-  const long long node = nodeAt(x);
+long long MeshVertexGrid::vertexAt(const double* x) const { return vertexOfBodyAt(x, -1); }
+
+long long MeshVertexGrid::vertexOfBodyAt(const double* x, int body) const {
+  const long long node = nodeAt(x, body);
   return node >= 0 && node < static_cast<long long>(vertexId_.size()) ? vertexId_[node] : -1;
 }
 
@@ -95,7 +100,11 @@ void MeshVertexGrid::vertexCoordinates(long long vertex, double* x) const {
 }
 
 void MeshVertexGrid::interpolation(const double* x, long long* vertices, double* weights) const {
-  const long long node = nodeAt(x);
+  interpolationInBody(x, -1, vertices, weights);
+}
+
+void MeshVertexGrid::interpolationInBody(const double* x, int body, long long* vertices, double* weights) const {
+  const long long node = nodeAt(x, body);
   if (node < 0) throw Error("MeshVertexGrid: interpolation at a point that is not a node of this rank's part");
   const int dim = dimension();
   if (refinement_ == Refinement::atNodes) {  // every node is a vertex

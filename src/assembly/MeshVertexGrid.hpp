@@ -7,7 +7,9 @@
 //
 // A rank answers for the points of its own part: vertexAt() and interpolation() for the
 // nodes of its cells (the multigrid asks about its owned nodes), vertexCoordinates() for the
-// vertices among them.
+// vertices among them. Bodies meshed apart (the mesh's connected pieces, numbered as
+// MultigridInput::nodeBodies) may have nodes at one place: vertexOfBodyAt() and
+// interpolationInBody() take the node of the body asked for.
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,13 +34,15 @@ class MeshVertexGrid : public GeometricGrid {
   long long vertexAt(const double* x) const override;
   // x must be a node of this rank's part (else Error): its cell's vertices and weights.
   void interpolation(const double* x, long long* vertices, double* weights) const override;
+  long long vertexOfBodyAt(const double* x, int body) const override;
+  void interpolationInBody(const double* x, int body, long long* vertices, double* weights) const override;
   std::shared_ptr<const GeometricGrid> coarser() const override { return nullptr; }
   bool refinesFineCells() const override { return refinement_ == Refinement::atNodes; }
   std::string description() const override;
 
  private:
-  // The local space node at x, or -1.
-  long long nodeAt(const double* x) const;
+  // The local space node at x (of the body, if several have a node there), or -1.
+  long long nodeAt(const double* x, int body = -1) const;
 
   // vertexId_ for the mesh's own vertices, and numVertices_.
   void numberMeshVertices();
@@ -51,6 +55,7 @@ class MeshVertexGrid : public GeometricGrid {
   std::vector<long long> cellOfNode_;     // per local space node: a local cell that holds it (not refined)
   std::vector<long long> nodesByPlace_;   // local space nodes sorted by coordinates
   std::vector<long long> vertexById_;     // local vertices sorted by global id
+  std::vector<int> bodyOfNode_;           // per local space node: its piece of the mesh
 };
 
 }  // namespace signorini

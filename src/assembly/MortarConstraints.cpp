@@ -9,7 +9,6 @@
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
-#include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
@@ -184,18 +183,10 @@ void checkInitialOverlap(const MultiVector& rowSums, const ContactPair& pair) {
 void checkDifferentBodies(const DistributedSpace& ds, const LocalFacets& slave, const LocalFacets& master,
                           const ContactPair& pair) {
   const MeshPieces pieces = meshPieces(ds);
-  Vector owned(ds.ownedNodeMap()), overlap(ds.overlapNodeMap());
-  {
-    auto data = owned.getDataNonConst();
-    for (std::size_t i = 0; i < pieces.ofOwnedNode.size(); ++i) data[i] = pieces.ofOwnedNode[i];
-  }
-  overlap.doImport(owned, Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>(ds.ownedNodeMap(), ds.overlapNodeMap()),
-                   Tpetra::INSERT);
-  auto piece = overlap.getData();
   std::vector<int> onSide[2] = {std::vector<int>(pieces.count, 0), std::vector<int>(pieces.count, 0)};
   for (int side = 0; side < 2; ++side)
-    for (const MortarFacet& f : (side == 0 ? slave : master).facets)
-      onSide[side][static_cast<int>(piece[ds.overlapNodeMap()->getLocalElement(f.nodes[0])])] = 1;
+    for (const auto& [cell, facet] : (side == 0 ? slave : master).cellFacets)
+      onSide[side][pieces.ofSpaceNode[ds.space().cellNodes(cell)[facet == 0 ? 1 : 0]]] = 1;
   for (int side = 0; side < 2; ++side) {
     std::vector<int> all(pieces.count);
     Teuchos::reduceAll(*ds.comm(), Teuchos::REDUCE_MAX, pieces.count, onSide[side].data(), all.data());

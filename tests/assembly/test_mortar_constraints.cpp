@@ -24,6 +24,7 @@
 #include "signorini/assembly/ContactPressure.hpp"
 #include "signorini/assembly/ContactStatistics.hpp"
 #include "signorini/core/Error.hpp"
+#include "signorini/core/GeometricGrid.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
 #include "signorini/solver/KKTMeasures.hpp"
@@ -164,12 +165,13 @@ TEST(MortarConstraints, AnInitialGapIsWeightedByTheMultiplierFunctions) {
 
 // Uniaxial strain (rollers on the sides): sigma_yy = -M approach / 2 in both blocks,
 // M = E (1 - nu) / ((1 + nu)(1 - 2 nu)); every multiplier is that pressure (with the
-// paper's sign, lambda = -p).
+// paper's sign, lambda = -p), P1 and P2.
 TEST(MortarConstraints, PassTheContactPatchTest) {
   const double approach = 0.01, nu = 0.3, pressure = (1 - nu) / ((1 + nu) * (1 - 2 * nu)) * approach / 2;
+  for (int degree : {1, 2})
   for (double perturbation : {0.0, 0.03}) {
     const AssembledProblem p =
-        build(pressedBlocks(writeBlocks(*Tpetra::getDefaultComm(), 0.0, perturbation), approach));
+        build(pressedBlocks(writeBlocks(*Tpetra::getDefaultComm(), 0.0, perturbation), approach, degree));
     Teuchos::ParameterList solver;  // the KKT measures well below the 1e-8 asked of the pressure
     solver.set("kkt: tolerance", 1e-12);
     const SolveResult r = InteriorPointSolver(solver).solve(p.qp, p.multigrid);
@@ -177,7 +179,33 @@ TEST(MortarConstraints, PassTheContactPatchTest) {
     auto lambda = r.lambda->getData();
     double local = 0;
     for (double value : lambda) local = std::max(local, std::abs(-value / pressure - 1.0));  // lambda <= 0
-    EXPECT_LT(maxOverRanks(*p.qp.A->getComm(), local), 1e-8) << perturbation;
+    EXPECT_LT(maxOverRanks(*p.qp.A->getComm(), local), 1e-8) << perturbation << " P" << degree;
+  }
+}
+
+// Of degree 2 the geometric multigrid goes to the P1 grid of the mesh's vertices first, found
+// by their coordinates: where the two bodies have a vertex at one place (the interface's ends,
+// (0, 1) and (1, 1)), each body's node finds its own body's vertex.
+TEST(MortarConstraints, GridsTellTheBodiesApartWhereTheirNodesMeet) {
+  const AssembledProblem p = build(pressedBlocks(writeBlocks(*Tpetra::getDefaultComm(), 0.0, 0.0), 0.0, 2));
+  const GeometricGrid& grid = *p.multigrid.grid;
+  ASSERT_EQ(p.multigrid.nodeBodies.size(), p.multigrid.coordinates->getLocalLength());
+  auto x = p.multigrid.coordinates->getData(0), y = p.multigrid.coordinates->getData(1);
+  // Per corner and body, the vertex found + 1 (0: no owned node there), the largest over ranks.
+  std::vector<long long> found(4, 0), all(4);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (int corner = 0; corner < 2; ++corner)
+      if (x[i] == corner && y[i] == 1.0) {
+        const double at[2] = {x[i], y[i]};
+        const long long v = grid.vertexOfBodyAt(at, p.multigrid.nodeBodies[i]);
+        ASSERT_GE(v, 0);
+        found[2 * corner + p.multigrid.nodeBodies[i]] = v + 1;
+      }
+  Teuchos::reduceAll(*p.qp.A->getComm(), Teuchos::REDUCE_MAX, 4, found.data(), all.data());
+  for (int corner = 0; corner < 2; ++corner) {
+    EXPECT_GT(all[2 * corner], 0);
+    EXPECT_GT(all[2 * corner + 1], 0);
+    EXPECT_NE(all[2 * corner], all[2 * corner + 1]) << corner;
   }
 }
 
@@ -186,9 +214,10 @@ TEST(MortarConstraints, PassTheContactPatchTest) {
 // handles on every rank count. Every multiplier is the applied pressure.
 TEST(MortarConstraints, PassTheContactPatchTestUnderAPressure) {
   const double pressure = 0.01;
+  for (int degree : {1, 2})
   for (double perturbation : {0.0, 0.03}) {
     Teuchos::ParameterList problem =
-        pressedBlocks(writeBlocks(*Tpetra::getDefaultComm(), 0.0, perturbation), 0.0);
+        pressedBlocks(writeBlocks(*Tpetra::getDefaultComm(), 0.0, perturbation), 0.0, degree);
     problem.sublist("Dirichlet").remove("top");
     problem.sublist("Traction").sublist("top").set("traction: y", "-0.01");
     const AssembledProblem p = build(problem);
@@ -200,7 +229,7 @@ TEST(MortarConstraints, PassTheContactPatchTestUnderAPressure) {
     auto lambda = r.lambda->getData();
     double local = 0;
     for (double value : lambda) local = std::max(local, std::abs(-value / pressure - 1.0));
-    EXPECT_LT(maxOverRanks(*p.qp.A->getComm(), local), 1e-8) << perturbation;
+    EXPECT_LT(maxOverRanks(*p.qp.A->getComm(), local), 1e-8) << perturbation << " P" << degree;
   }
 }
 
@@ -263,10 +292,11 @@ TEST(MortarConstraints, RowsMoveWithTheBodiesIn3D) {
 
 TEST(MortarConstraints, PassTheContactPatchTestIn3D) {
   const double approach = 0.01, nu = 0.3, modulus = (1 - nu) / ((1 + nu) * (1 - 2 * nu));
+  for (int degree : {1, 2})
   for (const auto& [h, H] : {std::pair{0.3, 0.22}, std::pair{0.2, 0.33}})
     for (bool underAPressure : {false, true}) {
       const std::string file = writeCubes(*Tpetra::getDefaultComm(), 0.0, h, H);
-      Teuchos::ParameterList problem = pressedBlocks(file, underAPressure ? 0.0 : approach, 1, 3);
+      Teuchos::ParameterList problem = pressedBlocks(file, underAPressure ? 0.0 : approach, degree, 3);
       const double pressure = underAPressure ? 0.01 : modulus * approach / 2;
       if (underAPressure) {
         problem.sublist("Dirichlet").remove("top");
@@ -280,7 +310,7 @@ TEST(MortarConstraints, PassTheContactPatchTestIn3D) {
       auto lambda = r.lambda->getData();
       double local = 0;
       for (double value : lambda) local = std::max(local, std::abs(-value / pressure - 1.0));
-      EXPECT_LT(maxOverRanks(*p.qp.A->getComm(), local), 1e-8) << h << " " << underAPressure;
+      EXPECT_LT(maxOverRanks(*p.qp.A->getComm(), local), 1e-8) << h << " " << underAPressure << " P" << degree;
     }
 }
 
@@ -320,8 +350,9 @@ TEST(MortarConstraints, BadPairsAreInputErrors) {
   Teuchos::ParameterList nodal = pressedBlocks(file, 0.0);
   nodal.sublist("Contact").set("formulation", "nodal");
   EXPECT_THROW(build(nodal), InputError);
-  Teuchos::ParameterList p2 = pressedBlocks(file, 0.0, 2);
-  EXPECT_THROW(build(p2), InputError);
+  Teuchos::ParameterList refined = pressedBlocks(file, 0.0);
+  refined.set("mesh: refinements", 1);
+  EXPECT_THROW(build(refined), InputError);
   Teuchos::ParameterList away = pressedBlocks(file, 0.0);  // the upper top faces away from the slave side
   away.sublist("Contact").set("master boundary", "top");
   EXPECT_THROW(build(away), InputError);

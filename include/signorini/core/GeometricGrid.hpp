@@ -23,6 +23,17 @@ class GeometricGrid {
   /// The dimension() + 1 vertices of a simplex that holds x (a point outside the grid is first
   /// moved onto it) and their P1 basis functions at x: weights >= 0 that sum to 1.
   virtual void interpolation(const double* x, long long* vertices, double* weights) const = 0;
+  /// The same for a point of body `body` (MultigridInput::nodeBodies; -1: any) where bodies
+  /// meshed apart have nodes at one place: the vertex, simplex and weights of that body. A
+  /// grid of one body (or whose bodies share no place) need not override them.
+  virtual long long vertexOfBodyAt(const double* x, int body) const {
+    (void)body;
+    return vertexAt(x);
+  }
+  virtual void interpolationInBody(const double* x, int body, long long* vertices, double* weights) const {
+    (void)body;
+    interpolation(x, vertices, weights);
+  }
   /// The next coarser grid, whose vertices are vertices of this one, or null.
   virtual std::shared_ptr<const GeometricGrid> coarser() const = 0;
   /// Whether the grid splits the cells of a P_k fine space (k > 1) at its nodes (a

@@ -219,7 +219,8 @@ void NewtonSystemSolver::makeGeometric(const ContactQP& qp, const MultigridInput
   auto geometric = std::make_unique<GeometricMultigridPreconditioner>(
       *multigrid.grid, qp.Q->getDomainMap(), stiffness.prescribedDofs(), *multigrid.coordinates, multigrid.blockSize,
       coarsestSize, prec.get<int>("geometric: direct solve size"),
-      prec.sublist("Ifpack2"), prec.sublist("MueLu"), prec.get<int>("geometric: eigenvalue update steps"));
+      prec.sublist("Ifpack2"), prec.sublist("MueLu"), prec.get<int>("geometric: eigenvalue update steps"),
+      multigrid.nodeBodies);
   if (strategy_ == PreconditionerType::AmgOfH && geometric->geometricLevels() > 0 &&
       (assembled || !multigrid.gridStiffness.is_null())) {
     geometric_ = geometric.get();

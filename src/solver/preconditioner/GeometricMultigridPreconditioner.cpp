@@ -32,6 +32,7 @@ struct GeometricMultigridPreconditioner::Level {
   RCP<const Map> dofMap;
   std::vector<double> coordinates;  // dim per owned node, in DOF map order
   std::vector<char> dirichlet;      // per owned DOF
+  std::vector<int> bodies;          // per owned node: its body (MultigridInput::nodeBodies); empty: one
   RCP<CrsMatrix> A;                 // null on a fine level given as an operator
   RCP<const Operator> op;           // A, or the fine operator
   RCP<Operator> smoother;           // Ifpack2's Chebyshev of A, or a ChebyshevSmoother of op
@@ -42,18 +43,21 @@ struct GeometricMultigridPreconditioner::Level {
 namespace {
 
 // The coarse level's DOF map: the coarse vertices this rank owns, those at one of its fine
-// nodes (atVertex: each fine node's coarse vertex, or -1), with their coordinates and
-// Dirichlet flags. Collective.
+// nodes (atVertex: each fine node's coarse vertex, or -1), with their coordinates, Dirichlet
+// flags and bodies (those of the fine nodes at them; none if the fine nodes have none).
+// Collective.
 RCP<const Map> coarseLevelMap(const GeometricGrid& coarse, int blockSize, const RCP<const Comm>& comm,
                               const std::vector<double>& fineCoordinates, const std::vector<char>& fineDirichlet,
-                              std::vector<long long>& atVertex, std::vector<double>& coarseCoordinates,
-                              std::vector<char>& coarseDirichlet) {
+                              const std::vector<int>& fineBodies, std::vector<long long>& atVertex,
+                              std::vector<double>& coarseCoordinates, std::vector<char>& coarseDirichlet,
+                              std::vector<int>& coarseBodies) {
   const int dim = coarse.dimension();
   const std::size_t numFine = fineCoordinates.size() / dim;
   std::vector<std::pair<long long, std::size_t>> owned;  // (coarse vertex, fine node)
   atVertex.assign(numFine, -1);
   for (std::size_t i = 0; i < numFine; ++i) {
-    atVertex[i] = coarse.vertexAt(&fineCoordinates[dim * i]);
+    const double* x = &fineCoordinates[dim * i];
+    atVertex[i] = coarse.vertexOfBodyAt(x, fineBodies.empty() ? -1 : fineBodies[i]);
     if (atVertex[i] >= 0) owned.emplace_back(atVertex[i], i);
   }
   std::sort(owned.begin(), owned.end());
@@ -61,7 +65,9 @@ RCP<const Map> coarseLevelMap(const GeometricGrid& coarse, int blockSize, const 
   dofs.reserve(blockSize * owned.size());
   coarseCoordinates.assign(dim * owned.size(), 0.0);
   coarseDirichlet.assign(blockSize * owned.size(), 0);
+  coarseBodies.clear();
   for (std::size_t k = 0; k < owned.size(); ++k) {
+    if (!fineBodies.empty()) coarseBodies.push_back(fineBodies[owned[k].second]);
     coarse.vertexCoordinates(owned[k].first, &coarseCoordinates[dim * k]);
     for (int c = 0; c < blockSize; ++c) {
       dofs.push_back(blockSize * owned[k].first + c);
@@ -77,25 +83,27 @@ RCP<const Map> coarseLevelMap(const GeometricGrid& coarse, int blockSize, const 
 }
 
 // P1 interpolation from the grid `coarse` to the owned fine nodes; fills the coarse level's
-// DOF map (the coarse vertices at this rank's fine nodes), coordinates and Dirichlet flags.
-// Collective.
+// DOF map (the coarse vertices at this rank's fine nodes), coordinates, Dirichlet flags and
+// bodies. Collective.
 RCP<CrsMatrix> interpolation(const GeometricGrid& coarse, int blockSize, const RCP<const Map>& fineMap,
-                                 const std::vector<double>& fineCoordinates, const std::vector<char>& fineDirichlet,
-                                 RCP<const Map>& coarseMap, std::vector<double>& coarseCoordinates,
-                                 std::vector<char>& coarseDirichlet) {
+                             const std::vector<double>& fineCoordinates, const std::vector<char>& fineDirichlet,
+                             const std::vector<int>& fineBodies, RCP<const Map>& coarseMap,
+                             std::vector<double>& coarseCoordinates, std::vector<char>& coarseDirichlet,
+                             std::vector<int>& coarseBodies) {
   const int dim = coarse.dimension();
   const std::size_t numFine = fineCoordinates.size() / dim;
   const auto comm = fineMap->getComm();
   std::vector<long long> atVertex;
-  coarseMap = coarseLevelMap(coarse, blockSize, comm, fineCoordinates, fineDirichlet, atVertex, coarseCoordinates,
-                             coarseDirichlet);
+  coarseMap = coarseLevelMap(coarse, blockSize, comm, fineCoordinates, fineDirichlet, fineBodies, atVertex,
+                             coarseCoordinates, coarseDirichlet, coarseBodies);
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
 
   // Every fine node's simplex and weights; the Dirichlet flags of the coarse DOFs they use.
   std::vector<long long> vertices(numFine * (dim + 1));
   std::vector<double> weights(numFine * (dim + 1));
   for (std::size_t i = 0; i < numFine; ++i)
-    coarse.interpolation(&fineCoordinates[dim * i], &vertices[(dim + 1) * i], &weights[(dim + 1) * i]);
+    coarse.interpolationInBody(&fineCoordinates[dim * i], fineBodies.empty() ? -1 : fineBodies[i],
+                               &vertices[(dim + 1) * i], &weights[(dim + 1) * i]);
   std::vector<long long> usedVertices(vertices);
   for (long long v : atVertex)
     if (v >= 0) usedVertices.push_back(v);
@@ -275,7 +283,8 @@ Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParamete
 GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
     const GeometricGrid& grid, const RCP<const Map>& dofMap, const std::vector<char>& prescribed,
     const MultiVector& coordinates, int blockSize, long long coarsestSize, long long directSolveSize,
-    const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps)
+    const Teuchos::ParameterList& smoother, const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps,
+    const std::vector<int>& nodeBodies)
     : smoother_(defaultSmootherParameters()), eigenvalueUpdateSteps_(eigenvalueUpdateSteps) {
   smoother_.setParameters(smoother);
   checkSmootherTypes(smoother_);
@@ -286,7 +295,8 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
   const int dim = grid.dimension();
   if (static_cast<int>(coordinates.getNumVectors()) != dim || blockSize < 1 ||
       dofMap->getNodeNumElements() != blockSize * coordinates.getLocalLength() ||
-      prescribed.size() != dofMap->getNodeNumElements())
+      prescribed.size() != dofMap->getNodeNumElements() ||
+      (!nodeBodies.empty() && nodeBodies.size() != coordinates.getLocalLength()))
     throw Error("GeometricMultigridPreconditioner: coordinates, block size, DOF map and prescribed DOFs do not match");
 
   auto fine = std::make_shared<Level>();
@@ -297,6 +307,7 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
     for (std::size_t i = 0; i < coordinates.getLocalLength(); ++i) fine->coordinates[dim * i + c] = x[i];
   }
   fine->dirichlet = prescribed;
+  fine->bodies = nodeBodies;
   levels_.push_back(fine);
 
   // A P_k space (more nodes than the grid's vertices, or a grid that refines its cells) goes
@@ -314,8 +325,8 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
   for (; goesOn(); owner = next->coarser(), next = owner.get()) {
     auto coarse = std::make_shared<Level>();
     const Level& above = *levels_.back();
-    levels_.back()->P = interpolation(*next, blockSize, above.dofMap, above.coordinates, above.dirichlet,
-                                          coarse->dofMap, coarse->coordinates, coarse->dirichlet);
+    levels_.back()->P = interpolation(*next, blockSize, above.dofMap, above.coordinates, above.dirichlet, above.bodies,
+                                      coarse->dofMap, coarse->coordinates, coarse->dirichlet, coarse->bodies);
     Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node> transposer(levels_.back()->P);
     levels_.back()->R = transposer.createTranspose();
     levels_.push_back(coarse);

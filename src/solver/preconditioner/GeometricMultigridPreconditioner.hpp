@@ -47,12 +47,15 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // Galerkin update, started from the previous estimate's Ritz vector and the changed rows
   // (0: a fresh estimate of "chebyshev: eigenvalue max iterations" steps at every build; the
   // default, 3, is Preconditioner/geometric: eigenvalue update steps in NewtonSystemSolver).
+  // `nodeBodies`: the body of each owned fine node where bodies meshed apart have nodes at one
+  // place (MultigridInput::nodeBodies; empty: one body), for the grids' lookups.
   // Throws InputError when the nodes do not contain the coarse grid's vertices.
   GeometricMultigridPreconditioner(const GeometricGrid& grid, const RCP<const Map>& dofMap,
                                    const std::vector<char>& prescribed, const MultiVector& coordinates,
                                    int blockSize, long long coarsestSize, long long directSolveSize,
                                    const Teuchos::ParameterList& smoother,
-                                   const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps);
+                                   const Teuchos::ParameterList& muelu, int eigenvalueUpdateSteps,
+                                   const std::vector<int>& nodeBodies = {});
   ~GeometricMultigridPreconditioner() override;
 
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
