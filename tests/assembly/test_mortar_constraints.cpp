@@ -193,7 +193,7 @@ TEST(MortarConstraints, GridsTellTheBodiesApartWhereTheirNodesMeet) {
   auto x = p.multigrid.coordinates->getData(0), y = p.multigrid.coordinates->getData(1);
   // Per corner and body, the vertex found + 1 (0: no owned node there), the largest over ranks.
   std::vector<long long> found(4, 0), all(4);
-  for (std::size_t i = 0; i < x.size(); ++i)
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(x.size()); ++i)
     for (int corner = 0; corner < 2; ++corner)
       if (x[i] == corner && y[i] == 1.0) {
         const double at[2] = {x[i], y[i]};
