@@ -19,7 +19,7 @@ std::vector<int> partitionCells(const SimplexMesh& mesh, int numParts) {
     throw Error("mesh partition: mesh too large for METIS' " + std::to_string(8 * sizeof(idx_t)) + "-bit indices");
 
   idx_t ne = static_cast<idx_t>(numCells), nn = static_cast<idx_t>(mesh.numVertices());
-  idx_t ncommon = mesh.dim, nparts = numParts, objval = 0;
+  idx_t nparts = numParts, objval = 0;
   std::vector<idx_t> eptr(numCells + 1), eind(mesh.cells.begin(), mesh.cells.end());
   for (long long cell = 0; cell <= numCells; ++cell) eptr[cell] = static_cast<idx_t>((mesh.dim + 1) * cell);
   std::vector<idx_t> cellPart(numCells), vertexPart(mesh.numVertices());
@@ -27,9 +27,11 @@ std::vector<int> partitionCells(const SimplexMesh& mesh, int numParts) {
   METIS_SetDefaultOptions(options);
   options[METIS_OPTION_NUMBERING] = 0;
   options[METIS_OPTION_SEED] = 1;
-  const int status = METIS_PartMeshDual(&ne, &nn, eptr.data(), eind.data(), nullptr, nullptr, &ncommon, &nparts,
-                                        nullptr, options, &objval, cellPart.data(), vertexPart.data());
-  if (status != METIS_OK) throw Error("mesh partition: METIS_PartMeshDual failed with status " + std::to_string(status));
+  // The nodal graph has a sixth of the dual graph's vertices in 3D: rank 0, which partitions
+  // alone, builds and cuts it several times faster, for a somewhat larger interface.
+  const int status = METIS_PartMeshNodal(&ne, &nn, eptr.data(), eind.data(), nullptr, nullptr, &nparts, nullptr,
+                                         options, &objval, cellPart.data(), vertexPart.data());
+  if (status != METIS_OK) throw Error("mesh partition: METIS_PartMeshNodal failed with status " + std::to_string(status));
   return std::vector<int>(cellPart.begin(), cellPart.end());
 }
 

@@ -7,8 +7,9 @@
 
 namespace signorini {
 
-// Part of each cell, by METIS_PartMeshDual with cells adjacent when they share a facet
-// (ncommon = dim). Deterministic (fixed seed); numParts == 1 gives all zeros without METIS.
+// Part of each cell, by METIS_PartMeshNodal: METIS partitions the graph of the mesh's
+// vertices and gives each cell a part of its vertices. Deterministic (fixed seed); numParts
+// == 1 gives all zeros without METIS.
 // Throws InputError for numParts < 1, Error if METIS fails or the mesh is too large for its
 // index type.
 std::vector<int> partitionCells(const SimplexMesh& mesh, int numParts);
