@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "assembly/MeshPieces.hpp"
 #include "assembly/RefinedMeshPart.hpp"
 #include "signorini/core/Error.hpp"
 
@@ -10,6 +11,7 @@ namespace signorini {
 
 struct RefinedMeshGrid::Point {
   double x[3] = {0, 0, 0};
+  int body = -1;  // of bodies meshed apart (MeshPieces), -1 for one body
   long long vertex = -1;
   long long vertices[4] = {0, 0, 0, 0};
   double weights[4] = {0, 0, 0, 0};
@@ -29,14 +31,24 @@ std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
   // Finest first: each level is refined once, for its own grid and the points of the next coarser.
   const int levels = refinement.levels();
   std::shared_ptr<RefinedMeshGrid> top(new RefinedMeshGrid(*lattice, levels, levels, finest));
-  top->answerForSpace(refinement, space);
+  // Bodies meshed apart may have points at one place: each point carries its body, that of
+  // its coarse cell's nodes.
+  const MeshPieces apart = meshPieces(space);
+  std::vector<int> coarseCellBody;
+  if (apart.count > 1)
+    detail::forEachCellNode(space.space(), refinement, [&](long long node, long long, long long coarse,
+                                                           const LatticeSimplex&, const std::array<int, 4>&) {
+      if (coarse >= static_cast<long long>(coarseCellBody.size())) coarseCellBody.resize(coarse + 1, -1);
+      coarseCellBody[coarse] = apart.ofSpaceNode[node];
+    });
+  top->answerForSpace(refinement, space, apart.count > 1 ? apart.ofSpaceNode : std::vector<int>());
   RefinedMeshGrid* above = top.get();
   const detail::RefinedLevel* finer = &finest;
   detail::RefinedLevel previous;
   for (int level = levels - 1; level >= 0; --level) {
     detail::RefinedLevel own = detail::refineLocally(*lattice, refinement, level, false);
     std::shared_ptr<RefinedMeshGrid> grid(new RefinedMeshGrid(*lattice, level, levels, own));
-    grid->answerForLevel(*lattice, refinement, *finer);
+    grid->answerForLevel(*lattice, refinement, *finer, coarseCellBody);
     above->coarser_ = grid;
     above = grid.get();
     previous = std::move(own);
@@ -51,13 +63,14 @@ RefinedMeshGrid::RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, int l
       vertexIds_(own.vertexIds), coordinates_(own.mesh.vertices) {}
 
 void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                                     const detail::RefinedLevel& finer) {
+                                     const detail::RefinedLevel& finer, const std::vector<int>& coarseCellBody) {
   const long long n = 1LL << level_;
   points_.resize(finer.vertexIds.size());
   for (std::size_t i = 0; i < points_.size(); ++i) {
     Point& point = points_[i];
     std::copy_n(&finer.mesh.vertices[dim_ * i], dim_, point.x);
     const long long cell = finer.vertexCells[i];
+    if (!coarseCellBody.empty()) point.body = coarseCellBody[cell];
     const auto& [a, b] = refinement.parents(level_ + 1, finer.vertexPoints[i]);
     point.vertices[0] = lattice.pointId(cell, a, n);
     if (a == b) {
@@ -72,7 +85,8 @@ void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, c
   sortPoints();
 }
 
-void RefinedMeshGrid::answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space) {
+void RefinedMeshGrid::answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space,
+                                     const std::vector<int>& nodeBody) {
   // The space's mesh is the finest level's, its vertices in this grid's order.
   const LagrangeSpace& pk = space.space();
   const int k = pk.degree();
@@ -84,6 +98,7 @@ void RefinedMeshGrid::answerForSpace(const SimplexRefinement& refinement, const 
     seen[node] = 1;
     Point& point = points_[node];
     std::copy_n(&pk.nodeCoordinates()[dim_ * node], dim_, point.x);
+    if (!nodeBody.empty()) point.body = nodeBody[node];
     for (int v = 0; v <= dim_; ++v) {
       point.vertices[v] = vertexIds_[space.mesh().cells[(dim_ + 1) * cell + v]];
       point.weights[v] = static_cast<double>(index[v]) / k;
@@ -98,12 +113,13 @@ void RefinedMeshGrid::sortPoints() {
             [&](const Point& a, const Point& b) { return lessByCoordinates(a.x, b.x, dim_); });
 }
 
-const RefinedMeshGrid::Point* RefinedMeshGrid::findPoint(const double* x) const {
-  const auto it = std::lower_bound(points_.begin(), points_.end(), x, [&](const Point& p, const double* y) {
+const RefinedMeshGrid::Point* RefinedMeshGrid::findPoint(const double* x, int body) const {
+  auto it = std::lower_bound(points_.begin(), points_.end(), x, [&](const Point& p, const double* y) {
     return lessByCoordinates(p.x, y, dim_);
   });
-  if (it == points_.end() || lessByCoordinates(x, it->x, dim_)) return nullptr;
-  return &*it;
+  for (; it != points_.end() && !lessByCoordinates(x, it->x, dim_); ++it)
+    if (body < 0 || it->body == body) return &*it;
+  return nullptr;
 }
 
 void RefinedMeshGrid::vertexCoordinates(long long vertex, double* x) const {
@@ -113,13 +129,19 @@ void RefinedMeshGrid::vertexCoordinates(long long vertex, double* x) const {
   std::copy_n(&coordinates_[dim_ * (it - vertexIds_.begin())], dim_, x);
 }
 
-long long RefinedMeshGrid::vertexAt(const double* x) const {
-  const Point* point = findPoint(x);
+long long RefinedMeshGrid::vertexAt(const double* x) const { return vertexOfBodyAt(x, -1); }
+
+long long RefinedMeshGrid::vertexOfBodyAt(const double* x, int body) const {
+  const Point* point = findPoint(x, body);
   return point ? point->vertex : -1;
 }
 
 void RefinedMeshGrid::interpolation(const double* x, long long* vertices, double* weights) const {
-  const Point* point = findPoint(x);
+  interpolationInBody(x, -1, vertices, weights);
+}
+
+void RefinedMeshGrid::interpolationInBody(const double* x, int body, long long* vertices, double* weights) const {
+  const Point* point = findPoint(x, body);
   if (!point) throw Error("refined mesh grid: a point that is no node of this rank's part of the finer level");
   std::copy_n(point->vertices, dim_ + 1, vertices);
   std::copy_n(point->weights, dim_ + 1, weights);

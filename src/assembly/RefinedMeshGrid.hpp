@@ -37,6 +37,9 @@ class RefinedMeshGrid : public GeometricGrid {
   long long vertexAt(const double* x) const override;
   // x must be a point this rank answers for (else Error).
   void interpolation(const double* x, long long* vertices, double* weights) const override;
+  // Where bodies meshed apart have points at one place, the point of `body` (MeshPieces).
+  long long vertexOfBodyAt(const double* x, int body) const override;
+  void interpolationInBody(const double* x, int body, long long* vertices, double* weights) const override;
   std::shared_ptr<const GeometricGrid> coarser() const override { return coarser_; }
   std::string description() const override;
 
@@ -45,12 +48,15 @@ class RefinedMeshGrid : public GeometricGrid {
 
   // Level `level` of `levels`, whose vertices `own` holds.
   RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, int level, int levels, const detail::RefinedLevel& own);
-  // The points to answer for: the vertices of the next finer level, or the P_k space's nodes.
+  // The points to answer for: the vertices of the next finer level, or the P_k space's nodes,
+  // with their bodies (of each local coarse cell, or of each space node; empty: one body).
   void answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                      const detail::RefinedLevel& finer);
-  void answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space);
+                      const detail::RefinedLevel& finer, const std::vector<int>& coarseCellBody);
+  void answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space,
+                      const std::vector<int>& nodeBody);
   void sortPoints();
-  const Point* findPoint(const double* x) const;
+  // The point at x (of `body`, -1: any), or null.
+  const Point* findPoint(const double* x, int body) const;
 
   int dim_ = 0, level_ = 0, levels_ = 0;
   long long numVertices_ = 0;

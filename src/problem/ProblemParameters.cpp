@@ -75,7 +75,7 @@ void addContactParameters(ParameterList& contact) {
   contact.set("master boundary", "",
               "The surface of another body that the contact boundary (then the slave side) touches: mortar "
               "constraints between the two bodies, normals and gaps from the slave side (doc/algorithms.md; "
-              "2D and 3D, P1 to P3, without mesh: refinements so far). Make the slave the side that lies within the "
+              "2D and 3D, P1 to P3, with mesh: refinements too). Make the slave the side that lies within the "
               "master's reach, and where both do, the finer and the softer one (a slave much stiffer than its "
               "master shows an oscillating pressure); obstacle: direction then points from the master into the "
               "slave body (the sign of the normal force reported). Empty: the rigid obstacle of the gap and "
@@ -244,11 +244,6 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
   }
   const std::string formulation = contact.get<std::string>("formulation");
   const std::string master = contact.get<std::string>("master boundary");
-  // The grids of refined meshes find their points by coordinates alone, which coincident
-  // nodes of two bodies share.
-  if (!master.empty() && def.meshRefinements > 0)
-    throw InputError("Problem/Contact/master boundary: contact between two bodies is available on meshes read as "
-                     "they are so far (this problem: mesh: refinements " + std::to_string(def.meshRefinements) + ")");
   const bool dual = formulation == "dual mortar" || (formulation == "auto" && (def.degree > 1 || !master.empty()));
   def.contact = ContactPair{boundary, master, unit, Expression(text, "Problem/Contact/gap"),
                             formulation == "weighted gap" ? ContactFormulation::weightedGap
