@@ -156,12 +156,11 @@ RCP<const MultiVector> onOwners(const std::vector<GlobalOrdinal>& rowIds,
 // -tolerance times the size of the slave facets at node j.
 void checkInitialOverlap(const MultiVector& rowSums, const ContactPair& pair) {
   std::array<double, 5> worst{{-1e300, 0, 0, 0, 0}};  // overlap / size, overlap, x
+  std::array<Teuchos::ArrayRCP<const double>, kRowSums> sums;
+  for (int c = 0; c < kRowSums; ++c) sums[c] = rowSums.getData(c);
   for (std::size_t i = 0; i < rowSums.getLocalLength(); ++i) {
-    const double weight = rowSums.getData(1)[i], overlap = -rowSums.getData(0)[i] / weight;
-    const double relative = overlap / (rowSums.getData(2)[i] / weight);
-    if (relative > worst[0])
-      worst = {relative, overlap, rowSums.getData(3)[i] / weight, rowSums.getData(4)[i] / weight,
-               rowSums.getData(5)[i] / weight};
+    const double weight = sums[1][i], overlap = -sums[0][i] / weight, relative = overlap / (sums[2][i] / weight);
+    if (relative > worst[0]) worst = {relative, overlap, sums[3][i] / weight, sums[4][i] / weight, sums[5][i] / weight};
   }
   const Comm& comm = *rowSums.getMap()->getComm();
   std::vector<double> all(5 * comm.getSize());

@@ -70,7 +70,7 @@ void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, c
     Point& point = points_[i];
     std::copy_n(&finer.mesh.vertices[dim_ * i], dim_, point.x);
     const long long cell = finer.vertexCells[i];
-    if (!coarseCellBody.empty()) point.body = coarseCellBody[cell];
+    if (cell < static_cast<long long>(coarseCellBody.size())) point.body = coarseCellBody[cell];
     const auto& [a, b] = refinement.parents(level_ + 1, finer.vertexPoints[i]);
     point.vertices[0] = lattice.pointId(cell, a, n);
     if (a == b) {
