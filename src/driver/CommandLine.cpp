@@ -26,12 +26,24 @@ std::string CommandLine::usage() {
 
 CommandLine CommandLine::parse(int argc, const char* const* argv) {
   CommandLine cl;
+  std::string inlineValue;  // of "--flag=value"
+  bool hasInlineValue = false;
   auto value = [&](int& i, const std::string& flag) -> std::string {
+    if (hasInlineValue) return inlineValue;
     if (i + 1 >= argc) throw InputError(flag + " needs a value\n" + usage());
     return argv[++i];
   };
   for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
+    std::string arg = argv[i];
+    // The valued options also take their value after "=", as in --output=DIR.
+    const std::size_t equals = arg.find('=');
+    hasInlineValue = arg.rfind("--", 0) == 0 && equals != std::string::npos && arg != "--defaults=all";
+    if (hasInlineValue) {
+      inlineValue = arg.substr(equals + 1);
+      arg.resize(equals);
+      if (arg == "--help" || arg == "--defaults" || arg == "--version")
+        throw InputError(arg + " takes no value\n" + usage());
+    }
     if (arg == "--help" || arg == "-h") {
       cl.help = true;
     } else if (arg == "--defaults" || arg == "--defaults=all") {

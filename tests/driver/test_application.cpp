@@ -244,6 +244,14 @@ TEST(Application, CommandLineErrorsShowTheUsage) {
   EXPECT_EQ(cl.output, "o");
   EXPECT_EQ(cl.exportQp, "q");
   ASSERT_EQ(cl.overrides.size(), 1u);
+  const char* joined[] = {"signorini", "a.xml", "--output=o", "--set=Solver/method=primal", "--defaults=all"};
+  const CommandLine withEquals = CommandLine::parse(5, joined);
+  EXPECT_EQ(withEquals.output, "o");
+  ASSERT_EQ(withEquals.overrides.size(), 1u);
+  EXPECT_EQ(withEquals.overrides[0], "Solver/method=primal");
+  EXPECT_TRUE(withEquals.allDefaults);
+  const char* flagWithValue[] = {"signorini", "a.xml", "--version=2"};
+  EXPECT_NE(inputErrorOf([&] { CommandLine::parse(3, flagWithValue); }).find("takes no value"), std::string::npos);
 }
 
 TEST(Application, MissingInputFileFailsOnEveryRank) {
