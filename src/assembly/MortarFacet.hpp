@@ -26,7 +26,6 @@ struct MortarFacet {
   int lattice[kMaxNodes][3] = {};  // degree times the node's barycentric coordinates
   double normal[3] = {};
 
-  int numVertices() const { return dim; }
   // The facet's length (2D) or area (3D).
   double measure() const;
   // The barycentric coordinates of p's projection onto the facet's line or plane.
