@@ -12,6 +12,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include "assembly/GlobalPartition.hpp"
+#include "assembly/SplitMeshPart.hpp"
 #include "core/RootTask.hpp"
 #include "fe/GmshMesh.hpp"
 #include "signorini/core/Error.hpp"
@@ -259,8 +260,17 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
 #if defined(__GLIBC__)
   malloc_trim(0);
 #endif
-  std::copy(part_.entityCounts.begin(), part_.entityCounts.end(), counts_);
+  indexNearEntities();
+}
 
+CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, GmshMeshPart&& part) : comm_(comm) {
+  part.mesh = withShortestDiagonals(part.mesh);
+  part_ = latticePartOfSplitMesh(comm_, std::move(part));
+  indexNearEntities();
+}
+
+void CoarseMeshLattice::indexNearEntities() {
+  std::copy(part_.entityCounts.begin(), part_.entityCounts.end(), counts_);
   const int d = dim();
   for (std::size_t f = 0; f < part_.nearFacetTags.size(); ++f) {
     const EntityKey facet = sortedKey(&part_.nearFacets[d * f], d);

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "assembly/MeshPart.hpp"
+#include "fe/GmshMesh.hpp"
 #include "fe/SimplexRefinement.hpp"
 #include "signorini/core/TpetraTypes.hpp"
 
@@ -30,6 +31,9 @@ class CoarseMeshLattice {
   // each rank its cells with the numbers and owners of their entities. Throws on every rank
   // InputError for a missing or inconsistent mesh, Error if the partition fails.
   CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> mesh);
+  // Collective. Every rank passes its own part of a mesh read in parts (rank r part r); the
+  // ranks number the entities together (latticePartOfSplitMesh), and none holds the mesh.
+  CoarseMeshLattice(const RCP<const Comm>& comm, GmshMeshPart&& part);
 
   const RCP<const Comm>& comm() const { return comm_; }
   int dim() const { return part_.mesh.dim; }
@@ -38,7 +42,7 @@ class CoarseMeshLattice {
   long long globalCell(long long cell) const { return part_.globalCells[cell]; }
   long long numGlobalCells() const { return counts_[3]; }
   // What the serial phase cost rank 0: heap bytes of the coarse mesh and its partition, the
-  // same on every rank.
+  // same on every rank (0 for a mesh read in parts).
   std::size_t serialPhaseBytes() const { return serialPhaseBytes_; }
 
   // Global number of lattice points of resolution n.
@@ -65,6 +69,8 @@ class CoarseMeshLattice {
   void placeOnGeometry(const std::string& path, const SimplexRefinement& refinement);
 
  private:
+  // Indexes part_'s boundary and geometry entities (both constructors end here).
+  void indexNearEntities();
   // The carrier's local vertices (cell vertex positions), sorted by global vertex id.
   int carrier(long long cell, const LatticePoint& a, int* positions) const;
   // The geometry entity (dimension, tag) a point inside a coarse boundary facet or edge goes

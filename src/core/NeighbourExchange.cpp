@@ -7,17 +7,24 @@
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
+namespace {
 
-std::vector<double> exchangeWithRanks(const Comm& comm, const std::vector<std::vector<double>>& toRank) {
+// The all-to-all of blocks of T (MPI type `type`); `receiveStart` gets the start of each
+// sender's block (size + 1 entries).
+template <class T>
+std::vector<T> exchangeBlocks(const Comm& comm, const std::vector<std::vector<T>>& toRank, MPI_Datatype type,
+                              std::vector<int>& receiveStart) {
   const int size = comm.getSize();
   if (static_cast<int>(toRank.size()) != size) throw Error("exchangeWithRanks: one block per rank expected");
   const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
   if (mpi == nullptr) {  // a serial communicator: this rank is the only one
+    receiveStart = {0, static_cast<int>(toRank[0].size())};
     return toRank[0];
   }
   const MPI_Comm raw = *mpi->getRawMpiComm();
-  std::vector<int> sendCounts(size), receiveCounts(size), sendStart(size + 1, 0), receiveStart(size + 1, 0);
-  std::vector<double> sent;
+  std::vector<int> sendCounts(size), receiveCounts(size), sendStart(size + 1, 0);
+  receiveStart.assign(size + 1, 0);
+  std::vector<T> sent;
   for (int r = 0; r < size; ++r) {
     sendCounts[r] = static_cast<int>(toRank[r].size());
     sendStart[r + 1] = sendStart[r] + sendCounts[r];
@@ -25,10 +32,27 @@ std::vector<double> exchangeWithRanks(const Comm& comm, const std::vector<std::v
   }
   MPI_Alltoall(sendCounts.data(), 1, MPI_INT, receiveCounts.data(), 1, MPI_INT, raw);
   for (int r = 0; r < size; ++r) receiveStart[r + 1] = receiveStart[r] + receiveCounts[r];
-  std::vector<double> received(receiveStart[size]);
-  MPI_Alltoallv(sent.data(), sendCounts.data(), sendStart.data(), MPI_DOUBLE, received.data(), receiveCounts.data(),
-                receiveStart.data(), MPI_DOUBLE, raw);
+  std::vector<T> received(receiveStart[size]);
+  MPI_Alltoallv(sent.data(), sendCounts.data(), sendStart.data(), type, received.data(), receiveCounts.data(),
+                receiveStart.data(), type, raw);
   return received;
+}
+
+}  // namespace
+
+std::vector<double> exchangeWithRanks(const Comm& comm, const std::vector<std::vector<double>>& toRank) {
+  std::vector<int> start;
+  return exchangeBlocks(comm, toRank, MPI_DOUBLE, start);
+}
+
+std::vector<std::vector<long long>> exchangeWithRanks(const Comm& comm,
+                                                      const std::vector<std::vector<long long>>& toRank) {
+  std::vector<int> start;
+  const std::vector<long long> received = exchangeBlocks(comm, toRank, MPI_LONG_LONG, start);
+  std::vector<std::vector<long long>> fromRank(start.size() - 1);
+  for (std::size_t r = 0; r + 1 < start.size(); ++r)
+    fromRank[r].assign(received.begin() + start[r], received.begin() + start[r + 1]);
+  return fromRank;
 }
 
 }  // namespace signorini

@@ -12,4 +12,8 @@ namespace signorini {
 // the sending rank.
 std::vector<double> exchangeWithRanks(const Comm& comm, const std::vector<std::vector<double>>& toRank);
 
+// The same for integers, received as one block per sending rank.
+std::vector<std::vector<long long>> exchangeWithRanks(const Comm& comm,
+                                                      const std::vector<std::vector<long long>>& toRank);
+
 }  // namespace signorini

@@ -87,6 +87,10 @@ struct RawMesh {
   // Of a meshed .geo geometry: the blocks of every entity of dimension dim - 1 and, in 3D, of
   // every curve, with the entity's tag.
   std::vector<std::pair<int, ElementBlock>> geometryFacetBlocks, geometryEdgeBlocks;
+  // Of one part of a partitioned mesh: the node tags of every entity Gmsh made for the
+  // partition, with the index of that entity's partitions in entityParts.
+  std::vector<std::pair<Tag, int>> partitionedNodes;
+  std::vector<std::vector<int>> entityParts;
 };
 
 // ---------------------------------------------------------------------------------------
@@ -235,6 +239,33 @@ std::vector<std::pair<int, ElementBlock>> entityElements(int dim, int type) {
   return result;
 }
 
+// Whether the entity of dimension dim - 1 is one Gmsh made between two parts of a partitioned
+// mesh (its parent is of dimension dim).
+bool isPartitionInterface(int dim, int entity) {
+  int parentDim = -1, parentTag = -1;
+  gmsh::model::getParent(dim - 1, entity, parentDim, parentTag);
+  return parentDim == dim;
+}
+
+// The nodes of every entity that belongs to partitions, with those partitions.
+void addPartitionedNodes(RawMesh& raw) {
+  for (int d = 0; d <= raw.dim; ++d) {
+    gmsh::vectorpair entities;
+    gmsh::model::getEntities(entities, d);
+    for (const auto& entity : entities) {
+      std::vector<int> parts;
+      gmsh::model::getPartitions(entity.first, entity.second, parts);
+      if (parts.empty()) continue;
+      std::vector<Tag> nodeTags;
+      std::vector<double> coords, parametric;
+      gmsh::model::mesh::getNodes(nodeTags, coords, parametric, entity.first, entity.second, false, false);
+      for (Tag node : nodeTags) raw.partitionedNodes.emplace_back(node, static_cast<int>(raw.entityParts.size()));
+      raw.entityParts.push_back(std::move(parts));
+    }
+  }
+  std::sort(raw.partitionedNodes.begin(), raw.partitionedNodes.end());
+}
+
 RawMesh extractMesh(bool withGeometry) {
   RawMesh raw;
   for (int d = 3; d >= 0 && raw.highestDimensionFound < 0; --d) {
@@ -261,7 +292,14 @@ RawMesh extractMesh(bool withGeometry) {
     gmsh::model::getEntitiesForPhysicalGroup(raw.dim - 1, group.second, entities);
     std::sort(entities.begin(), entities.end());
     entities.erase(std::unique(entities.begin(), entities.end()), entities.end());
-    for (int entity : entities) appendElements(raw.dim - 1, entity, boundary.blocks);
+    // Gmsh puts the interfaces between the parts of a partitioned mesh into groups of their
+    // own: they are no boundary.
+    const auto interfaces = std::partition(entities.begin(), entities.end(), [&raw](int entity) {
+      return !isPartitionInterface(raw.dim, entity);
+    });
+    if (interfaces == entities.begin() && !entities.empty()) continue;
+    for (auto entity = entities.begin(); entity != interfaces; ++entity)
+      appendElements(raw.dim - 1, *entity, boundary.blocks);
     raw.boundaryGroups.push_back(std::move(boundary));
   }
   if (withGeometry) {
@@ -468,7 +506,8 @@ void addCellTags(const RawMesh& raw, const std::vector<std::pair<Tag, const Tag*
   }
 }
 
-SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
+// `vertexTags`, if given, receives the Gmsh node tag of each vertex.
+SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix, std::vector<Tag>* vertexTags = nullptr) {
   const int dim = raw.dim;
   const int nodesPerCell = dim + 1;
   SimplexMesh mesh;
@@ -527,11 +566,48 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix) {
   addBoundaryFacets(raw, used, prefix, mesh);
   addGeometryEntities(raw.geometryFacetBlocks, used, dim, mesh.geometryFacets, mesh.geometryFacetEntities);
   addGeometryEntities(raw.geometryEdgeBlocks, used, 2, mesh.geometryEdges, mesh.geometryEdgeEntities);
+  if (vertexTags) *vertexTags = std::move(used);
   return mesh;
 }
 
-// The mesh in this process; readGmshMesh runs it in a child.
-SimplexMesh readInThisProcess(const std::string& path, double sizeFactor) {
+// The one partition (1-based, as Gmsh numbers them) that the cells of a part file belong to.
+int partitionOfCells(const RawMesh& raw, const std::string& prefix) {
+  std::set<int> partitions;
+  for (const ElementBlock& block : raw.cellBlocks) {
+    std::vector<int> parts;
+    gmsh::model::getPartitions(raw.dim, block.entity, parts);
+    if (parts.empty())
+      throw InputError(prefix + "it is not one part of a partitioned mesh (its cells belong to no partition; "
+                                "Gmsh writes one file per part with -part N -part_split)");
+    partitions.insert(parts.begin(), parts.end());
+  }
+  if (partitions.size() != 1)
+    throw InputError(prefix + "its cells belong to " + std::to_string(partitions.size()) +
+                     " partitions: a part file holds one");
+  return *partitions.begin();
+}
+
+// Every vertex's partitions (0-based, ascending) as CSR: those of the entity its node lies
+// on, or the file's own for a node inside the part.
+void addVertexSharers(const RawMesh& raw, const std::vector<Tag>& vertexTags, GmshMeshPart& part) {
+  part.sharerStart.assign(1, 0);
+  for (Tag node : vertexTags) {
+    const auto it = std::lower_bound(raw.partitionedNodes.begin(), raw.partitionedNodes.end(), std::make_pair(node, -1));
+    if (it != raw.partitionedNodes.end() && it->first == node) {
+      std::vector<int> parts = raw.entityParts[it->second];
+      std::sort(parts.begin(), parts.end());
+      for (int p : parts) part.sharers.push_back(p - 1);
+    } else {
+      part.sharers.push_back(part.part);
+    }
+    part.sharerStart.push_back(static_cast<long long>(part.sharers.size()));
+  }
+  part.vertexTags.assign(vertexTags.begin(), vertexTags.end());
+}
+
+// The mesh in this process; readGmshMesh runs it in a child. With `part`, the file is one
+// part of a partitioned mesh, and `part` receives the mesh and what it shares.
+SimplexMesh readInThisProcess(const std::string& path, double sizeFactor, GmshMeshPart* part = nullptr) {
   const std::string prefix = "Gmsh mesh file '" + path + "': ";
   const bool geometry = std::filesystem::path(path).extension() == ".geo";
   {
@@ -570,6 +646,10 @@ SimplexMesh readInThisProcess(const std::string& path, double sizeFactor) {
       for (const BoundaryGroup& group : raw.boundaryGroups)
         checkTypes(group.blocks, raw.dim - 1, "the boundary group \"" + boundaryName(group) + "\"",
                    "boundary facets", prefix);
+      if (part) {
+        part->part = partitionOfCells(raw, prefix) - 1;
+        addPartitionedNodes(raw);
+      }
     } catch (const Error&) {
       throw;
     } catch (const std::bad_alloc&) {
@@ -582,7 +662,11 @@ SimplexMesh readInThisProcess(const std::string& path, double sizeFactor) {
       throw InputError(prefix + "Gmsh cannot read it");
     }
   }
-  return buildMesh(raw, prefix);
+  if (!part) return buildMesh(raw, prefix);
+  std::vector<Tag> vertexTags;
+  SimplexMesh mesh = buildMesh(raw, prefix, &vertexTags);
+  addVertexSharers(raw, vertexTags, *part);
+  return mesh;
 }
 
 // Names and their tags through the pipe: the names, each ended by '\0', then the tags.
@@ -687,6 +771,28 @@ SimplexMesh readGmshMesh(const std::string& path, double sizeFactor, double time
       },
       [&](int fd) { return receiveMesh(fd, mesh); });
   return mesh;
+}
+
+GmshMeshPart readGmshMeshPart(const std::string& path, double timeLimitSeconds) {
+  GmshMeshPart part;
+  answerFromChild(
+      "Gmsh mesh file '" + path + "'", "reading it", timeLimitSeconds < 0 ? defaultTimeLimit(path) : timeLimitSeconds,
+      [&](int fd) {
+        GmshMeshPart read;
+        read.mesh = readInThisProcess(path, 1.0, &read);
+        writeAll(fd, "A", 1);
+        sendMesh(fd, read.mesh);
+        writeAll(fd, &read.part, sizeof read.part);
+        sendArray(fd, read.vertexTags);
+        sendArray(fd, read.sharerStart);
+        sendArray(fd, read.sharers);
+      },
+      [&](int fd) {
+        return receiveMesh(fd, part.mesh) && readAll(fd, &part.part, sizeof part.part) &&
+               receiveArray(fd, part.vertexTags) && receiveArray(fd, part.sharerStart) &&
+               receiveArray(fd, part.sharers);
+      });
+  return part;
 }
 
 std::vector<double> closestPointsOnGeometry(const std::string& path, const std::vector<int>& dims,

@@ -43,6 +43,25 @@ namespace signorini {
 // (meshing takes as long as the geometry asks).
 SimplexMesh readGmshMesh(const std::string& path, double sizeFactor = 1.0, double timeLimitSeconds = -1);
 
+// One part of a mesh that Gmsh partitioned and wrote as one file per part (gmsh -part N
+// -part_split, or Mesh.PartitionSplitMeshFiles = 1: files name_1.msh .. name_N.msh).
+struct GmshMeshPart {
+  // The part's cells, read as readGmshMesh reads a whole file: the boundary facets are the
+  // part's elements of the boundary groups (the interfaces Gmsh makes between the parts are
+  // no boundary); vertices numbered in increasing Gmsh node tag.
+  SimplexMesh mesh;
+  int part = -1;  // which part, from 0: file name_k.msh holds part k - 1
+  // Per vertex: its Gmsh node tag (the same in every part) and the parts whose cells hold it,
+  // ascending, this one among them (CSR).
+  std::vector<long long> vertexTags;
+  std::vector<long long> sharerStart;
+  std::vector<int> sharers;
+};
+
+// Reads one part file as readGmshMesh reads a .msh file, with the same errors, and also
+// throws InputError if the file is not one part of a partitioned mesh.
+GmshMeshPart readGmshMeshPart(const std::string& path, double timeLimitSeconds = -1);
+
 // The closest point of the .geo geometry at `path` on entity (dims[i], entities[i]) to point i
 // (x, y, z per point; Gmsh's orthogonal projection), for each point. The geometry is loaded,
 // not meshed, in a child process as above. Throws InputError if Gmsh cannot load it or has no

@@ -58,31 +58,73 @@ AssembledProblem::~AssembledProblem() = default;
 
 namespace {
 
-// The space of a Gmsh mesh refined `gmsh.refinements` times: rank 0 sends each rank its part
-// of the coarse mesh (held by rank 0 alone in `mesh`); every rank refines its own, its new
-// boundary vertices placed on a .geo geometry. Returns the levels' grids.
-std::shared_ptr<const GeometricGrid> refinedGmshSpace(const Teuchos::ParameterList& problem, const GmshSource& gmsh,
-                                                      const std::filesystem::path& file,
-                                                      std::shared_ptr<SimplexMesh> mesh, const RCP<const Comm>& comm,
-                                                      AssembledProblem& result,
-                                                      std::shared_ptr<const DistributedSpace>& space) {
-  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh));
+// The space on `lattice`'s coarse mesh refined `gmsh.refinements` times, every rank refining
+// its own part, its new boundary vertices placed on a .geo geometry. Returns the levels'
+// grids (none without refinement: the mesh is then the space's own, as a mesh read whole).
+std::shared_ptr<const GeometricGrid> latticeSpace(const Teuchos::ParameterList& problem, const GmshSource& gmsh,
+                                                  const std::filesystem::path& file,
+                                                  const std::shared_ptr<detail::CoarseMeshLattice>& lattice,
+                                                  AssembledProblem& result,
+                                                  std::shared_ptr<const DistributedSpace>& space) {
   result.definition = detail::definitionOf(problem, lattice->dim());
   const ProblemDefinition& def = result.definition;
   checkMemoryFits(static_cast<double>(def.dim) * lattice->numPoints(def.degree << gmsh.refinements), def.dim,
-                  def.degree, !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
+                  def.degree, !storesNoStiffness(def), def.gridRefinedAtNodes, *lattice->comm());
   const SimplexRefinement refinement(def.dim, gmsh.refinements);
   if (file.extension() == ".geo") lattice->placeOnGeometry(file.string(), refinement);
   detail::RefinedLevel finest = detail::refineLocally(*lattice, refinement, gmsh.refinements, true);
   space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree, finest);
+  if (gmsh.refinements == 0) return nullptr;
   return RefinedMeshGrid::hierarchy(lattice, refinement, *space, finest);
 }
 
+// File k (from 1) of a mesh written in parts: name_k.ext for `file` name.ext, as Gmsh names them.
+std::filesystem::path partFile(const std::filesystem::path& file, int k) {
+  std::filesystem::path part = file;
+  part.replace_filename(file.stem().string() + "_" + std::to_string(k) + file.extension().string());
+  return part;
+}
+
+// How many part files name_1.ext, name_2.ext, .. rank 0 finds for a `file` that does not
+// exist itself (0: it exists, or has no parts), the same on every rank.
+int numPartFiles(const Comm& comm, const std::filesystem::path& file) {
+  int count = 0;
+  if (comm.getRank() == 0 && !std::filesystem::exists(file))
+    while (std::filesystem::exists(partFile(file, count + 1))) ++count;
+  Teuchos::broadcast(comm, 0, 1, &count);
+  return count;
+}
+
+// The space of a Gmsh mesh written in `numParts` part files, one per rank: each rank reads
+// its own and no rank holds the mesh.
+std::shared_ptr<const GeometricGrid> splitGmshSpace(const Teuchos::ParameterList& problem, const GmshSource& gmsh,
+                                                    const std::filesystem::path& file, int numParts,
+                                                    const RCP<const Comm>& comm, AssembledProblem& result,
+                                                    std::shared_ptr<const DistributedSpace>& space) {
+  const int ranks = comm->getSize();
+  if (numParts != ranks)
+    throw InputError("Problem/mesh: file: '" + file.string() + "' is written in " + std::to_string(numParts) +
+                     " parts (" + partFile(file, 1).filename().string() + " .. " +
+                     partFile(file, numParts).filename().string() + "), and a mesh in parts is read one part per rank: "
+                     "run on " + std::to_string(numParts) + " ranks, or partition the mesh again into " +
+                     std::to_string(ranks) + " (gmsh -part " + std::to_string(ranks) + " -part_split)");
+  GmshMeshPart part;
+  detail::runOnEveryRank(*comm, [&] {
+    const std::string path = partFile(file, comm->getRank() + 1).string();
+    part = readGmshMeshPart(path);
+    if (part.part != comm->getRank())
+      throw InputError("Gmsh mesh file '" + path + "': it holds part " + std::to_string(part.part + 1) + ", not part " +
+                       std::to_string(comm->getRank() + 1));
+  });
+  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(part));
+  return latticeSpace(problem, gmsh, file, lattice, result, space);
+}
+
 // The definition of the validated `problem` list and the space, with the grids of a refined
-// mesh if there are. Every rank
-// makes its own part of a box mesh. A Gmsh mesh is read by rank 0 alone, once, and freed once
-// each rank has its part (of the mesh, or of the coarse mesh it refines); its dimension
-// decides the one the rest of the definition is read with.
+// mesh if there are. Every rank makes its own part of a box mesh. A Gmsh mesh is read by rank
+// 0 alone, once, and freed once each rank has its part (of the mesh, or of the coarse mesh it
+// refines); a mesh written in parts, each rank its own part. The mesh's dimension decides
+// the one the rest of the definition is read with.
 std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                                                const std::string& baseDirectory, AssembledProblem& result,
                                                std::shared_ptr<const DistributedSpace>& space) {
@@ -98,8 +140,12 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
   std::shared_ptr<SimplexMesh> mesh;
   std::filesystem::path file(gmsh.file);
   if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
+  if (const int numParts = numPartFiles(*comm, file); numParts > 0)
+    return splitGmshSpace(problem, gmsh, file, numParts, comm, result, space);
   detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
-  if (gmsh.refinements > 0) return refinedGmshSpace(problem, gmsh, file, std::move(mesh), comm, result, space);
+  if (gmsh.refinements > 0)
+    return latticeSpace(problem, gmsh, file, std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh)),
+                        result, space);
   int dim = mesh ? mesh->dim : 0;
   Teuchos::broadcast(*comm, 0, 1, &dim);
   result.definition = detail::definitionOf(problem, dim);
