@@ -7,7 +7,9 @@ plane (doc/benchmark-family.md). Three meshes per case:
   refined  a coarse Gmsh mesh of the .geo refined uniformly on every rank
            (Problem/mesh: refinements), each refinement a geometric level;
   msh      the fine mesh written by Gmsh as a .msh file and read as is (rank 0 reads and
-           partitions it; its own P1 grid, MueLu below).
+           partitions it; its own P1 grid, MueLu below);
+  parts    the same fine mesh partitioned by Gmsh and written as one file per rank
+           (gmsh -part N -part_split), each rank reading its own (runs on 2 ranks or more).
 
 Each on 1 and 2 ranks (--ranks), with the contact solve and a linear solve of the same
 problem with the bottom clamped instead (no contact): setup, assembly and solve times,
@@ -66,20 +68,31 @@ def fine_msh(workdir, dim, size):
     return path
 
 
-def mesh_settings(case, mesh, workdir):
+def fine_parts(workdir, dim, size, ranks):
+    """The fine .msh in `ranks` part files, name_1.msh .. name_<ranks>.msh; returns name.msh."""
+    path = os.path.join(workdir, f"unit-{dim}d-h{size}-in{ranks}.msh")
+    first = path[:-len(".msh")] + "_1.msh"
+    if not os.path.exists(first):
+        subprocess.run(["gmsh", fine_msh(workdir, dim, size), "-part", str(ranks), "-part_split", "-o", path, "-save"],
+                       check=True, capture_output=True)
+    return path
+
+
+def mesh_settings(case, mesh, workdir, ranks):
     dim, degree, _, cells, (coarse, refinements), fine = CASES[case]
     if mesh == "box":
         return [f"Problem/mesh: cells={{{cells}}}"]
     if mesh == "refined":
         return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={write_geometry(workdir, dim, coarse)}",
                 f"Problem/mesh: refinements={refinements}"]
-    return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={fine_msh(workdir, dim, fine)}"]
+    file = fine_parts(workdir, dim, fine, ranks) if mesh == "parts" else fine_msh(workdir, dim, fine)
+    return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={file}"]
 
 
 def run(case, mesh, ranks, linear, workdir):
     dim, degree, box_input, *_ = CASES[case]
     out = os.path.join(workdir, f"{case}-{mesh}-np{ranks}-{'linear' if linear else 'contact'}")
-    settings = mesh_settings(case, mesh, workdir) + [f"Problem/element: degree={degree}", "Output/write solution=false",
+    settings = mesh_settings(case, mesh, workdir, ranks) + [f"Problem/element: degree={degree}", "Output/write solution=false",
                                                      "Output/write contact samples=false"]
     bottom, top = ("ymin", "ymax") if dim == 2 else ("zmin", "zmax")
     if linear:  # the bottom clamped like the top, no contact
@@ -135,9 +148,9 @@ def main():
     made = provenance(max(ranks))  # before any result file is rewritten
     runs = []
     for case in args.cases.split(","):
-        meshes = ["box", "refined"] + (["msh"] if CASES[case][5] else [])
+        fine = ["msh", "parts"] if CASES[case][5] else []
         for np in ranks:
-            for mesh in meshes:
+            for mesh in ["box", "refined"] + [m for m in fine if m != "parts" or np > 1]:
                 for linear in (False, True):
                     runs.append(run(case, mesh, np, linear, args.workdir))
                     print(json.dumps(runs[-1]), flush=True)

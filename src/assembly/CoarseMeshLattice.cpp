@@ -263,9 +263,10 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
   indexNearEntities();
 }
 
-CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, GmshMeshPart&& part) : comm_(comm) {
+CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, GmshMeshPart&& part, long long resolution)
+    : comm_(comm) {
   part.mesh = withShortestDiagonals(part.mesh);
-  part_ = latticePartOfSplitMesh(comm_, std::move(part));
+  part_ = latticePartOfSplitMesh(comm_, std::move(part), resolution);
   indexNearEntities();
 }
 

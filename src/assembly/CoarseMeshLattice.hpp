@@ -33,7 +33,8 @@ class CoarseMeshLattice {
   CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> mesh);
   // Collective. Every rank passes its own part of a mesh read in parts (rank r part r); the
   // ranks number the entities together (latticePartOfSplitMesh), and none holds the mesh.
-  CoarseMeshLattice(const RCP<const Comm>& comm, GmshMeshPart&& part);
+  // Only points of resolution up to `resolution` can be asked for.
+  CoarseMeshLattice(const RCP<const Comm>& comm, GmshMeshPart&& part, long long resolution);
 
   const RCP<const Comm>& comm() const { return comm_; }
   int dim() const { return part_.mesh.dim; }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <functional>
-#include <limits>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -41,44 +40,27 @@ struct VertexSharing {
 
   // The other ranks that hold every vertex of the entity (at least one of them for `any`).
   std::vector<int> others(const Key& key, int size, int self, bool any = false) const {
-    std::vector<int> result;
+    std::vector<int> result, merged;
     for (int i = 0; i < size; ++i) {
       const long long v = local(key[i]);
-      std::vector<int> these(ranks.begin() + start[v], ranks.begin() + start[v + 1]);
+      const int* first = ranks.data() + start[v];
+      const int* last = ranks.data() + start[v + 1];
+      if (!any && last - first == 1) return {};  // a vertex inside the part
       if (i == 0) {
-        result = std::move(these);
-      } else {
-        std::vector<int> merged;
-        if (any)
-          std::set_union(result.begin(), result.end(), these.begin(), these.end(), std::back_inserter(merged));
-        else
-          std::set_intersection(result.begin(), result.end(), these.begin(), these.end(), std::back_inserter(merged));
-        result = std::move(merged);
+        result.assign(first, last);
+        continue;
       }
+      merged.clear();
+      if (any)
+        std::set_union(result.begin(), result.end(), first, last, std::back_inserter(merged));
+      else
+        std::set_intersection(result.begin(), result.end(), first, last, std::back_inserter(merged));
+      result.swap(merged);
     }
     result.erase(std::remove(result.begin(), result.end(), self), result.end());
     return result;
   }
 };
-
-// Each entity's owner: the lowest rank that holds it, this one or one of its candidates. Every
-// rank tells each candidate which of its entities it may share with it.
-std::vector<int> lowestHolders(const Comm& comm, const std::vector<Key>& keys, int size,
-                               const std::vector<std::vector<int>>& candidates) {
-  const int rank = comm.getRank();
-  std::vector<std::vector<long long>> toRank(comm.getSize());
-  for (std::size_t e = 0; e < keys.size(); ++e)
-    for (int r : candidates[e]) toRank[r].insert(toRank[r].end(), keys[e].begin(), keys[e].begin() + size);
-  const std::vector<std::vector<long long>> fromRank = exchangeWithRanks(comm, toRank);
-  std::vector<int> owners(keys.size(), rank);
-  for (int r = 0; r < rank; ++r)
-    for (std::size_t i = 0; i < fromRank[r].size(); i += size) {
-      const Key key = sortedKey(&fromRank[r][i], size);
-      const auto it = std::lower_bound(keys.begin(), keys.end(), key);
-      if (it != keys.end() && *it == key) owners[it - keys.begin()] = std::min(owners[it - keys.begin()], r);
-    }
-  return owners;
-}
 
 // The part's distinct entities with `size` vertices, numbered over all ranks.
 struct NumberedEntities {
@@ -90,39 +72,74 @@ struct NumberedEntities {
   std::size_t find(const Key& key) const { return std::lower_bound(keys.begin(), keys.end(), key) - keys.begin(); }
 };
 
-// Numbers the entities with the given keys (repeats allowed): owners as lowestHolders(), ids
-// owner by owner through their `globalKey`, a number no other entity has.
-NumberedEntities numberEntities(const RCP<const Comm>& comm, std::vector<Key> keys, int size,
-                                const VertexSharing& sharing, const std::function<GlobalOrdinal(const Key&)>& globalKey) {
+// Numbers the entities with the given keys (repeats allowed), each owned by the lowest rank
+// that holds it: every rank tells each other rank that holds all the entity's vertices which
+// entities it may share with it, the owners number theirs (rank by rank, in key order) and
+// send the ids to the ranks that share them. `candidates(key)`: those other ranks.
+NumberedEntities numberEntities(const Comm& comm, std::vector<Key> keys, int size,
+                                const std::function<std::vector<int>(const Key&)>& candidates) {
+  const int rank = comm.getRank(), ranks = comm.getSize();
   NumberedEntities result;
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-  std::vector<std::vector<int>> candidates(keys.size());
-  for (std::size_t e = 0; e < keys.size(); ++e) candidates[e] = sharing.others(keys[e], size, comm->getRank());
-  result.owners = lowestHolders(*comm, keys, size, candidates);
-  std::vector<GlobalOrdinal> global(keys.size());
-  for (std::size_t e = 0; e < keys.size(); ++e) global[e] = globalKey(keys[e]);
-  result.ids = ownerOrderedIds(comm, global, result.owners, result.count);
   result.keys = std::move(keys);
+  const std::vector<Key>& all = result.keys;
+  std::vector<std::vector<long long>> toRank(ranks);
+  for (const Key& key : all)
+    for (int r : candidates(key)) toRank[r].insert(toRank[r].end(), key.begin(), key.begin() + size);
+  const std::vector<std::vector<long long>> fromRank = exchangeWithRanks(comm, toRank);
+
+  // heldBy[r]: this rank's entities that rank r holds too.
+  std::vector<std::vector<std::size_t>> heldBy(ranks);
+  result.owners.assign(all.size(), rank);
+  for (int r = 0; r < ranks; ++r)
+    for (std::size_t i = 0; i < fromRank[r].size(); i += size) {
+      const Key key = sortedKey(&fromRank[r][i], size);
+      const std::size_t e = result.find(key);
+      if (e == all.size() || all[e] != key) continue;
+      heldBy[r].push_back(e);
+      result.owners[e] = std::min(result.owners[e], r);
+    }
+  const long long owned = std::count(result.owners.begin(), result.owners.end(), rank);
+  long long next = 0;
+  Teuchos::scan(comm, Teuchos::REDUCE_SUM, 1, &owned, &next);
+  result.count = sumOverRanks(comm, owned);
+  next -= owned;
+  result.ids.assign(all.size(), -1);
+  for (std::size_t e = 0; e < all.size(); ++e)
+    if (result.owners[e] == rank) result.ids[e] = next++;
+
+  for (int r = 0; r < ranks; ++r) {
+    toRank[r].clear();
+    for (std::size_t e : heldBy[r])
+      if (result.owners[e] == rank) {
+        toRank[r].insert(toRank[r].end(), all[e].begin(), all[e].begin() + size);
+        toRank[r].push_back(result.ids[e]);
+      }
+  }
+  for (const std::vector<long long>& received : exchangeWithRanks(comm, toRank))
+    for (std::size_t i = 0; i < received.size(); i += size + 1)
+      result.ids[result.find(sortedKey(&received[i], size))] = received[i + size];
+  if (std::find(result.ids.begin(), result.ids.end(), -1) != result.ids.end())
+    throw Error("split mesh: an entity shared with another rank got no number from its owner");
   return result;
 }
 
 // Vertices: owners and global ids, then the part's vertices reordered by id (the mesh's
 // cells and facets follow).
-VertexSharing numberVertices(const RCP<const Comm>& comm, GmshMeshPart& read, MeshPart& part, long long& count) {
+VertexSharing numberVertices(const Comm& comm, GmshMeshPart& read, MeshPart& part, long long& count) {
   SimplexMesh& mesh = read.mesh;
   const int d = mesh.dim;
   const long long nv = mesh.numVertices();
-  VertexSharing byTag{std::vector<GlobalOrdinal>(read.vertexTags.begin(), read.vertexTags.end()), read.sharerStart,
-                      read.sharers};
+  const VertexSharing byTag{std::vector<GlobalOrdinal>(read.vertexTags.begin(), read.vertexTags.end()),
+                            read.sharerStart, read.sharers};
   std::vector<Key> keys(nv);
-  std::vector<std::vector<int>> candidates(nv);
-  for (long long v = 0; v < nv; ++v) {
-    keys[v] = {read.vertexTags[v], -1, -1};
-    candidates[v] = byTag.others(keys[v], 1, comm->getRank());
-  }
-  const std::vector<int> owners = lowestHolders(*comm, keys, 1, candidates);
-  const std::vector<GlobalOrdinal> ids = ownerOrderedIds(comm, byTag.ids, owners, count);
+  for (long long v = 0; v < nv; ++v) keys[v] = {read.vertexTags[v], -1, -1};  // ascending, as the vertices
+  const NumberedEntities numbered = numberEntities(
+      comm, std::move(keys), 1, [&](const Key& key) { return byTag.others(key, 1, comm.getRank()); });
+  const std::vector<GlobalOrdinal>& ids = numbered.ids;
+  const std::vector<int>& owners = numbered.owners;
+  count = numbered.count;
 
   std::vector<long long> order(nv), position(nv);
   std::iota(order.begin(), order.end(), 0LL);
@@ -238,17 +255,15 @@ void addBoundary(const Comm& comm, const VertexSharing& sharing, MeshPart& part)
 
 }  // namespace
 
-MeshPart latticePartOfSplitMesh(const RCP<const Comm>& comm, GmshMeshPart&& read) {
+MeshPart latticePartOfSplitMesh(const RCP<const Comm>& comm, GmshMeshPart&& read, long long resolution) {
   const int d = read.mesh.dim;
   const long long numCells = read.mesh.numCells();
   if (numCells == 0) throw Error("split mesh: rank " + std::to_string(comm->getRank()) + " holds no cells");
   MeshPart part;
   long long numVertices = 0;
-  const VertexSharing sharing = numberVertices(comm, read, part, numVertices);
+  const VertexSharing sharing = numberVertices(*comm, read, part, numVertices);
   part.mesh = std::move(read.mesh);
   read = GmshMeshPart();
-  // Edges and faces are numbered through keys of two and three vertex ids; they must fit.
-  if (numVertices > 3000000000LL) throw Error("split mesh: too many vertices for 64-bit entity keys");
 
   long long firstCell = 0;
   Teuchos::scan(*comm, Teuchos::REDUCE_SUM, 1, &numCells, &firstCell);
@@ -256,22 +271,18 @@ MeshPart latticePartOfSplitMesh(const RCP<const Comm>& comm, GmshMeshPart&& read
   part.globalCells.resize(numCells);
   std::iota(part.globalCells.begin(), part.globalCells.end(), firstCell);
 
-  const std::vector<Key> edgeKeys = cellEntityKeys(part.mesh, sharing, 2);
-  const NumberedEntities edges = numberEntities(comm, edgeKeys, 2, sharing,
-                                                [&](const Key& k) { return k[0] * numVertices + k[1]; });
-  addCellEntities(edges, edgeKeys, part.cellEdges, part.edgeOwners);
-  NumberedEntities faces;
-  if (d == 3) {
-    if (edges.count > std::numeric_limits<long long>::max() / numVertices)
-      throw Error("split mesh: too many edges for 64-bit face keys");
-    const std::vector<Key> faceKeys = cellEntityKeys(part.mesh, sharing, 3);
-    faces = numberEntities(comm, faceKeys, 3, sharing, [&](const Key& k) {
-      return edges.ids[edges.find({k[0], k[1], -1})] * numVertices + k[2];
-    });
-    addCellEntities(faces, faceKeys, part.cellFaces, part.faceOwners);
+  // Edges hold lattice points from resolution 2 on, faces (3D) from 3 on.
+  long long counts[2] = {0, 0};
+  for (int size = 2; size <= std::min(d, static_cast<int>(std::min<long long>(resolution, 3))); ++size) {
+    const std::vector<Key> cellKeys = cellEntityKeys(part.mesh, sharing, size);
+    const NumberedEntities entities = numberEntities(
+        *comm, cellKeys, size, [&](const Key& key) { return sharing.others(key, size, comm->getRank()); });
+    addCellEntities(entities, cellKeys, size == 2 ? part.cellEdges : part.cellFaces,
+                    size == 2 ? part.edgeOwners : part.faceOwners);
+    counts[size - 2] = entities.count;
   }
   addBoundary(*comm, sharing, part);
-  part.entityCounts = {numVertices, edges.count, faces.count, sumOverRanks(*comm, numCells)};
+  part.entityCounts = {numVertices, counts[0], counts[1], sumOverRanks(*comm, numCells)};
   return part;
 }
 

@@ -10,8 +10,10 @@
 namespace signorini::detail {
 
 // Rank r passes part r. The part's mesh keeps its cells with their vertex order and its
-// boundary facets; its vertices are reordered by global id. Collective. Throws Error if the
-// parts do not fit together (a rank holds no cells, or the global numbers would overflow).
-MeshPart latticePartOfSplitMesh(const RCP<const Comm>& comm, GmshMeshPart&& read);
+// boundary facets; its vertices are reordered by global id. Only the entities that hold
+// lattice points of `resolution` (CoarseMeshLattice) are numbered: edges from 2 on, faces
+// from 3. Collective. Throws Error if the parts do not fit together (a rank holds no cells, a
+// shared entity gets no number).
+MeshPart latticePartOfSplitMesh(const RCP<const Comm>& comm, GmshMeshPart&& read, long long resolution);
 
 }  // namespace signorini::detail

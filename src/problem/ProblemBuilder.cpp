@@ -116,7 +116,9 @@ std::shared_ptr<const GeometricGrid> splitGmshSpace(const Teuchos::ParameterList
       throw InputError("Gmsh mesh file '" + path + "': it holds part " + std::to_string(part.part + 1) + ", not part " +
                        std::to_string(comm->getRank() + 1));
   });
-  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(part));
+  const int degree = detail::definitionOf(problem, part.mesh.dim).degree;
+  const auto lattice =
+      std::make_shared<detail::CoarseMeshLattice>(comm, std::move(part), static_cast<long long>(degree) << gmsh.refinements);
   return latticeSpace(problem, gmsh, file, lattice, result, space);
 }
 

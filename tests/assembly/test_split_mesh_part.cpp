@@ -195,11 +195,11 @@ TEST(SplitMeshLattice, ScatteredPartsNumberEveryPointOnceAndFindItsBoundaries) {
   const SimplexMesh mesh = makeBoxMesh(3, {3, 2, 2}, {1, 1, 1});
   std::vector<int> cellRank(mesh.numCells());
   for (long long c = 0; c < mesh.numCells(); ++c) cellRank[c] = static_cast<int>((7 * c + 3) % size);
-  const detail::CoarseMeshLattice lattice(comm, scatteredPart(mesh, cellRank, rank));
+  const int n = 4;  // lattice points on every edge, face and cell
+  const detail::CoarseMeshLattice lattice(comm, scatteredPart(mesh, cellRank, rank), n);
 
   // Every lattice point of resolution 4 of every cell: coordinates, id, owner, rank, and
   // whether it is on each of the box's six faces (tags 1..6), to rank 0.
-  const int n = 4;
   const SimplexRefinement refinement(3, 2);
   std::vector<std::vector<double>> toRank(size);
   for (long long c = 0; c < lattice.mesh().numCells(); ++c)
