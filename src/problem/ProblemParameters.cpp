@@ -118,7 +118,11 @@ ParameterList validProblemParameters() {
   p.set("mesh: cells", Array<int>(1, 10),
         "Cells per direction of a box mesh: one value for all directions, or one per direction");
   p.set("mesh: lengths", Array<double>(3, 1.0), "Edge lengths of the box [0,L0]x[0,L1](x[0,L2])");
-  p.set("mesh: file", "", "Gmsh .msh file (format 2.2 or 4.1), or a .geo geometry that Gmsh meshes; relative to the XML file");
+  p.set("mesh: file", "",
+        "Gmsh .msh file (format 2.2 or 4.1), or a .geo geometry that Gmsh meshes; relative to the XML file. "
+        "When name.msh does not exist but name_1.msh .. name_N.msh do (a mesh Gmsh partitioned and wrote "
+        "in parts: gmsh -part N -part_split), each of the N ranks reads its own part; N must be the rank "
+        "count");
   p.set("mesh: size factor", 1.0, "A .geo geometry's mesh sizes are multiplied by this (Gmsh's Mesh.MeshSizeFactor)",
         range(1e-6, 1e6));
   p.set("mesh: refinements", 0,

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Install test: installs Signorini into a scratch prefix; checks that exactly the public
 # headers are installed and that each compiles on its own; runs the installed program on
-# xml/default.xml and examples/bodies; runs the Python example with the installed module;
+# xml/default.xml, examples/bodies and a mesh in parts; runs the Python example with the installed module;
 # builds every C++ example against the exported CMake package and runs it on 2 MPI ranks.
 set -euo pipefail
 source_dir=$1
@@ -44,6 +44,23 @@ contact = json.load(open(sys.argv[1]))["contact"]
 assert abs(contact["normal_force"] - 0.01) < 1e-8 and abs(contact["peak_pressure"] - 0.01) < 1e-8, contact
 CHECK
 done
+
+# A Gmsh mesh written in two parts by the gmsh program, each rank reading its own: the same
+# problem as the mesh read whole.
+gmsh "$source_dir/examples/hertz/half-ball-3d.geo" -3 -o "$work/ball.msh" > /dev/null
+gmsh "$work/ball.msh" -part 2 -part_split -o "$work/ball-in-parts.msh" -save > /dev/null
+for mesh in ball ball-in-parts; do
+  (cd "$work" && mpiexec -np 2 "$work/prefix/bin/signorini" "$source_dir/examples/hertz/half-ball-3d.xml" \
+     --set "Problem/mesh: file=$work/$mesh.msh" --set "Output/write solution=false" --output "$work/$mesh") ||
+    { echo "the installed bin/signorini does not solve the half-ball from $mesh.msh"; exit 1; }
+done
+/usr/bin/python3 - "$work/ball/summary.json" "$work/ball-in-parts/summary.json" <<'CHECK'
+import json, sys
+whole, parts = (json.load(open(f)) for f in sys.argv[1:])
+assert (whole["n"], whole["m"]) == (parts["n"], parts["m"]), (whole["n"], whole["m"], parts["n"], parts["m"])
+assert abs(parts["objective"] - whole["objective"]) <= 1e-9 * abs(whole["objective"]), (parts["objective"], whole["objective"])
+assert parts["serial_mesh_mib"] == 0, parts["serial_mesh_mib"]
+CHECK
 
 # The installed Python module, from the prefix alone: the hand-over example.
 (cd "$work" && PYTHONPATH="$work/prefix/lib/python3/dist-packages" /usr/bin/python3 \
