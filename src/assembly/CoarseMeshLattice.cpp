@@ -166,8 +166,9 @@ std::vector<double> closestPointsOnRoot(const Comm& comm, const std::string& pat
   return mine;
 }
 
-// Adds the lattice data of the mesh's entities to each part (rank 0).
-void addEntities(const SimplexMesh& mesh, const GlobalPartition& partition, const Entities& edges,
+// Adds the lattice data of the mesh's entities to each part (rank 0); the edges and faces
+// only where they are numbered.
+void addEntities(const SimplexMesh& mesh, const GlobalPartition& partition, const Entities* edges,
                  const Entities* faces, std::vector<MeshPart>& parts) {
   const int d = mesh.dim, edgesPerCell = d * (d + 1) / 2;
   std::vector<char> inPart(mesh.numVertices());
@@ -176,11 +177,12 @@ void addEntities(const SimplexMesh& mesh, const GlobalPartition& partition, cons
     std::fill(inPart.begin(), inPart.end(), 0);
     for (long long c : part.globalCells) {
       for (int v = 0; v <= d; ++v) inPart[mesh.cells[(d + 1) * c + v]] = 1;
-      for (int e = 0; e < edgesPerCell; ++e) {
-        const long long id = edges.ids[c * edgesPerCell + e];
-        part.cellEdges.push_back(id);
-        part.edgeOwners.push_back(edges.owners[id]);
-      }
+      if (edges)
+        for (int e = 0; e < edgesPerCell; ++e) {
+          const long long id = edges->ids[c * edgesPerCell + e];
+          part.cellEdges.push_back(id);
+          part.edgeOwners.push_back(edges->owners[id]);
+        }
       if (faces)
         for (int f = 0; f <= d; ++f) {
           const long long id = faces->ids[c * (d + 1) + f];
@@ -193,7 +195,7 @@ void addEntities(const SimplexMesh& mesh, const GlobalPartition& partition, cons
             part.nearGeometryFacetEntities);
     addNear(mesh.geometryEdges, mesh.geometryEdgeEntities, 2, inPart, partition, part.nearGeometryEdges,
             part.nearGeometryEdgeEntities);
-    part.entityCounts = {mesh.numVertices(), edges.count, faces ? faces->count : 0, mesh.numCells()};
+    part.entityCounts = {mesh.numVertices(), edges ? edges->count : 0, faces ? faces->count : 0, mesh.numCells()};
   }
 }
 
@@ -229,7 +231,8 @@ SimplexMesh withShortestDiagonals(const SimplexMesh& mesh) {
 
 }  // namespace
 
-CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> mesh)
+CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> mesh,
+                                     long long resolution)
     : comm_(comm) {
   const int size = comm_->getSize();
   std::vector<MeshPart> parts;
@@ -239,10 +242,12 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
     mesh = std::make_shared<const SimplexMesh>(withShortestDiagonals(*mesh));
     GlobalPartition partition(*mesh, 1, size);
     for (int r = 0; r < size; ++r) parts.push_back(partition.part(r));
-    const Entities edges = numberEntities(*mesh, partition, 2);
-    Entities faces;
-    if (mesh->dim == 3) faces = numberEntities(*mesh, partition, 3);
-    addEntities(*mesh, partition, edges, mesh->dim == 3 ? &faces : nullptr, parts);
+    // Edges hold lattice points from resolution 2 on, faces (3D) from 3 on.
+    Entities edges, faces;
+    if (resolution >= 2) edges = numberEntities(*mesh, partition, 2);
+    if (mesh->dim == 3 && resolution >= 3) faces = numberEntities(*mesh, partition, 3);
+    addEntities(*mesh, partition, resolution >= 2 ? &edges : nullptr,
+                mesh->dim == 3 && resolution >= 3 ? &faces : nullptr, parts);
     serialBytes = static_cast<long long>(mesh->bytes() + partition.bytes());
   });
   Teuchos::broadcast(*comm_, 0, 1, &serialBytes);

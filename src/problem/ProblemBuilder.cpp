@@ -59,8 +59,10 @@ AssembledProblem::~AssembledProblem() = default;
 namespace {
 
 // The space on `lattice`'s coarse mesh refined `gmsh.refinements` times, every rank refining
-// its own part, its new boundary vertices placed on a .geo geometry. Returns the levels'
-// grids (none without refinement: the mesh is then the space's own, as a mesh read whole).
+// its own part, its new boundary vertices placed on a .geo geometry; without refinement, the
+// space on the mesh itself. Either way its cells come in Morton order of the coarse cells,
+// which keeps a cell's nodes near in memory. Returns the levels' grids (none without
+// refinement).
 std::shared_ptr<const GeometricGrid> latticeSpace(const Teuchos::ParameterList& problem, const GmshSource& gmsh,
                                                   const std::filesystem::path& file,
                                                   const std::shared_ptr<detail::CoarseMeshLattice>& lattice,
@@ -76,6 +78,11 @@ std::shared_ptr<const GeometricGrid> latticeSpace(const Teuchos::ParameterList& 
   space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree, finest);
   if (gmsh.refinements == 0) return nullptr;
   return RefinedMeshGrid::hierarchy(lattice, refinement, *space, finest);
+}
+
+// The resolution of the finest lattice points of a Gmsh mesh: its space's nodes, k 2^r.
+long long finestResolution(const Teuchos::ParameterList& problem, int dim, const GmshSource& gmsh) {
+  return static_cast<long long>(detail::definitionOf(problem, dim).degree) << gmsh.refinements;
 }
 
 // File k (from 1) of a mesh written in parts: name_k.ext for `file` name.ext, as Gmsh names them.
@@ -116,17 +123,16 @@ std::shared_ptr<const GeometricGrid> splitGmshSpace(const Teuchos::ParameterList
       throw InputError("Gmsh mesh file '" + path + "': it holds part " + std::to_string(part.part + 1) + ", not part " +
                        std::to_string(comm->getRank() + 1));
   });
-  const int degree = detail::definitionOf(problem, part.mesh.dim).degree;
-  const auto lattice =
-      std::make_shared<detail::CoarseMeshLattice>(comm, std::move(part), static_cast<long long>(degree) << gmsh.refinements);
+  const long long resolution = finestResolution(problem, part.mesh.dim, gmsh);
+  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(part), resolution);
   return latticeSpace(problem, gmsh, file, lattice, result, space);
 }
 
 // The definition of the validated `problem` list and the space, with the grids of a refined
 // mesh if there are. Every rank makes its own part of a box mesh. A Gmsh mesh is read by rank
 // 0 alone, once, and freed once each rank has its part (of the mesh, or of the coarse mesh it
-// refines); a mesh written in parts, each rank its own part. The mesh's dimension decides
-// the one the rest of the definition is read with.
+// refines: CoarseMeshLattice); a mesh written in parts, each rank its own part. The mesh's
+// dimension decides the one the rest of the definition is read with.
 std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                                                const std::string& baseDirectory, AssembledProblem& result,
                                                std::shared_ptr<const DistributedSpace>& space) {
@@ -145,17 +151,11 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
   if (const int numParts = numPartFiles(*comm, file); numParts > 0)
     return splitGmshSpace(problem, gmsh, file, numParts, comm, result, space);
   detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
-  if (gmsh.refinements > 0)
-    return latticeSpace(problem, gmsh, file, std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh)),
-                        result, space);
   int dim = mesh ? mesh->dim : 0;
   Teuchos::broadcast(*comm, 0, 1, &dim);
-  result.definition = detail::definitionOf(problem, dim);
-  const ProblemDefinition& def = result.definition;
-  space = std::make_shared<const DistributedSpace>(comm, std::move(mesh), def.degree);
-  checkMemoryFits(static_cast<double>(def.dim) * space->numGlobalNodes(), def.dim, def.degree,
-                  !storesNoStiffness(def), def.gridRefinedAtNodes, *comm);
-  return nullptr;
+  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh),
+                                                                   finestResolution(problem, dim, gmsh));
+  return latticeSpace(problem, gmsh, file, lattice, result, space);
 }
 
 // The QP on `space`, and the grids of the geometric multigrid: a box's or a refined
