@@ -27,6 +27,7 @@
 namespace {
 
 using namespace signorini;
+using signorini::testing::gmshPressedProblem;
 
 // A unit square (2D) or cube (3D) with groups "bottom", "top" and "sides", meshed at size h, written
 // as coarse.msh and, refined by Gmsh `times` times, as fine<times>.msh, by rank 0.
@@ -75,21 +76,6 @@ std::string writeMeshes(const Comm& comm, int dim, double h) {
   return directory;
 }
 
-// The body clamped on top, pressed onto the rigid plane under it by a varying weight.
-Teuchos::ParameterList problem(int dim, const std::string& file, int refinements, int degree) {
-  Teuchos::ParameterList p("Problem");
-  p.set("mesh: type", "gmsh");
-  p.set("mesh: file", file);
-  p.set("mesh: refinements", refinements);
-  p.set("element: degree", degree);
-  p.set(dim == 2 ? "body force: y" : "body force: z", "-(1 + 8*(x - 0.5)^2)");
-  auto& top = p.sublist("Dirichlet").sublist("top");
-  for (const char* axis : {"x", "y", "z"})
-    if (dim == 3 || std::string(axis) != "z") top.set(std::string("displacement: ") + axis, "0");
-  p.sublist("Contact").set("boundary", "bottom");
-  return p;
-}
-
 int gridLevels(const GeometricGrid* grid) {
   int levels = 0;
   for (; grid; grid = grid->coarser().get()) ++levels;
@@ -109,9 +95,9 @@ TEST_P(RefinedMesh, SolvesTheProblemOfTheMeshGmshRefines) {
       if (dim == 3 && degree == 2 && refinements == 2) continue;  // the largest case adds nothing
       const std::string label = std::to_string(dim) + "D P" + std::to_string(degree) + ", " +
                                 std::to_string(refinements) + " refinement(s)";
-      const AssembledProblem refined = buildProblem(problem(dim, "coarse.msh", refinements, degree), comm, base);
+      const AssembledProblem refined = buildProblem(gmshPressedProblem(dim, "coarse.msh", degree, refinements), comm, base);
       const AssembledProblem whole =
-          buildProblem(problem(dim, "fine" + std::to_string(refinements) + ".msh", 0, degree), comm, base);
+          buildProblem(gmshPressedProblem(dim, "fine" + std::to_string(refinements) + ".msh", degree, 0), comm, base);
       EXPECT_EQ(refined.space->numGlobalNodes(), whole.space->numGlobalNodes()) << label;
       EXPECT_EQ(refined.space->numGlobalCells(), whole.space->numGlobalCells()) << label;
       EXPECT_EQ(refined.qp.d->getGlobalLength(), whole.qp.d->getGlobalLength()) << label;
@@ -143,7 +129,7 @@ TEST_P(RefinedMesh, InterpolationKeepsLinearFields) {
   auto comm = Tpetra::getDefaultComm();
   const std::string directory = writeMeshes(*comm, dim, dim == 2 ? 0.25 : 0.5);
   const std::string base = comm->getRank() == 0 ? directory : directory + "/nowhere";
-  Teuchos::ParameterList definition = problem(dim, "coarse.msh", 3, 1);
+  Teuchos::ParameterList definition = gmshPressedProblem(dim, "coarse.msh", 1, 3);
   definition.sublist("Dirichlet").remove("top");  // no prescribed DOFs: every row interpolates
   const AssembledProblem p = buildProblem(definition, comm, base);
   const CrsMatrix& Q = *assembledStiffness(p.qp, p.multigrid);
@@ -258,7 +244,7 @@ TEST(RefinedMeshInput, TooManyRefinementsAreRefusedBeforeRefining) {
   const std::string directory = writeMeshes(*comm, 3, 0.5);
   const std::string base = comm->getRank() == 0 ? directory : directory + "/nowhere";
   try {
-    buildProblem(problem(3, "coarse.msh", 9, 1), comm, base);
+    buildProblem(gmshPressedProblem(3, "coarse.msh", 1, 9), comm, base);
     FAIL() << "no error";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("mesh: refinements"), std::string::npos) << e.what();

@@ -27,10 +27,12 @@
 #include "signorini/core/Error.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "signorini/solver/InteriorPointSolver.hpp"
+#include "support/TestProblems.hpp"
 
 namespace {
 
 using namespace signorini;
+using signorini::testing::gmshPressedProblem;
 
 // A unit square (2D) or cube (3D) with groups "bottom" (y or z = 0), "top" and "body", meshed
 // at size h by rank 0 and written whole as whole.msh and in `parts` parts as split_k.msh.
@@ -68,21 +70,6 @@ std::string writeMeshes(const Comm& comm, int dim, double h, int parts) {
   return directory;
 }
 
-// The body clamped on top, pressed onto the rigid plane under it by a varying weight.
-Teuchos::ParameterList problem(int dim, const std::string& file, int degree, int refinements = 0) {
-  Teuchos::ParameterList p("Problem");
-  p.set("mesh: type", "gmsh");
-  p.set("mesh: file", file);
-  p.set("mesh: refinements", refinements);
-  p.set("element: degree", degree);
-  p.set(dim == 2 ? "body force: y" : "body force: z", "-(1 + 8*(x - 0.5)^2)");
-  auto& top = p.sublist("Dirichlet").sublist("top");
-  for (const char* axis : {"x", "y", "z"})
-    if (dim == 3 || std::string(axis) != "z") top.set(std::string("displacement: ") + axis, "0");
-  p.sublist("Contact").set("boundary", "bottom");
-  return p;
-}
-
 double optimalValue(const AssembledProblem& p) {
   const SolveResult r = InteriorPointSolver(Teuchos::ParameterList()).solve(p.qp, p.multigrid);
   EXPECT_TRUE(r.converged()) << r.message;
@@ -103,8 +90,8 @@ TEST_P(SplitMesh, GivesTheProblemOfTheWholeFile) {
     if (dim == 3 && c.degree == 3) continue;  // P3 in 3D adds time, not coverage
     const std::string label = std::to_string(dim) + "D P" + std::to_string(c.degree) + ", " +
                               std::to_string(c.refinements) + " refinement(s)";
-    const AssembledProblem split = buildProblem(problem(dim, "split.msh", c.degree, c.refinements), comm, directory);
-    const AssembledProblem whole = buildProblem(problem(dim, "whole.msh", c.degree, c.refinements), comm, directory);
+    const AssembledProblem split = buildProblem(gmshPressedProblem(dim, "split.msh", c.degree, c.refinements), comm, directory);
+    const AssembledProblem whole = buildProblem(gmshPressedProblem(dim, "whole.msh", c.degree, c.refinements), comm, directory);
     EXPECT_EQ(split.space->numGlobalNodes(), whole.space->numGlobalNodes()) << label;
     EXPECT_EQ(split.space->numGlobalCells(), whole.space->numGlobalCells()) << label;
     EXPECT_EQ(split.qp.d->getGlobalLength(), whole.qp.d->getGlobalLength()) << label;
@@ -120,7 +107,7 @@ TEST(SplitMeshInput, PartsThatDoNotMatchTheRankCountAreRefused) {
   auto comm = Tpetra::getDefaultComm();
   const std::string directory = writeMeshes(*comm, 2, 0.25, comm->getSize() + 1);
   try {
-    buildProblem(problem(2, "split.msh", 1), comm, directory);
+    buildProblem(gmshPressedProblem(2, "split.msh", 1, 0), comm, directory);
     ADD_FAILURE() << "parts for another rank count were read";
   } catch (const InputError& e) {
     const std::string message = e.what();
@@ -138,7 +125,7 @@ TEST(SplitMeshInput, AWholeMeshAmongThePartsIsRefused) {
                                  std::filesystem::copy_options::overwrite_existing);
   comm->barrier();
   try {
-    buildProblem(problem(2, "lone.msh", 1), comm, directory);
+    buildProblem(gmshPressedProblem(2, "lone.msh", 1, 0), comm, directory);
     ADD_FAILURE() << "a whole mesh was read as a part";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("not one part of a partitioned mesh"), std::string::npos) << e.what();

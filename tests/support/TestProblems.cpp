@@ -47,6 +47,20 @@ Teuchos::ParameterList contactBoxProblem(int dim, int cells) {
   return p;
 }
 
+Teuchos::ParameterList gmshPressedProblem(int dim, const std::string& file, int degree, int refinements) {
+  Teuchos::ParameterList p("Problem");
+  p.set("mesh: type", "gmsh");
+  p.set("mesh: file", file);
+  p.set("mesh: refinements", refinements);
+  p.set("element: degree", degree);
+  p.set(dim == 2 ? "body force: y" : "body force: z", "-(1 + 8*(x - 0.5)^2)");
+  auto& top = p.sublist("Dirichlet").sublist("top");
+  for (const char* axis : {"x", "y", "z"})
+    if (dim == 3 || std::string(axis) != "z") top.set(std::string("displacement: ") + axis, "0");
+  p.sublist("Contact").set("boundary", "bottom");
+  return p;
+}
+
 int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol) {
   MueLuPreconditioner amg(Teuchos::ParameterList(), multigrid.blockSize, multigrid.nearNullspace(qp),
                           multigrid.coordinates);

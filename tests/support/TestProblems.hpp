@@ -27,6 +27,10 @@ Teuchos::ParameterList boxProblem(int dim, int cells, int degree);
 // A P1 box clamped on its top face, with contact on its bottom one and no load.
 Teuchos::ParameterList contactBoxProblem(int dim, int cells);
 
+// A Gmsh mesh `file` with boundary groups "top" and "bottom": clamped on top, pressed onto
+// the rigid plane under it by a varying weight, refined `refinements` times.
+Teuchos::ParameterList gmshPressedProblem(int dim, const std::string& file, int degree, int refinements);
+
 // Solves Q x = b by CG + MueLu to a relative residual of tol; returns the iterations.
 int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol);
 
