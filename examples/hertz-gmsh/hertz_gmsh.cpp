@@ -82,7 +82,7 @@ int main(int argc, char** argv) {
     const ContactPressure recovery(*assembled.space, assembled.definition, assembled.qp.A->getRangeMap());
     const RCP<Vector> pressure = recovery.pressure(*result.lambda, *active);
     const ContactStatistics contact = contactStatistics(recovery, *pressure, *assembled.qp.A, *result.lambda,
-                                                        *active, assembled.definition.contact->obstacleDirection);
+                                                        *active, assembled.definition.contacts.front().obstacleDirection);
 
     // Hertz for the computed force.
     const double P = contact.normalForce, Estar = kYoung / (1 - kPoisson * kPoisson);

@@ -92,9 +92,9 @@ int main(int argc, char** argv) {
     const ContactPressure recovery(*assembled.space, assembled.definition, assembled.qp.A->getRangeMap());
     const RCP<Vector> pressure = recovery.pressure(*result.lambda, *active);
     const ContactStatistics contact = contactStatistics(recovery, *pressure, *assembled.qp.A, *result.lambda,
-                                                        *active, assembled.definition.contact->obstacleDirection);
+                                                        *active, assembled.definition.contacts.front().obstacleDirection);
     const ContactFields fields{recovery, *pressure, *active};
-    writeSolution(assembled, result, &fields, directory);
+    writeSolution(assembled, result, {fields}, directory);
     if (root)
       std::printf("J = %.12e; %lld active contact nodes, normal force %.6e, peak pressure %.6e\n"
                   "written: %s/solution.pvtu\n",

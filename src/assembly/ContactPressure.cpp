@@ -157,8 +157,19 @@ RCP<Vector> jacobiScaling(const CrsMatrix& M) {
 }
 
 // Without contact there are no constraints; nodal is the trivial basis.
-ContactFormulation formulationOf(const ProblemDefinition& problem) {
-  return problem.contact ? problem.contact->formulation : ContactFormulation::nodal;
+ContactFormulation formulationOf(const ProblemDefinition& problem, std::size_t pair) {
+  return pair < problem.contacts.size() ? problem.contacts[pair].formulation : ContactFormulation::nodal;
+}
+
+// 1 on the constraints of pair `pair`, 0 on the others'.
+RCP<Vector> constraintsOfPair(const DistributedSpace& ds, const ProblemDefinition& problem, std::size_t pair,
+                              const RCP<const Map>& constraintMap) {
+  auto rows = rcp(new Vector(constraintMap));
+  if (pair >= problem.contacts.size()) return rows;
+  const OwnedContactNodes contact = ownedContactNodes(ds, problem);
+  for (std::size_t k = contact.pairStart[pair]; k < contact.pairStart[pair + 1]; ++k)
+    rows->replaceGlobalValue(contact.first + k, 1.0);
+  return rows;
 }
 
 }  // namespace
@@ -168,18 +179,23 @@ struct ContactPressure::MultiplierBasis : ContactMultiplierBasis {
 };
 
 ContactPressure::ContactPressure(const FiniteElementSpace& feSpace, const ProblemDefinition& problem,
-                                 const RCP<const Map>& constraintMap)
+                                 const RCP<const Map>& constraintMap, std::size_t pair)
     : space_(feSpace),
       multipliers_(std::make_shared<MultiplierBasis>(distributedSpace(feSpace).space().basis(),
-                                                     formulationOf(problem))),
-      weightedGap_(isWeightedGap(formulationOf(problem))),
-      betweenBodies_(problem.contact && !problem.contact->masterBoundary.empty()),
+                                                     formulationOf(problem, pair))),
+      weightedGap_(isWeightedGap(formulationOf(problem, pair))),
+      betweenBodies_(pair < problem.contacts.size() && !problem.contacts[pair].masterBoundary.empty()),
       constraintMap_(constraintMap) {
   const DistributedSpace& ds = distributedSpace(feSpace);
   const LagrangeSpace& space = ds.space();
-  if (problem.contact) facets_ = space.boundaryFacets(ds.mesh().tag(problem.contact->boundary));
-
-  overlapNodeConstraint_ = overlapNodeConstraints(ds, problem);
+  if (pair < problem.contacts.size()) {
+    facets_ = space.boundaryFacets(ds.mesh().tag(problem.contacts[pair].boundary));
+    overlapNodeConstraint_ = overlapNodeConstraints(ds, problem, pair);
+  } else {
+    if (!problem.contacts.empty()) throw Error("contact pressure: the problem has no contact pair " + std::to_string(pair));
+    overlapNodeConstraint_.assign(ds.overlapSpaceNodes().size(), -1);
+  }
+  pairRows_ = constraintsOfPair(ds, problem, pair, constraintMap);
   const auto& overlapNodes = ds.overlapSpaceNodes();
   std::vector<long long> constraintOfNode(space.numNodes(), -1);
   for (std::size_t i = 0; i < overlapNodes.size(); ++i) constraintOfNode[overlapNodes[i]] = overlapNodeConstraint_[i];
@@ -195,7 +211,7 @@ ContactPressure::ContactPressure(const FiniteElementSpace& feSpace, const Proble
   const RCP<FEGraph> graph = boundaryMassGraph(space, facets_, overlapIndex_, rows, constraintMap, overlapMap_, columns);
   mass_ = boundaryMass(ds, facets_, overlapIndex_, rows, columns, graph, constraintMap->getNodeNumElements());
   scaling_ = jacobiScaling(*mass_);
-  lumpedWeights_ = contactNodeWeights(ds, problem, constraintMap);
+  lumpedWeights_ = contactNodeWeights(ds, problem, constraintMap, pair);
   scaledMass_ = rcp(new CrsMatrix(*mass_, Teuchos::Copy));
   scaledMass_->leftScale(*scaling_);
   scaledMass_->rightScale(*scaling_);
@@ -285,9 +301,10 @@ RCP<Vector> ContactPressure::pressure(const Vector& lambda, const Vector& active
 RCP<Vector> ContactPressure::lumpedPressure(const Vector& lambda, const Vector& active) const {
   if (weightedGap_) return pressure(lambda, active);
   auto p = rcp(new Vector(constraintMap_));
-  p->reciprocal(*lumpedWeights_);
-  p->elementWiseMultiply(-1.0, *p, lambda, 0.0);
-  p->elementWiseMultiply(1.0, *loadedNodes(active), *p, 0.0);
+  const RCP<const Vector> loaded = loadedNodes(active);
+  auto out = p->getDataNonConst();
+  auto l = lambda.getData(), w = lumpedWeights_->getData(), on = loaded->getData();
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = on[i] != 0 ? -l[i] / w[i] : 0.0;
   return p;
 }
 

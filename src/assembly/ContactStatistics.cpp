@@ -35,22 +35,42 @@ ContactStatistics contactStatistics(const ContactPressure& recovery, const Vecto
                                     const std::array<double, 3>& obstacleDirection) {
   ContactStatistics s;
   s.dim = recovery.dim();
+  Vector pairLambda(lambda.getMap()), pairActive(active.getMap());  // this pair's rows only
+  pairLambda.elementWiseMultiply(1.0, recovery.pairConstraints(), lambda, 0.0);
+  pairActive.elementWiseMultiply(1.0, recovery.pairConstraints(), active, 0.0);
   const RCP<Vector> slaveDofs = recovery.contactBoundaryDofs();
-  s.force = forceResultant(A, lambda, s.dim, slaveDofs.get());
+  s.force = forceResultant(A, pairLambda, s.dim, slaveDofs.get());
   if (recovery.betweenBodies()) {
     Vector masterDofs(slaveDofs->getMap());
     masterDofs.putScalar(1.0);
     masterDofs.update(-1.0, *slaveDofs, 1.0);
-    s.masterForce = forceResultant(A, lambda, s.dim, &masterDofs);
+    s.masterForce = forceResultant(A, pairLambda, s.dim, &masterDofs);
   }
   for (int c = 0; c < 3; ++c) s.normalForce += s.force[c] * obstacleDirection[c];
   double peak = -std::numeric_limits<double>::infinity();
   for (double p : pressure.getData()) peak = std::max(peak, p);
   Teuchos::reduceAll(*A.getRangeMap()->getComm(), Teuchos::REDUCE_MAX, 1, &peak, &s.peakPressure);
   if (!std::isfinite(s.peakPressure)) s.peakPressure = 0;
-  s.area = recovery.activeMeasure(active);
-  s.activeNodes = std::llround(active.norm1());
+  s.area = recovery.activeMeasure(pairActive);
+  s.activeNodes = std::llround(pairActive.norm1());
   return s;
+}
+
+ContactStatistics combinedStatistics(const std::vector<ContactStatistics>& pairs) {
+  ContactStatistics all;
+  for (const ContactStatistics& s : pairs) {
+    all.dim = s.dim;
+    for (int c = 0; c < 3; ++c) all.force[c] += s.force[c];
+    if (s.masterForce) {
+      if (!all.masterForce) all.masterForce.emplace();
+      for (int c = 0; c < 3; ++c) (*all.masterForce)[c] += (*s.masterForce)[c];
+    }
+    all.normalForce += s.normalForce;
+    all.area += s.area;
+    all.peakPressure = std::max(all.peakPressure, s.peakPressure);
+    all.activeNodes += s.activeNodes;
+  }
+  return all;
 }
 
 ContactStatistics contactStatistics(const ContactQP& qp, const MultigridInput& multigrid, const Vector& v,

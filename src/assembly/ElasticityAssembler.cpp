@@ -102,10 +102,9 @@ void eliminatePrescribed(const std::vector<char>& fixed, const std::vector<doubl
 // constraint is harmless while the prescribed displacement leaves the gap g + n_o . u_D open,
 // and contradicts the prescription where it closes or crosses it (the multiplier would move
 // a prescribed DOF). Those are refused, on every rank, with the first such node.
-void checkPrescribedContactNodes(const DistributedSpace& ds, const ProblemDefinition& problem,
-                                 const DirichletData& dirichlet, const std::vector<long long>& contactNodes) {
+void checkPrescribedContactNodes(const DistributedSpace& ds, const ContactPair& pair, const DirichletData& dirichlet,
+                                 const std::vector<long long>& contactNodes) {
   const int dim = ds.dim();
-  const ContactPair& pair = *problem.contact;
   long long closed = 0;
   GlobalOrdinal first = std::numeric_limits<GlobalOrdinal>::max();
   double where[4] = {0, 0, 0, 0};  // coordinates and gap of this rank's first closed node
@@ -149,16 +148,18 @@ struct ContactConstraints {
   RCP<Vector> d;
 };
 
-// Row i: -n_o . u(x) <= g(x) at the i-th owned contact node x, only the nonzero components of n_o.
+// Row first + i: -n_o . u(x) <= g(x) at the pair's i-th owned contact node x, only the
+// nonzero components of n_o.
 ContactConstraints nodalConstraints(const DistributedSpace& ds, const ContactPair& pair,
-                                    const OwnedContactNodes& contact, const RCP<const Map>& constraintMap) {
+                                    const OwnedContactNodes& contact, std::size_t pairIndex,
+                                    const RCP<const Map>& constraintMap) {
   const int dim = ds.dim();
   auto A = rcp(new CrsMatrix(constraintMap, dim));
   auto d = rcp(new Vector(constraintMap));
   auto dData = d->getDataNonConst();
   std::vector<GlobalOrdinal> cols(dim);
   std::vector<double> vals(dim);
-  for (std::size_t i = 0; i < contact.nodes.size(); ++i) {
+  for (std::size_t i = contact.pairStart[pairIndex]; i < contact.pairStart[pairIndex + 1]; ++i) {
     const long long node = contact.nodes[i];
     int count = 0;
     for (int c = 0; c < dim; ++c)
@@ -229,13 +230,13 @@ WeightedGapGraph weightedGapGraph(const DistributedSpace& ds, const ContactMulti
 // (every global facet is on one rank) into the rows of their nodes, owned or not, and the
 // sums go to the owners.
 ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
-                                          const RCP<const Map>& constraintMap) {
+                                          std::size_t pairIndex, const RCP<const Map>& constraintMap) {
   const LagrangeSpace& space = ds.space();
-  const ContactPair& pair = *problem.contact;
+  const ContactPair& pair = problem.contacts[pairIndex];
   const ContactMultiplierBasis psi(space.basis(), pair.formulation);
   const int dim = ds.dim(), npc = space.nodesPerCell();
   const auto facets = space.boundaryFacets(ds.mesh().tag(pair.boundary));
-  const std::vector<long long> overlapConstraint = overlapNodeConstraints(ds, problem);
+  const std::vector<long long> overlapConstraint = overlapNodeConstraints(ds, problem, pairIndex);
   std::vector<long long> constraintOf(space.numNodes(), -1);
   for (std::size_t i = 0; i < overlapConstraint.size(); ++i)
     constraintOf[ds.overlapSpaceNodes()[i]] = overlapConstraint[i];
@@ -286,16 +287,20 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
 
 }  // namespace
 
-// One constraint per contact node, numbered in the order of the renumbered nodes. Ranks own
-// contiguous node ranges in rank order, so a rank's constraints start after the contact
-// nodes of the ranks before it.
+// One constraint per contact node of each pair, numbered pair after pair on each rank and in
+// the order of the renumbered nodes within a pair. Ranks own contiguous node ranges in rank
+// order, so a rank's constraints start after the contact nodes of the ranks before it.
 OwnedContactNodes ownedContactNodes(const DistributedSpace& ds, const ProblemDefinition& problem) {
   OwnedContactNodes result;
-  if (problem.contact)
-    for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contact->boundary)))
+  result.pairStart.push_back(0);
+  for (const ContactPair& pair : problem.contacts) {
+    const auto begin = result.nodes.size();
+    for (long long node : ds.boundaryNodes(ds.mesh().tag(pair.boundary)))
       if (ds.ownsNode(node)) result.nodes.push_back(node);
-  std::sort(result.nodes.begin(), result.nodes.end(),
-            [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
+    std::sort(result.nodes.begin() + begin, result.nodes.end(),
+              [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
+    result.pairStart.push_back(result.nodes.size());
+  }
   const long long count = static_cast<long long>(result.nodes.size());
   long long upTo = 0;
   Teuchos::scan(*ds.comm(), Teuchos::REDUCE_SUM, 1, &count, &upTo);
@@ -304,11 +309,12 @@ OwnedContactNodes ownedContactNodes(const DistributedSpace& ds, const ProblemDef
   return result;
 }
 
-std::vector<long long> overlapNodeConstraints(const DistributedSpace& ds, const ProblemDefinition& problem) {
+std::vector<long long> overlapNodeConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
+                                              std::size_t pair) {
   const OwnedContactNodes contact = ownedContactNodes(ds, problem);
   // Constraint + 1 at owned nodes, 0 elsewhere (ids are exact in a double below 2^53).
   Vector owned(ds.ownedNodeMap()), overlap(ds.overlapNodeMap());
-  for (std::size_t k = 0; k < contact.nodes.size(); ++k)
+  for (std::size_t k = contact.pairStart[pair]; k < contact.pairStart[pair + 1]; ++k)
     owned.replaceGlobalValue(ds.globalNode(contact.nodes[k]), static_cast<double>(contact.first + k + 1));
   overlap.doImport(owned, Import(ds.ownedNodeMap(), ds.overlapNodeMap()), Tpetra::INSERT);
   auto values = overlap.getData();
@@ -317,18 +323,19 @@ std::vector<long long> overlapNodeConstraints(const DistributedSpace& ds, const 
   return constraint;
 }
 
-RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefinition& problem,
-                               const RCP<const Map>& constraintMap) {
+namespace {
+
+// The weights of one pair's contact nodes, on the owned node map.
+RCP<Vector> ownedNodeWeights(const DistributedSpace& ds, const ContactPair& pair) {
   const LagrangeSpace& space = ds.space();
   const int dim = ds.dim(), npc = space.nodesPerCell();
-  auto weights = rcp(new Vector(constraintMap));
-  if (!problem.contact) return weights;
-  const bool weighted = isWeightedGap(problem.contact->formulation);
-  const ContactMultiplierBasis psi(space.basis(), problem.contact->formulation);
-  Vector overlap(ds.overlapNodeMap()), owned(ds.ownedNodeMap());
+  const bool weighted = isWeightedGap(pair.formulation);
+  const ContactMultiplierBasis psi(space.basis(), pair.formulation);
+  Vector overlap(ds.overlapNodeMap());
+  auto owned = rcp(new Vector(ds.ownedNodeMap()));
   std::vector<double> coords((dim + 1) * dim), w;
   FacetQuadrature rule;
-  for (const auto& [cell, facet] : space.boundaryFacets(ds.mesh().tag(problem.contact->boundary))) {
+  for (const auto& [cell, facet] : space.boundaryFacets(ds.mesh().tag(pair.boundary))) {
     ds.mesh().cellVertexCoordinates(cell, coords.data());
     if (weighted) {  // the integrals of psi
       facetQuadrature(space.basis(), coords.data(), facet, space.degree(), rule);
@@ -342,17 +349,28 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
     for (int a = 0; a < npc; ++a)
       if (w[a] != 0.0) overlap.sumIntoGlobalValue(ds.globalNode(nodes[a]), w[a]);
   }
-  owned.doExport(overlap, Export(ds.overlapNodeMap(), ds.ownedNodeMap()), Tpetra::ADD);
-  // Constraint first + k belongs to the k-th owned contact node.
+  owned->doExport(overlap, Export(ds.overlapNodeMap(), ds.ownedNodeMap()), Tpetra::ADD);
+  return owned;
+}
+
+}  // namespace
+
+RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefinition& problem,
+                               const RCP<const Map>& constraintMap, std::optional<std::size_t> onlyPair) {
+  auto weights = rcp(new Vector(constraintMap));
   const OwnedContactNodes contact = ownedContactNodes(ds, problem);
+  if (static_cast<long long>(constraintMap->getNodeNumElements()) != static_cast<long long>(contact.nodes.size()) ||
+      (!contact.nodes.empty() && constraintMap->getMinGlobalIndex() != contact.first))
+    throw Error("contact weights: the constraint map is not distributed like the contact nodes");
+  // Constraint first + k belongs to the k-th owned contact node.
   auto out = weights->getDataNonConst();
-  auto in = owned.getData();
-  for (std::size_t i = 0; i < constraintMap->getNodeNumElements(); ++i) {
-    const long long k = constraintMap->getGlobalElement(i) - contact.first;
-    if (k < 0 || k >= static_cast<long long>(contact.nodes.size()))
-      throw Error("contact weights: the constraint map is not distributed like the contact nodes");
-    const long long node = contact.nodes[k];
-    out[i] = in[ds.ownedNodeMap()->getLocalElement(ds.globalNode(node))];
+  for (std::size_t p = 0; p < problem.contacts.size(); ++p) {
+    if (onlyPair && *onlyPair != p) continue;
+    const RCP<const Vector> owned = ownedNodeWeights(ds, problem.contacts[p]);
+    auto in = owned->getData();
+    for (std::size_t k = contact.pairStart[p]; k < contact.pairStart[p + 1]; ++k)
+      out[constraintMap->getLocalElement(contact.first + k)] =
+          in[ds.ownedNodeMap()->getLocalElement(ds.globalNode(contact.nodes[k]))];
   }
   return weights;
 }
@@ -519,9 +537,47 @@ RCP<Vector> prescribeOnOwners(const DistributedSpace& ds, const DirichletData& d
   return b;
 }
 
-// One constraint per contact node, in the formulation the problem asks for, against the
+// The rows of several pairs' constraints, each on the whole constraint map with only its own
+// rows filled, in one matrix and one vector.
+ContactConstraints stackedRows(const std::vector<ContactConstraints>& pairs, const DistributedSpace& ds,
+                               const RCP<const Map>& constraintMap) {
+  std::size_t widest = 0;
+  for (const ContactConstraints& pair : pairs) widest = std::max(widest, pair.A->getNodeMaxNumRowEntries());
+  ContactConstraints all{rcp(new CrsMatrix(constraintMap, widest)), rcp(new Vector(constraintMap))};
+  std::vector<GlobalOrdinal> cols(widest);
+  std::vector<double> vals(widest);
+  for (const ContactConstraints& pair : pairs) {
+    all.d->update(1.0, *pair.d, 1.0);
+    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(constraintMap->getNodeNumElements()); ++i) {
+      const GlobalOrdinal row = constraintMap->getGlobalElement(i);
+      std::size_t count = 0;
+      pair.A->getGlobalRowCopy(row, cols, vals, count);
+      if (count > 0) all.A->insertGlobalValues(row, count, vals.data(), cols.data());
+    }
+  }
+  all.A->fillComplete(ds.ownedDofMap(), constraintMap);
+  return all;
+}
+
+// One pair's constraints, one per contact node, in the formulation it asks for, against the
 // rigid obstacle (contact nodes whose displacement towards it is prescribed into contact are
 // refused) or the master boundary of another body.
+ContactConstraints pairConstraints(const DistributedSpace& ds, const ProblemDefinition& problem, std::size_t p,
+                                   const DirichletData& dirichlet, const OwnedContactNodes& contact,
+                                   const RCP<const Map>& constraintMap) {
+  const ContactPair& pair = problem.contacts[p];
+  if (!pair.masterBoundary.empty()) {
+    const MortarRows rows = mortarConstraints(ds, pair, overlapNodeConstraints(ds, problem, p), constraintMap);
+    return {rows.A, rows.d};
+  }
+  checkPrescribedContactNodes(
+      ds, pair, dirichlet,
+      std::vector<long long>(contact.nodes.begin() + contact.pairStart[p], contact.nodes.begin() + contact.pairStart[p + 1]));
+  return isWeightedGap(pair.formulation) ? weightedGapConstraints(ds, problem, p, constraintMap)
+                                         : nodalConstraints(ds, pair, contact, p, constraintMap);
+}
+
+// Every pair's constraints, pair after pair on each rank (ownedContactNodes).
 ContactConstraints contactConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
                                       const DirichletData& dirichlet) {
   const OwnedContactNodes contact = ownedContactNodes(ds, problem);
@@ -529,19 +585,15 @@ ContactConstraints contactConstraints(const DistributedSpace& ds, const ProblemD
   for (std::size_t k = 0; k < ownedConstraints.size(); ++k) ownedConstraints[k] = contact.first + k;
   auto constraintMap = rcp(new Map(contact.numGlobal, Teuchos::ArrayView<const GlobalOrdinal>(ownedConstraints),
                                    0, ds.comm()));
-  if (!problem.contact) {  // no rows
+  if (problem.contacts.empty()) {  // no rows
     auto A = rcp(new CrsMatrix(constraintMap, 0));
     A->fillComplete(ds.ownedDofMap(), constraintMap);
     return {A, rcp(new Vector(constraintMap))};
   }
-  if (!problem.contact->masterBoundary.empty()) {
-    const MortarRows rows = mortarConstraints(ds, problem, overlapNodeConstraints(ds, problem), constraintMap);
-    return {rows.A, rows.d};
-  }
-  checkPrescribedContactNodes(ds, problem, dirichlet, contact.nodes);
-  return isWeightedGap(problem.contact->formulation)
-             ? weightedGapConstraints(ds, problem, constraintMap)
-             : nodalConstraints(ds, *problem.contact, contact, constraintMap);
+  std::vector<ContactConstraints> pairs;
+  for (std::size_t p = 0; p < problem.contacts.size(); ++p)
+    pairs.push_back(pairConstraints(ds, problem, p, dirichlet, contact, constraintMap));
+  return pairs.size() == 1 ? pairs.front() : stackedRows(pairs, ds, constraintMap);
 }
 
 RCP<MultiVector> ownedNodeCoordinates(const DistributedSpace& ds) {

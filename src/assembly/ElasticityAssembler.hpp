@@ -4,6 +4,7 @@
 // the DOFs), loads b, contact constraints A v <= d (ProblemDefinition's ContactFormulation:
 // one row per contact node: -n_o . u(p) <= g(p), or its weighted gap, see
 // ContactMultiplierBasis), rigid body modes and node coordinates.
+#include <optional>
 #include <vector>
 
 #include "assembly/DistributedSpace.hpp"
@@ -41,23 +42,29 @@ RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const std::shared_ptr<cons
                                                       const ProblemDefinition& problem);
 
 // The contact nodes this rank owns, as space node ids in constraint order: row first + k of
-// A is node nodes[k]. Constraints follow the renumbered nodes, so each rank owns the
-// contiguous range [first, first + nodes.size()) of the numGlobal constraints. Collective.
+// A is node nodes[k]. Each rank holds its nodes of every pair, pair after pair (those of pair
+// p are nodes[pairStart[p] .. pairStart[p + 1])), each pair's in the order of the renumbered
+// nodes, so each rank owns the contiguous range [first, first + nodes.size()) of the
+// numGlobal constraints. A node on the contact boundaries of two pairs has a row in each.
+// Collective.
 struct OwnedContactNodes {
   GlobalOrdinal first = 0;
   long long numGlobal = 0;
   std::vector<long long> nodes;
+  std::vector<std::size_t> pairStart;  ///< one more than there are pairs
 };
 OwnedContactNodes ownedContactNodes(const DistributedSpace& space, const ProblemDefinition& problem);
 
-// The constraint (row of A) of each overlap node, in overlapSpaceNodes() order; -1 for a node
-// off the contact boundary. Ghosts learn theirs from their owners. Collective.
-std::vector<long long> overlapNodeConstraints(const DistributedSpace& space, const ProblemDefinition& problem);
+// The constraint (row of A) of pair `pair` at each overlap node, in overlapSpaceNodes() order;
+// -1 for a node off its contact boundary. Ghosts learn theirs from their owners. Collective.
+std::vector<long long> overlapNodeConstraints(const DistributedSpace& space, const ProblemDefinition& problem,
+                                              std::size_t pair);
 
 // The contact boundary's measure lumped to the contact nodes, on A's range map: HRZ lumping
 // of the P_k basis for nodal constraints (positive for every degree), the integral of the
 // multiplier function psi for weighted gaps. Each node stands for this much of Gamma_c.
+// Every pair's, or only those of `onlyPair` (0 on the other rows).
 RCP<Vector> contactNodeWeights(const DistributedSpace& space, const ProblemDefinition& problem,
-                               const RCP<const Map>& constraintMap);
+                               const RCP<const Map>& constraintMap, std::optional<std::size_t> onlyPair = std::nullopt);
 
 }  // namespace signorini

@@ -210,9 +210,8 @@ void checkPair(const DistributedSpace& ds, const ContactPair& pair) {
 
 }  // namespace
 
-MortarRows mortarConstraints(const DistributedSpace& ds, const ProblemDefinition& problem,
+MortarRows mortarConstraints(const DistributedSpace& ds, const ContactPair& pair,
                              const std::vector<long long>& constraintOf, const RCP<const Map>& constraintMap) {
-  const ContactPair& pair = *problem.contact;
   checkPair(ds, pair);
   const LocalFacets slave = boundaryFacets(ds, ds.mesh().tag(pair.boundary));
   const LocalFacets master = boundaryFacets(ds, ds.mesh().tag(pair.masterBoundary));

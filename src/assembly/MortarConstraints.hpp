@@ -29,12 +29,12 @@ struct MortarRows {
   RCP<Vector> d;
 };
 
-// constraintOf: the constraint of each overlap node (overlapNodeConstraints), -1 off the slave
-// boundary. Throws InputError for a pair it cannot pose: the same boundary on both sides or
-// on one body, a formulation it does not support, slave facets that no master facet covers,
-// bodies that overlap at the start (ContactPair::initialOverlapTolerance).
-// Collective.
-MortarRows mortarConstraints(const DistributedSpace& space, const ProblemDefinition& problem,
+// The rows of `pair` (the other rows of constraintMap empty). constraintOf: the pair's
+// constraint of each overlap node (overlapNodeConstraints), -1 off the slave boundary. Throws
+// InputError for a pair it cannot pose: the same boundary on both sides or on one body, a
+// formulation it does not support, slave facets that no master facet covers, bodies that
+// overlap at the start (ContactPair::initialOverlapTolerance). Collective.
+MortarRows mortarConstraints(const DistributedSpace& space, const ContactPair& pair,
                              const std::vector<long long>& constraintOf, const RCP<const Map>& constraintMap);
 
 }  // namespace signorini

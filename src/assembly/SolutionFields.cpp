@@ -57,16 +57,17 @@ std::vector<double> cellVonMises(const DistributedSpace& ds, const CellBodies& b
   return mises;
 }
 
-// (d - A v)_j / integral psi_j at the overlap nodes of the constraints, 0 elsewhere.
-std::vector<double> weightedGaps(const DistributedSpace& ds, const ProblemDefinition& problem, const CrsMatrix& A,
-                                 const Vector& d, const Vector& v) {
+// (d - A v)_j / integral psi_j at the overlap nodes of pair `pair`'s constraints, 0 elsewhere.
+std::vector<double> weightedGaps(const DistributedSpace& ds, const ProblemDefinition& problem, std::size_t pair,
+                                 const CrsMatrix& A, const Vector& d, const Vector& v) {
   Vector slack(A.getRangeMap());
   A.apply(v, slack);
   slack.update(1.0, d, -1.0);
-  Vector inverseWeights(A.getRangeMap());
-  inverseWeights.reciprocal(*contactNodeWeights(ds, problem, A.getRangeMap()));
-  slack.elementWiseMultiply(1.0, slack, inverseWeights, 0.0);
-  const std::vector<long long> constraintOf = overlapNodeConstraints(ds, problem);
+  const RCP<const Vector> weights = contactNodeWeights(ds, problem, A.getRangeMap(), pair);
+  auto sd = slack.getDataNonConst();
+  auto wd = weights->getData();
+  for (std::size_t i = 0; i < sd.size(); ++i) sd[i] = wd[i] != 0 ? sd[i] / wd[i] : 0.0;
+  const std::vector<long long> constraintOf = overlapNodeConstraints(ds, problem, pair);
   std::vector<GlobalOrdinal> ids;
   for (long long k : constraintOf)
     if (k >= 0) ids.push_back(k);
@@ -97,12 +98,18 @@ SolutionFields solutionFields(const DistributedSpace& ds, const ProblemDefinitio
   auto ud = u.getData();
   auto fd = forceHere.getData();
   fields.displacement.assign(ud.begin(), ud.end());
-  std::vector<char> onContact(ds.space().numNodes(), 0);
-  const std::array<double, 3> n = problem.contact ? problem.contact->obstacleDirection : std::array<double, 3>{};
-  const bool pair = problem.contact && !problem.contact->masterBoundary.empty();  // its gap from A, d
-  if (problem.contact && !pair)
-    for (long long node : ds.boundaryNodes(ds.mesh().tag(problem.contact->boundary))) onContact[node] = 1;
+  // The pair of each node: the first whose contact (or master) boundary holds it; its obstacle
+  // direction is the node's normal, and a rigid obstacle's gap function gives its gap.
+  const auto& pairs = problem.contacts;
+  std::vector<int> pairOf(ds.space().numNodes(), -1);
+  for (std::size_t p = pairs.size(); p-- > 0;)
+    for (const std::string& side : {pairs[p].boundary, pairs[p].masterBoundary})
+      if (!side.empty())
+        for (long long node : ds.boundaryNodes(ds.mesh().tag(side))) pairOf[node] = static_cast<int>(p);
+  fields.gap.assign(overlap.size(), 0.0);
   for (std::size_t i = 0; i < overlap.size(); ++i) {
+    const int p = pairOf[overlap[i]];
+    const std::array<double, 3> n = p < 0 ? std::array<double, 3>{} : pairs[p].obstacleDirection;
     double normalForce = 0, normalDisplacement = 0;
     for (int c = 0; c < dim; ++c) {
       normalForce += fd[dim * i + c] * n[c];
@@ -110,9 +117,14 @@ SolutionFields solutionFields(const DistributedSpace& ds, const ProblemDefinitio
     }
     fields.normalContactForce.push_back(normalForce);
     const double* x = &ds.space().nodeCoordinates()[dim * overlap[i]];
-    fields.gap.push_back(onContact[overlap[i]] ? problem.contact->gap(x, dim) + normalDisplacement : 0.0);
+    if (p >= 0 && pairs[p].masterBoundary.empty()) fields.gap[i] = pairs[p].gap(x, dim) + normalDisplacement;
   }
-  if (pair) fields.gap = weightedGaps(ds, problem, A, d, v);
+  for (std::size_t p = 0; p < pairs.size(); ++p) {  // between bodies: from A and d
+    if (pairs[p].masterBoundary.empty()) continue;
+    const std::vector<double> gaps = weightedGaps(ds, problem, p, A, d, v);
+    for (std::size_t i = 0; i < overlap.size(); ++i)
+      if (pairOf[overlap[i]] == static_cast<int>(p)) fields.gap[i] = gaps[i];
+  }
   fields.vonMisesStress = cellVonMises(ds, CellBodies(ds.mesh(), problem), u);
   return fields;
 }

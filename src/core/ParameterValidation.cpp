@@ -55,7 +55,8 @@ void validateInto(const Teuchos::ParameterList& user, Teuchos::ParameterList& me
     const Teuchos::ParameterEntry& entry = user.entry(it);
     const std::string where = join(path, name);
 
-    if (anyName) {
+    // A list with a template takes a sublist of any other name than its own entries'.
+    if (anyName && !merged.isParameter(name) && (entry.isList() || merged.numParams() == 0)) {
       if (!entry.isList())
         throw InputError(where + ": expected a sublist (one per named item)");
       Teuchos::ParameterList sub = templ;

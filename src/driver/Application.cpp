@@ -2,11 +2,13 @@
 
 #include <sys/resource.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <system_error>
@@ -117,8 +119,8 @@ Teuchos::ParameterEntry parseLike(const Teuchos::ParameterEntry* model, const st
   return entry;
 }
 
-void logContact(const ContactStatistics& c, std::ostream& out) {
-  out << "Contact: force (";
+void logContact(const ContactStatistics& c, std::ostream& out, const std::string& label = "Contact") {
+  out << label << ": force (";
   for (int i = 0; i < c.dim; ++i) out << (i ? ", " : "") << c.force[i];
   out << ")";
   if (c.masterForce) {
@@ -172,13 +174,15 @@ void writeDocumented(const Teuchos::ParameterList& list, const std::string& name
       out << indent << "  <!-- " << (isExpert(entry) ? kExpert : "") << commentText(entry.docString()) << " -->\n";
     if (key == kAnyNameSublist) {
       // A template for user-named sublists: shown commented out, not a parameter. They are
-      // named after bodies in "Bodies", after boundaries elsewhere.
-      const std::string named = name == "Bodies" ? "body" : "boundary";
+      // named after bodies in "Bodies", as the user likes in "Contact" (pairs), after
+      // boundaries elsewhere.
+      const std::string named = name == "Bodies" ? "body" : name == "Contact" ? "pair" : "boundary";
+      std::string placeholder = named + " name";
+      for (char& c : placeholder) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
       std::ostringstream templ;
-      writeDocumented(Teuchos::getValue<Teuchos::ParameterList>(entry), named == "body" ? "BODY NAME" : "BOUNDARY NAME",
-                      depth + 1, all, templ);
-      out << indent << "  <!-- one sublist per " << named << ", named after it:\n" << commentText(templ.str()) << indent
-          << "  -->\n";
+      writeDocumented(Teuchos::getValue<Teuchos::ParameterList>(entry), placeholder, depth + 1, all, templ);
+      out << indent << "  <!-- one sublist per " << named << (named == "pair" ? ", named as you like" : ", named after it")
+          << ":\n" << commentText(templ.str()) << indent << "  -->\n";
     } else if (entry.isList()) {
       writeDocumented(Teuchos::getValue<Teuchos::ParameterList>(entry), key, depth + 1, all, out);
     } else {
@@ -294,32 +298,48 @@ bool isFinite(const SolveResult& result) {
          std::isfinite(result.lambda->norm1());
 }
 
-// The recovered contact pressure and its statistics (logged), contact.csv and the solution
-// files, as Output asks; returns the statistics (none without contact). Collective.
-std::optional<ContactStatistics> writeSolutionOutputs(const AssembledProblem& problem, const SolveResult& result,
-                                                      const Teuchos::ParameterList& output,
-                                                      const std::string& directory, std::ostream& out) {
+// Each contact pair's recovered pressure and statistics (logged when there are several; the
+// totals always), contact.csv and the solution files, as Output asks; the statistics go into
+// `summary` (none without contact). Collective.
+void writeSolutionOutputs(const AssembledProblem& problem, const SolveResult& result,
+                          const Teuchos::ParameterList& output, const std::string& directory, std::ostream& out,
+                          RunSummary& summary) {
   const ProblemDefinition& def = problem.definition;
   const Comm& comm = *problem.qp.b->getMap()->getComm();
   const RCP<const Vector> active = activeIndicator(problem.qp, *result.v, *result.lambda);
   const bool writeSolutionFiles = output.get<bool>("write solution");
   if (problem.qp.d->getGlobalLength() == 0) {
-    if (writeSolutionFiles) writeSolution(problem, result, nullptr, directory);
-    return std::nullopt;
+    if (writeSolutionFiles) writeSolution(problem, result, {}, directory);
+    return;
   }
-  const ContactPressure recovery(*problem.space, def, problem.qp.A->getRangeMap());
-  const RCP<Vector> pressure =
-      recovery.recover(choice<PressureRecovery>(output, "contact pressure"), *result.lambda, *active);
-  const ContactStatistics contact =
-      contactStatistics(recovery, *pressure, *problem.qp.A, *result.lambda, *active, def.contact->obstacleDirection);
-  if (comm.getRank() == 0) logContact(contact, out);
-  if (output.get<bool>("write contact samples"))
-    writeContactSamples(recovery.samples(*pressure), comm, directory + "/contact.csv");
-  if (writeSolutionFiles) {
-    const ContactFields fields{recovery, *pressure, *active};
-    writeSolution(problem, result, &fields, directory);
+  std::vector<std::unique_ptr<ContactPressure>> recoveries;
+  std::vector<RCP<Vector>> pressures;
+  std::vector<ContactFields> fields;
+  std::vector<ContactStatistics> statistics;
+  ContactPressureSamples samples;
+  for (std::size_t p = 0; p < def.contacts.size(); ++p) {
+    const ContactPair& pair = def.contacts[p];
+    recoveries.push_back(std::make_unique<ContactPressure>(*problem.space, def, problem.qp.A->getRangeMap(), p));
+    const ContactPressure& recovery = *recoveries.back();
+    pressures.push_back(recovery.recover(choice<PressureRecovery>(output, "contact pressure"), *result.lambda, *active));
+    fields.push_back({recovery, *pressures.back(), *active});
+    statistics.push_back(
+        contactStatistics(recovery, *pressures.back(), *problem.qp.A, *result.lambda, *active, pair.obstacleDirection));
+    summary.contactPairs.push_back({pair.name, pair.boundary, pair.masterBoundary, statistics.back()});
+    if (comm.getRank() == 0 && def.contacts.size() > 1)
+      logContact(statistics.back(), out, "Contact pair \"" + pair.name + "\"");
+    if (output.get<bool>("write contact samples")) {
+      const ContactPressureSamples s = recovery.samples(*pressures.back());
+      samples.dim = s.dim;
+      samples.points.insert(samples.points.end(), s.points.begin(), s.points.end());
+      samples.weights.insert(samples.weights.end(), s.weights.begin(), s.weights.end());
+      samples.pressures.insert(samples.pressures.end(), s.pressures.begin(), s.pressures.end());
+    }
   }
-  return contact;
+  summary.contact = combinedStatistics(statistics);
+  if (comm.getRank() == 0) logContact(*summary.contact, out, def.contacts.size() > 1 ? "Contact, all pairs" : "Contact");
+  if (output.get<bool>("write contact samples")) writeContactSamples(samples, comm, directory + "/contact.csv");
+  if (writeSolutionFiles) writeSolution(problem, result, fields, directory);
 }
 
 }  // namespace
@@ -480,7 +500,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: output"));
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::output);
     if (finite)
-      summary.contact = writeSolutionOutputs(problem, result, output, directory, out);
+      writeSolutionOutputs(problem, result, output, directory, out, summary);
     else if (root)
       out << "Solution not written: the solve ended in non-finite numbers (" << toString(result.status) << ")\n";
     total.stop();

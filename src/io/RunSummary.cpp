@@ -40,6 +40,22 @@ std::string kktJson(double stationarity, double complementarity, double primal, 
          ", \"primal_feasibility\": " + number(primal) + ", \"dual_feasibility\": " + number(dual) + "}";
 }
 
+// The members of a "contact" object: forces, normal force, area (length in 2D), peak pressure,
+// active nodes.
+std::string contactJson(const ContactStatistics& c) {
+  std::ostringstream j;
+  j << "\"force\": [";
+  for (int i = 0; i < c.dim; ++i) j << (i ? ", " : "") << number(c.force[i]);
+  if (c.masterForce) {
+    j << "], \"master_force\": [";
+    for (int i = 0; i < c.dim; ++i) j << (i ? ", " : "") << number((*c.masterForce)[i]);
+  }
+  j << "], \"normal_force\": " << number(c.normalForce) << ", \"" << (c.dim == 2 ? "length" : "area")
+    << "\": " << number(c.area) << ", \"peak_pressure\": " << number(c.peakPressure)
+    << ", \"active_nodes\": " << c.activeNodes;
+  return j.str();
+}
+
 }  // namespace
 
 void writeSummaryJson(const RunSummary& s, const std::string& path) {
@@ -81,16 +97,13 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
   for (std::size_t i = 0; i < inner.size(); ++i) j << (i ? ", " : "") << inner[i];
   j << "],\n";
   if (s.contact) {
-    const ContactStatistics& c = *s.contact;
-    j << "  \"contact\": {\"force\": [";
-    for (int i = 0; i < c.dim; ++i) j << (i ? ", " : "") << number(c.force[i]);
-    if (c.masterForce) {
-      j << "], \"master_force\": [";
-      for (int i = 0; i < c.dim; ++i) j << (i ? ", " : "") << number((*c.masterForce)[i]);
+    j << "  \"contact\": {" << contactJson(*s.contact) << ", \"pairs\": [";
+    for (std::size_t p = 0; p < s.contactPairs.size(); ++p) {
+      const auto& pair = s.contactPairs[p];
+      j << (p ? ", " : "") << "{\"name\": " << quoted(pair.name) << ", \"boundary\": " << quoted(pair.boundary)
+        << ", \"master_boundary\": " << quoted(pair.masterBoundary) << ", " << contactJson(pair.statistics) << "}";
     }
-    j << "], \"normal_force\": " << number(c.normalForce) << ", \"" << (c.dim == 2 ? "length" : "area")
-      << "\": " << number(c.area) << ", \"peak_pressure\": " << number(c.peakPressure)
-      << ", \"active_nodes\": " << c.activeNodes << "},\n";
+    j << "]},\n";
   }
   j << "  \"memory_mib\": {\"max_rank\": " << number(s.peakMemoryMiBMaxRank)
     << ", \"all_ranks\": " << number(s.peakMemoryMiBAllRanks) << "},\n"

@@ -25,7 +25,12 @@ struct RunSummary {
   // the growth of its peak resident set over that phase.
   double serialMeshMiB = 0, serialMeshPeakMiB = 0;
   std::vector<double> setupPeakMiBPerRank;  // every rank's peak growth over mesh and space
-  std::optional<ContactStatistics> contact;  // when the problem has a contact boundary
+  std::optional<ContactStatistics> contact;  // when the problem has a contact boundary: all pairs'
+  struct ContactPairStatistics {
+    std::string name, boundary, masterBoundary;
+    ContactStatistics statistics;
+  };
+  std::vector<ContactPairStatistics> contactPairs;  // each pair's, with a mesh
 };
 
 void writeSummaryJson(const RunSummary& summary, const std::string& path);

@@ -1,5 +1,6 @@
 #include "signorini/io/SolutionOutput.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <vector>
 
@@ -16,7 +17,7 @@
 
 namespace signorini {
 
-void writeSolution(const AssembledProblem& p, const SolveResult& r, const ContactFields* contact,
+void writeSolution(const AssembledProblem& p, const SolveResult& r, const std::vector<ContactFields>& contact,
                    const std::string& directory) {
   const DistributedSpace& ds = distributedSpace(*p.space);
   const SolutionFields fields = solutionFields(ds, p.definition, *p.qp.A, *p.qp.d, *r.v, *r.lambda);
@@ -25,9 +26,13 @@ void writeSolution(const AssembledProblem& p, const SolveResult& r, const Contac
       force{"contact force", 1, fields.normalContactForce}, gap{"gap", 1, fields.gap},
       pressure{"contact pressure", 1, std::vector<double>(nodes, 0.0)},
       active{"active", 1, std::vector<double>(nodes, 0.0)};
-  if (contact) {
-    pressure.values = contact->recovery.overlapNodeValues(contact->pressure);
-    active.values = contact->recovery.overlapNodeValues(contact->active);
+  for (const ContactFields& pair : contact) {  // a node on two pairs' boundaries: the sum, active in either
+    const std::vector<double> p = pair.recovery.overlapNodeValues(pair.pressure),
+                              a = pair.recovery.overlapNodeValues(pair.active);
+    for (std::size_t i = 0; i < nodes; ++i) {
+      pressure.values[i] += p[i];
+      active.values[i] = std::max(active.values[i], a[i]);
+    }
   }
   CellField mises{"von Mises stress", 1, fields.vonMisesStress},
       rank{"rank", 1, std::vector<double>(fields.vonMisesStress.size(), ds.comm()->getRank())};

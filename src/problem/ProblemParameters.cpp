@@ -107,6 +107,17 @@ void addContactParameters(ParameterList& contact) {
               choices({"auto", "nodal", "weighted gap", "dual mortar"}));
 }
 
+// Problem/Contact: the parameters of one pair, and the template of a pair's sublist.
+void addContactPairs(ParameterList& problem) {
+  ParameterList& contact = problem.sublist(
+      "Contact", false,
+      "Frictionless contact of a boundary with a rigid obstacle or with another body's surface: one pair given "
+      "by the parameters here, or several, one sublist per pair (named as the user likes) with the same "
+      "parameters; then the parameters here keep their defaults");
+  addContactParameters(contact);
+  addContactParameters(contact.sublist(kAnyNameSublist));
+}
+
 }  // namespace
 
 ParameterList validProblemParameters() {
@@ -186,7 +197,7 @@ ParameterList validProblemParameters() {
     body.set(std::string("body force: ") + axis, "",
              std::string("Body force component ") + axis + " (expression); empty: the Problem's");
 
-  addContactParameters(p.sublist("Contact", false, "Frictionless contact with a rigid obstacle"));
+  addContactPairs(p);
   return p;
 }
 
@@ -211,22 +222,22 @@ void readBoxSize(const ParameterList& p, ProblemDefinition& def) {
   }
 }
 
-// The contact boundary, the obstacle's direction and gap, and the constraints' formulation.
-void readContact(const ParameterList& contact, ProblemDefinition& def) {
+// The contact boundary, the obstacle's direction and gap, and the constraints' formulation of
+// the pair `contact` (path: its place in the parameter lists, for messages).
+ContactPair readContactPair(const ParameterList& contact, const std::string& path, const ProblemDefinition& def) {
   const int dim = def.dim;
   const std::string boundary = contact.get<std::string>("boundary");
-  if (boundary.empty()) return;
   auto direction = contact.get<Array<double>>("obstacle: direction");
   if (direction.empty()) {
     direction.assign(dim, 0.0);
     direction[dim - 1] = 1.0;
   }
   if (static_cast<int>(direction.size()) != dim)
-    throw InputError("Problem/Contact/obstacle: direction: give " + std::to_string(dim) + " values");
+    throw InputError(path + "obstacle: direction: give " + std::to_string(dim) + " values");
   double norm = 0;
   for (double c : direction) norm += c * c;
   norm = std::sqrt(norm);
-  if (!(norm > 0)) throw InputError("Problem/Contact/obstacle: direction: must not be zero");
+  if (!(norm > 0)) throw InputError(path + "obstacle: direction: must not be zero");
   std::array<double, 3> unit{{0.0, 0.0, 0.0}};
   for (int i = 0; i < dim; ++i) unit[i] = direction[i] / norm;
 
@@ -241,7 +252,7 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
   } else if (type == "paraboloid") {
     auto center = contact.get<Array<double>>("gap: center");
     if (static_cast<int>(center.size()) != dim)
-      throw InputError("Problem/Contact/gap: center: give " + std::to_string(dim) + " values");
+      throw InputError(path + "gap: center: give " + std::to_string(dim) + " values");
     text = formatGap(g0, center, contact.get<double>("gap: radius"), dim);
   } else {
     text = contact.get<std::string>("gap: expression");
@@ -249,11 +260,43 @@ void readContact(const ParameterList& contact, ProblemDefinition& def) {
   const std::string formulation = contact.get<std::string>("formulation");
   const std::string master = contact.get<std::string>("master boundary");
   const bool dual = formulation == "dual mortar" || (formulation == "auto" && (def.degree > 1 || !master.empty()));
-  def.contact = ContactPair{boundary, master, unit, Expression(text, "Problem/Contact/gap"),
-                            formulation == "weighted gap" ? ContactFormulation::weightedGap
-                            : dual                        ? ContactFormulation::dualMortar
-                                                          : ContactFormulation::nodal,
-                            contact.get<double>("initial overlap: tolerance")};
+  return ContactPair{contact.name(), boundary, master, unit, Expression(text, path + "gap"),
+                     formulation == "weighted gap" ? ContactFormulation::weightedGap
+                     : dual                        ? ContactFormulation::dualMortar
+                                                   : ContactFormulation::nodal,
+                     contact.get<double>("initial overlap: tolerance")};
+}
+
+// The pair given in Problem/Contact itself (its boundary named), or one per sublist, in the
+// order given; a pair's parameters are read from one place only.
+std::vector<ContactPair> readContactPairs(const ParameterList& contact, const ProblemDefinition& def) {
+  std::vector<ContactPair> pairs;
+  ParameterList defaults;
+  addContactParameters(defaults);
+  for (auto it = contact.begin(); it != contact.end(); ++it) {
+    const std::string& name = contact.name(it);
+    if (!contact.isSublist(name)) continue;
+    ContactPair pair = readContactPair(contact.sublist(name), "Problem/Contact/" + name + "/", def);
+    if (pair.boundary.empty()) throw InputError("Problem/Contact/" + name + "/boundary: name the pair's contact boundary");
+    pairs.push_back(std::move(pair));
+  }
+  if (!pairs.empty()) {
+    for (auto it = defaults.begin(); it != defaults.end(); ++it)
+      if (!(contact.getEntry(defaults.name(it)).getAny(false) == defaults.entry(it).getAny(false)))
+        throw InputError("Problem/Contact/" + defaults.name(it) +
+                         ": with one sublist per contact pair, give it in the pairs' sublists");
+    for (std::size_t i = 0; i < pairs.size(); ++i)
+      for (std::size_t j = 0; j < i; ++j)
+        if (pairs[i].boundary == pairs[j].boundary)
+          throw InputError("Problem/Contact: the pairs \"" + pairs[j].name + "\" and \"" + pairs[i].name +
+                           "\" have the same contact boundary \"" + pairs[i].boundary + "\"");
+    return pairs;
+  }
+  if (!contact.get<std::string>("boundary").empty()) {
+    pairs.push_back(readContactPair(contact, "Problem/Contact/", def));
+    pairs.back().name.clear();
+  }
+  return pairs;
 }
 
 }  // namespace
@@ -306,7 +349,7 @@ ProblemDefinition detail::definitionOf(const ParameterList& p, int meshDim) {
   def.dirichlet = boundaryFields(p, "Dirichlet", "displacement: ", dim);
   def.traction = boundaryFields(p, "Traction", "traction: ", dim);
 
-  readContact(p.sublist("Contact"), def);
+  def.contacts = readContactPairs(p.sublist("Contact"), def);
   return def;
 }
 

@@ -55,7 +55,7 @@ TEST(ContactPressure, RecoversAUniformPressureToRoundOff) {
       EXPECT_LT(expected.normInf(), 1e-12) << "dim " << dim << " P" << degree;
 
       const ContactStatistics stats = contactStatistics(recovery, *pressure, *p.qp.A, *face.lambda, *face.everyNode,
-                                                        p.definition.contact->obstacleDirection);
+                                                        p.definition.contacts.front().obstacleDirection);
       EXPECT_NEAR(stats.normalForce, 2.5, 1e-12) << "dim " << dim << " P" << degree;  // face of measure 1
       EXPECT_NEAR(stats.area, 1.0, 1e-12) << "dim " << dim << " P" << degree;
       EXPECT_NEAR(stats.peakPressure, 2.5, 1e-12) << "dim " << dim << " P" << degree;

@@ -13,7 +13,9 @@
 #include <sstream>
 #include <string>
 
+#include <Teuchos_Array.hpp>
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_Tuple.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -238,6 +240,51 @@ TEST(MortarConstraints, PassTheContactPatchTestUnderAPressure) {
   }
 }
 
+// Two contact pairs in one problem, one sublist each: the lower block stands on the rigid
+// ground ("ground", dual mortar constraints on its bottom) instead of being clamped, and the
+// upper one on it ("interface"). Under a uniform pressure on the top every multiplier of both
+// pairs is the applied pressure, each pair carries the whole load, and the interface's action
+// and reaction balance.
+TEST(MortarConstraints, SeveralPairsPassThePatchTestTogether) {
+  const double pressure = 0.01;
+  for (int degree : {1, 2}) {
+    Teuchos::ParameterList problem =
+        pressedBlocks(writeBlocks(*Tpetra::getDefaultComm(), 0.0, 0.03), 0.0, degree);
+    problem.sublist("Dirichlet").remove("top");
+    problem.sublist("Dirichlet").remove("bottom");
+    problem.sublist("Traction").sublist("top").set("traction: y", "-0.01");
+    problem.remove("Contact");
+    Teuchos::ParameterList& ground = problem.sublist("Contact").sublist("ground");
+    ground.set("boundary", "bottom");
+    ground.set("formulation", "dual mortar");
+    Teuchos::ParameterList& interface = problem.sublist("Contact").sublist("interface");
+    interface.set("boundary", "lower top");
+    interface.set("master boundary", "upper bottom");
+    interface.set("obstacle: direction", Teuchos::Array<double>(Teuchos::tuple(0.0, -1.0)));  // master into slave
+    const AssembledProblem p = build(problem);
+    ASSERT_EQ(p.definition.contacts.size(), 2u);
+    EXPECT_EQ(p.definition.contacts[1].name, "interface");
+    EXPECT_LT(largestPressureDeviation(p, pressure), 1e-8) << "P" << degree;
+
+    Teuchos::ParameterList solver;
+    solver.set("kkt: tolerance", 1e-12);
+    const SolveResult r = InteriorPointSolver(solver).solve(p.qp, p.multigrid);
+    ASSERT_TRUE(r.converged()) << r.message;
+    const RCP<Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
+    for (std::size_t pair = 0; pair < 2; ++pair) {
+      const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap(), pair);
+      const RCP<Vector> pressures = recovery.pressure(*r.lambda, *active);
+      const ContactStatistics s = contactStatistics(recovery, *pressures, *p.qp.A, *r.lambda, *active,
+                                                    p.definition.contacts[pair].obstacleDirection);
+      EXPECT_NEAR(s.normalForce, pressure, 1e-8 * pressure) << "pair " << pair << " P" << degree;
+      EXPECT_NEAR(s.peakPressure, pressure, 1e-8 * pressure) << "pair " << pair << " P" << degree;
+      EXPECT_NEAR(s.area, 1.0, 1e-12) << "pair " << pair << " P" << degree;
+      EXPECT_EQ(s.masterForce.has_value(), pair == 1);
+      for (int c = 0; s.masterForce && c < 2; ++c) EXPECT_NEAR((*s.masterForce)[c], -s.force[c], 1e-10 * pressure);
+    }
+  }
+}
+
 // Hertz between two elastic bodies (examples/bodies/disk-on-block-2d.xml): a half-disk of
 // radius 1 pressed onto a block, for equal moduli and a disk 100 times stiffer. For the
 // computed force P and 1/E* = (1 - nu^2)(1/E_disk + 1/E_block): the peak of -lambda (the
@@ -330,7 +377,7 @@ TEST(MortarConstraints, TwoElasticBodiesFollowHertzIn3D) {
     const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap());
     const RCP<Vector> pressure = recovery.recover(PressureRecovery::Auto, *r.lambda, *active);
     const ContactStatistics contact = contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active,
-                                                        p.definition.contact->obstacleDirection);
+                                                        p.definition.contacts.front().obstacleDirection);
     const double eStar = 1.0 / ((1 - 0.3 * 0.3) * (1.0 + 1.0 / block));
     const double a = std::cbrt(3 * contact.normalForce / (4 * eStar)), p0 = 3 * contact.normalForce / (2 * M_PI * a * a);
     EXPECT_NEAR(contact.peakPressure / p0, 1.0, 0.05) << block;
@@ -359,6 +406,28 @@ TEST(MortarConstraints, BadPairsAreInputErrors) {
   EXPECT_THROW(build(pressedBlocks(writeBlocks(comm, -0.05, 0.0), 0.0)), InputError);
   EXPECT_THROW(build(pressedBlocks(writeCubes(comm, -0.1, 0.3, 0.22), 0.0, 1, 3)), InputError);
   EXPECT_LT(build(pressedBlocks(writeBlocks(comm, -0.001, 0.0), 0.0)).qp.d->normInf(), 0.001);
+}
+
+// Several pairs are sublists of Problem/Contact, each with a contact boundary of its own, and
+// the pair parameters then stay in them.
+TEST(MortarConstraints, BadPairListsAreInputErrors) {
+  const std::string file = writeBlocks(*Tpetra::getDefaultComm(), 0.0, 0.0);
+  const auto withPairs = [&](const std::string& first, const std::string& second) {
+    Teuchos::ParameterList problem = pressedBlocks(file, 0.0);
+    problem.remove("Contact");
+    problem.sublist("Contact").sublist("one").set("boundary", first);
+    problem.sublist("Contact").sublist("two").set("boundary", second);
+    problem.sublist("Contact").sublist("two").set("master boundary", "upper bottom");
+    return problem;
+  };
+  EXPECT_THROW(build(withPairs("lower top", "lower top")), InputError);  // one boundary in two pairs
+  EXPECT_THROW(build(withPairs("", "lower top")), InputError);          // a pair without a boundary
+  Teuchos::ParameterList both = withPairs("top", "lower top");
+  both.sublist("Contact").set("boundary", "bottom");  // a pair given beside the sublists
+  EXPECT_THROW(build(both), InputError);
+  Teuchos::ParameterList outside = withPairs("top", "lower top");
+  outside.sublist("Contact").set("formulation", "dual mortar");  // read by no pair
+  EXPECT_THROW(build(outside), InputError);
 }
 
 }  // namespace

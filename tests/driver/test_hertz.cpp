@@ -92,7 +92,7 @@ ContactSolution solveExample(const std::string& example, int degree, const std::
   const RCP<Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
   const RCP<Vector> pressure = recovery.recover(PressureRecovery::Auto, *r.lambda, *active);
   return {p.definition.dim,
-          contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active, p.definition.contact->obstacleDirection),
+          contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active, p.definition.contacts.front().obstacleDirection),
           recovery.samples(*pressure), p.space->comm(), nodalField(*pressure, *active)};
 }
 

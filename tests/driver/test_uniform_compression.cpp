@@ -83,7 +83,7 @@ TEST(UniformCompression, ContactPressureIsTheAppliedTraction) {
       restricted->update(-1.0, one, 1.0);
       EXPECT_LT(restricted->normInf(), pressureTolerance) << what;
       const ContactStatistics stats = contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda,
-                                                        *activeIndicator(p.qp, *r.v, *r.lambda), p.definition.contact->obstacleDirection);
+                                                        *activeIndicator(p.qp, *r.v, *r.lambda), p.definition.contacts.front().obstacleDirection);
       EXPECT_NEAR(stats.normalForce, 1.0, 1e-8) << what;
       EXPECT_NEAR(stats.force[0], 0.0, 1e-12) << what;
       // The degenerate P2 vertex constraints are not all counted active (lambda ~ slack ~ sqrt(mu)).

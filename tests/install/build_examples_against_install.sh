@@ -44,6 +44,17 @@ contact = json.load(open(sys.argv[1]))["contact"]
 assert abs(contact["normal_force"] - 0.01) < 1e-8 and abs(contact["peak_pressure"] - 0.01) < 1e-8, contact
 CHECK
 done
+# Two contact pairs, the base on the rigid ground and the block on the base: each carries the load.
+(cd "$work" && mpiexec -np 2 "$work/prefix/bin/signorini" "$source_dir/examples/bodies/blocks-on-the-ground-2d.xml" \
+   --output "$work/blocks-on-the-ground") || { echo "the installed bin/signorini does not solve two contact pairs"; exit 1; }
+/usr/bin/python3 - "$work/blocks-on-the-ground/summary.json" <<'CHECK'
+import json, sys
+pairs = json.load(open(sys.argv[1]))["contact"]["pairs"]
+assert [p["name"] for p in pairs] == ["floor", "interface"], pairs
+for p in pairs:
+    assert abs(p["normal_force"] - 0.01) < 1e-8 and abs(p["peak_pressure"] - 0.01) < 1e-8, p
+assert "master_force" in pairs[1] and abs(pairs[1]["master_force"][1] + pairs[1]["force"][1]) < 1e-10, pairs[1]
+CHECK
 
 # A Gmsh mesh written in two parts by the gmsh program, each rank reading its own: the same
 # problem as the mesh read whole.

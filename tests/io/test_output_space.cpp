@@ -44,7 +44,7 @@ TEST(OutputSpace, EstimateCoversTheSolutionFiles) {
       const std::string directory =
           (fs::temp_directory_path() / ("signorini-output-space-" + std::to_string(comm->getSize()))).string();
       if (comm->getRank() == 0) fs::remove_all(directory);
-      writeSolution(q, r, nullptr, directory);
+      writeSolution(q, r, {}, directory);
       comm->barrier();
       const double written = solutionFileBytes(directory, *comm);
       const double estimate = static_cast<double>(detail::estimatedSolutionBytes(*q.space));

@@ -42,11 +42,12 @@ enum class PressureRecovery { Auto, Consistent, Lumped, Patch };
 class ContactPressure {
  public:
   /// Collective. `constraintMap` is A's range map: one constraint per contact node, as the
-  /// assembler numbers them. Assembles M once.
+  /// assembler numbers them. The recovery is that of the contact pair problem.contacts[pair]:
+  /// its fields are 0 on the other pairs' constraints. Assembles M once.
   /// `space` is the one the problem was assembled on (AssembledProblem::space) and must
   /// outlive the recovery.
   ContactPressure(const FiniteElementSpace& space, const ProblemDefinition& problem,
-                  const RCP<const Map>& constraintMap);
+                  const RCP<const Map>& constraintMap, std::size_t pair = 0);
 
   /// The pressure's nodal values on the constraint map, 0 off the nodes L of the facets that
   /// have a node with active != 0. Nodal constraints: M_LL p_L = -lambda_L (paper's sign,
@@ -87,6 +88,9 @@ class ContactPressure {
   /// bodies), 0 elsewhere, on the space's owned DOF map.
   RCP<Vector> contactBoundaryDofs() const;
 
+  /// 1 on the pair's constraints, 0 on the other pairs', on the constraint map.
+  const Vector& pairConstraints() const { return *pairRows_; }
+
   const CrsMatrix& massMatrix() const { return *mass_; }
   int dim() const;
   /// True for contact between two bodies (ContactPair::masterBoundary given).
@@ -114,13 +118,14 @@ class ContactPressure {
   RCP<CrsMatrix> patchSum_;  ///< M's pattern with unit values: sums over a node's facet patch
   RCP<Vector> scaling_;  ///< D^-1/2, D = diag(M)
   RCP<Vector> lumpedWeights_;
+  RCP<Vector> pairRows_;
   std::vector<std::pair<long long, int>> facets_;  ///< (cell, local facet) of this rank's contact facets
   std::vector<long long> overlapNodeConstraint_;  ///< per overlap space node, -1 for none
   std::vector<int> overlapIndex_;  ///< local index in overlapMap_ of each space node, -1 off Gamma_c
 };
 
-/// The statistics of a solution with recovered pressure p and active constraints `active`
-/// (1 or 0 per constraint). Collective.
+/// The statistics of the recovery's contact pair in a solution with recovered pressure p and
+/// active constraints `active` (1 or 0 per constraint). Collective.
 ContactStatistics contactStatistics(const ContactPressure& recovery, const Vector& pressure, const CrsMatrix& A,
                                     const Vector& lambda, const Vector& active,
                                     const std::array<double, 3>& obstacleDirection);

@@ -4,6 +4,7 @@
 /// summary.json. The same on every rank.
 #include <array>
 #include <optional>
+#include <vector>
 
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/solver/ContactQP.hpp"
@@ -24,6 +25,10 @@ struct ContactStatistics {
   double peakPressure = 0;  ///< largest nodal value of p_h; NaN without a mesh
   long long activeNodes = 0;               ///< active constraints (one per contact node)
 };
+
+/// The statistics of several contact pairs together: forces, normal forces (each along its
+/// pair's direction), areas and active nodes summed, the largest peak pressure.
+ContactStatistics combinedStatistics(const std::vector<ContactStatistics>& pairs);
 
 /// What a QP and its solution tell without the mesh (a QP handed over by another code): the
 /// obstacle's force A^T lambda summed per component (multigrid.blockSize of them, DOF

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// What the user asks to solve: mesh source, element degree, the bodies (material, body
-/// force), boundary conditions and the contact pair; what the assembly turns into a
+/// force), boundary conditions and the contact pairs; what the assembly turns into a
 /// ContactQP. readProblemDefinition (ProblemParameters.hpp) fills it from the "Problem"
 /// parameter list, each part from its own sublist or parameters.
 #include <array>
@@ -48,6 +48,7 @@ struct Body {
 /// Frictionless contact of a boundary with a rigid obstacle or, given a master boundary, with
 /// the surface of another body (mortar constraints, the contact boundary their slave side).
 struct ContactPair {
+  std::string name;  ///< its sublist of Problem/Contact; empty for the pair given in Problem/Contact itself
   std::string boundary;  ///< the body's contact boundary Gamma_c (a boundary name)
   std::string masterBoundary;  ///< the other body's surface; empty: the rigid obstacle below
   std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body
@@ -77,7 +78,9 @@ struct ProblemDefinition {
   /// (MeshVertexGrid::Refinement::atNodes) instead of the mesh's own cells
   bool gridRefinedAtNodes = false;
   std::vector<BoundaryField> dirichlet, traction;
-  std::optional<ContactPair> contact;  ///< none: no contact
+  /// Each pair's constraints are rows of A, pair after pair on every rank (ElasticityAssembler);
+  /// empty: no contact
+  std::vector<ContactPair> contacts;
 };
 
 }  // namespace signorini

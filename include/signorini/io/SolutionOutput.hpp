@@ -2,6 +2,7 @@
 /// \file
 /// The outputs of a solved problem: the ParaView solution and the contact pressure samples.
 #include <string>
+#include <vector>
 
 #include "signorini/assembly/ContactPressure.hpp"
 #include "signorini/core/TpetraTypes.hpp"
@@ -20,11 +21,12 @@ struct ContactFields {
 };
 
 /// `directory`/solution.pvtu and one .vtu piece per rank (writeVtu): per node the displacement,
-/// the contact pressure and active indicator (0 without `contact`), the contact force
-/// (A^T lambda) . n_o (the node's share of the obstacle's force, in force units) and the gap
-/// g + n_o . u on the contact boundary; per cell the von Mises stress at the centroid and the
+/// the contact pressure and active indicator (one ContactFields per contact pair; 0 without),
+/// the contact force (A^T lambda) . n_o (the node's share of the obstacle's force, in force
+/// units; n_o the direction of the node's pair) and the gap g + n_o . u on the contact
+/// boundaries; per cell the von Mises stress at the centroid and the
 /// rank. Creates the directory. Collective.
-void writeSolution(const AssembledProblem& problem, const SolveResult& result, const ContactFields* contact,
+void writeSolution(const AssembledProblem& problem, const SolveResult& result, const std::vector<ContactFields>& contact,
                    const std::string& directory);
 
 /// `path` (contact.csv), written by rank 0 with every rank's samples: the columns x, y(, z),

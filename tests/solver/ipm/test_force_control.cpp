@@ -45,7 +45,7 @@ ControlledRun solve(const Teuchos::ParameterList& problem, const std::string& me
   const RCP<Vector> active = activeIndicator(p.qp, *run.result.v, *run.result.lambda);
   const RCP<Vector> pressure = recovery.recover(PressureRecovery::Auto, *run.result.lambda, *active);
   run.stats = contactStatistics(recovery, *pressure, *p.qp.A, *run.result.lambda, *active,
-                                p.definition.contact->obstacleDirection);
+                                p.definition.contacts.front().obstacleDirection);
   auto b = p.qp.b->getData();
   double local = 0;
   for (std::size_t i = run.dim - 1; i < p.qp.b->getLocalLength(); i += run.dim) local -= b[i];
