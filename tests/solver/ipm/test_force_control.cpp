@@ -2,7 +2,8 @@
 // on a face or a weight; the sides on rollers or the loaded face held sideways) converge with both methods
 // on every rank count, the contact force equals the applied load, Hertz' solution holds for it,
 // and the main iterations stay within 1.5 times those of the same body under displacement
-// control. The problems are examples/hertz's force-controlled ones and a pressed box.
+// control. The problems are examples/hertz's force-controlled ones, a pressed box and a
+// square held by two contact pairs.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include <Teuchos_Array.hpp>
+#include <Teuchos_Tuple.hpp>
 #include <Teuchos_XMLParameterListHelpers.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -143,6 +146,35 @@ TEST(ForceControl, PressedBoxCarriesTheUniformPressure) {
     ASSERT_TRUE(run.result.converged()) << run.result.message;
     EXPECT_NEAR(run.stats.peakPressure, 1.0, 1e-6) << "dim " << dim;
     EXPECT_NEAR(run.stats.area, 1.0, 1e-12) << "dim " << dim;
+  }
+}
+
+// A square held by contact alone, nothing prescribed: pressed down and to the left by a
+// traction on its top, it rests on the floor (pair "floor", ymin) and against a wall (pair
+// "wall", xmin, the obstacle direction +x); the corner node is on both. Each pair's contact
+// force balances its component of the load, on every rank count, P1 and P2.
+TEST(ForceControl, ASquareHeldByTheFloorAndAWallAlone) {
+  for (int degree : {1, 2}) {
+    Teuchos::ParameterList problem = boxProblem(2, 12, degree);
+    Teuchos::ParameterList& top = problem.sublist("Traction").sublist("ymax");
+    top.set("traction: x", "-0.5");
+    top.set("traction: y", "-1");
+    problem.sublist("Contact").sublist("floor").set("boundary", "ymin");
+    problem.sublist("Contact").sublist("wall").set("boundary", "xmin");
+    problem.sublist("Contact").sublist("wall").set("obstacle: direction", Teuchos::Array<double>(Teuchos::tuple(1.0, 0.0)));
+    const AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
+    const SolveResult r = InteriorPointSolver().solve(p.qp, p.multigrid);
+    ASSERT_TRUE(r.converged()) << r.message;
+    const RCP<Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
+    const double loads[2] = {1.0, 0.5};  // the floor's and the wall's normal forces
+    for (std::size_t pair = 0; pair < 2; ++pair) {
+      const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap(), pair);
+      const RCP<Vector> pressure = recovery.recover(PressureRecovery::Auto, *r.lambda, *active);
+      const ContactStatistics s = contactStatistics(recovery, *pressure, *p.qp.A, *r.lambda, *active,
+                                                    p.definition.contacts[pair].obstacleDirection);
+      EXPECT_NEAR(s.normalForce, loads[pair], 1e-6 * loads[pair]) << p.definition.contacts[pair].name << " P" << degree;
+      EXPECT_GT(s.activeNodes, 0) << p.definition.contacts[pair].name << " P" << degree;
+    }
   }
 }
 
