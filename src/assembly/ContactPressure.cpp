@@ -304,7 +304,7 @@ RCP<Vector> ContactPressure::lumpedPressure(const Vector& lambda, const Vector& 
   const RCP<const Vector> loaded = loadedNodes(active);
   auto out = p->getDataNonConst();
   auto l = lambda.getData(), w = lumpedWeights_->getData(), on = loaded->getData();
-  for (std::size_t i = 0; i < out.size(); ++i) out[i] = on[i] != 0 ? -l[i] / w[i] : 0.0;
+  for (Teuchos::ArrayRCP<double>::size_type i = 0; i < out.size(); ++i) out[i] = on[i] != 0 ? -l[i] / w[i] : 0.0;
   return p;
 }
 

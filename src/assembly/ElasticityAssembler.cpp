@@ -134,7 +134,7 @@ void checkPrescribedContactNodes(const DistributedSpace& ds, const ContactPair& 
   if (first == firstGlobal) std::copy(where, where + 4, mine);
   Teuchos::reduceAll(comm, Teuchos::REDUCE_SUM, 4, mine, located);
   std::ostringstream message;
-  message << "Problem/Contact: " << total << " node(s) of the contact boundary \"" << pair.boundary
+  message << pair.path() << ": " << total << " node(s) of the contact boundary \"" << pair.boundary
           << "\" have their displacement towards the obstacle prescribed (Problem/Dirichlet) so that the gap "
           << "closes or is crossed, first at (";
   for (int c = 0; c < dim; ++c) message << (c ? ", " : "") << located[c];

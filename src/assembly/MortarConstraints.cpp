@@ -170,7 +170,7 @@ void checkInitialOverlap(const MultiVector& rowSums, const ContactPair& pair) {
   if (worst[0] <= pair.initialOverlapTolerance) return;
   std::ostringstream message;
   message.precision(3);
-  message << "Problem/Contact: the bodies overlap by " << worst[1] << " at the start, at (" << worst[2] << ", "
+  message << pair.path() << ": the bodies overlap by " << worst[1] << " at the start, at (" << worst[2] << ", "
           << worst[3] << ", " << worst[4] << ") on the contact boundary \"" << pair.boundary << "\" ("
           << worst[0] << " of its facets' size there, more than initial overlap: tolerance "
           << pair.initialOverlapTolerance << "): move them apart";
@@ -193,18 +193,18 @@ void checkDifferentBodies(const DistributedSpace& ds, const LocalFacets& slave, 
   }
   for (int p = 0; p < pieces.count; ++p)
     if (onSide[0][p] && onSide[1][p])
-      throw InputError("Problem/Contact: the master boundary \"" + pair.masterBoundary +
+      throw InputError(pair.path() + ": the master boundary \"" + pair.masterBoundary +
                        "\" lies on the same body as the contact boundary \"" + pair.boundary +
                        "\"; name a surface of the other body (a body meshed apart from it)");
 }
 
 void checkPair(const DistributedSpace& ds, const ContactPair& pair) {
   if (pair.masterBoundary == pair.boundary)
-    throw InputError("Problem/Contact: the master boundary \"" + pair.masterBoundary +
+    throw InputError(pair.path() + ": the master boundary \"" + pair.masterBoundary +
                      "\" is the contact boundary itself; name the other body's surface");
   ds.mesh().tag(pair.masterBoundary);  // throws naming the known boundaries
   if (!isWeightedGap(pair.formulation))
-    throw InputError("Problem/Contact/formulation: contact between two bodies needs weighted constraints "
+    throw InputError(pair.path() + "/formulation: contact between two bodies needs weighted constraints "
                      "(\"dual mortar\" or \"weighted gap\"), not nodal ones");
 }
 
@@ -268,7 +268,7 @@ MortarRows mortarConstraints(const DistributedSpace& ds, const ContactPair& pair
     if (covered < 1.0 - 1e-9) ++uncovered;
   }
   if (const long long total = sumOverRanks(*ds.comm(), uncovered); total > 0)
-    throw InputError("Problem/Contact: " + std::to_string(total) + " facet(s) of the contact boundary \"" + pair.boundary +
+    throw InputError(pair.path() + ": " + std::to_string(total) + " facet(s) of the contact boundary \"" + pair.boundary +
                      "\" are not covered by the master boundary \"" + pair.masterBoundary +
                      "\" facing them; make the slave boundary the part that lies within the master's reach");
 

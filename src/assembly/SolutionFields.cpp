@@ -66,7 +66,7 @@ std::vector<double> weightedGaps(const DistributedSpace& ds, const ProblemDefini
   const RCP<const Vector> weights = contactNodeWeights(ds, problem, A.getRangeMap(), pair);
   auto sd = slack.getDataNonConst();
   auto wd = weights->getData();
-  for (std::size_t i = 0; i < sd.size(); ++i) sd[i] = wd[i] != 0 ? sd[i] / wd[i] : 0.0;
+  for (Teuchos::ArrayRCP<double>::size_type i = 0; i < sd.size(); ++i) sd[i] = wd[i] != 0 ? sd[i] / wd[i] : 0.0;
   const std::vector<long long> constraintOf = overlapNodeConstraints(ds, problem, pair);
   std::vector<GlobalOrdinal> ids;
   for (long long k : constraintOf)

@@ -428,6 +428,14 @@ TEST(MortarConstraints, BadPairListsAreInputErrors) {
   Teuchos::ParameterList outside = withPairs("top", "lower top");
   outside.sublist("Contact").set("formulation", "dual mortar");  // read by no pair
   EXPECT_THROW(build(outside), InputError);
+  Teuchos::ParameterList sameSides = withPairs("upper bottom", "lower top");  // the message names the pair
+  sameSides.sublist("Contact").sublist("one").set("master boundary", "upper bottom");
+  try {
+    build(sameSides);
+    ADD_FAILURE() << "a pair with one boundary on both sides was posed";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("Problem/Contact/one: ", 0), 0u) << e.what();
+  }
 }
 
 }  // namespace

@@ -57,6 +57,9 @@ struct ContactPair {
   /// Between two bodies: the overlap at the start that is refused, relative to the size of
   /// the slave facets where it is
   double initialOverlapTolerance = 0.1;
+
+  /// Where the pair's parameters are, for messages: Problem/Contact or Problem/Contact/<name>
+  std::string path() const { return name.empty() ? "Problem/Contact" : "Problem/Contact/" + name; }
 };
 
 struct ProblemDefinition {
