@@ -32,6 +32,9 @@ Teuchos::ParameterList MueLuPreconditioner::defaultParameters(int blockSize) {
   p.set("max levels", 10);
   p.set("repartition: enable", false);  // Zoltan2 repartitioning aborts with 13.2
   p.set("reuse: type", "none");
+  // R = P^T applied as P's transpose: the same operator without forming and storing R, whose
+  // explicit transpose is a sizeable part of a smoothed-aggregation setup for 3D elasticity.
+  p.set("transpose: use implicit", true);
   return p;
 }
 
