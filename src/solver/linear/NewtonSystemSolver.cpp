@@ -111,7 +111,10 @@ void addPreconditionerParameters(Teuchos::ParameterList& prec) {
                "Signorini's defaults (chebyshev: degree 2, chebyshev: ratio eigenvalue 7); the fine level's "
                "smoother, the same polynomial of H as an operator, reads its degree, ratio eigenvalue, boost "
                "factor and max eigenvalue");
-  prec.sublist("MueLu", false, "Passed to MueLu unchanged, over Signorini's defaults");
+  prec.sublist("MueLu", false,
+               "Passed to MueLu unchanged, over Signorini's defaults; a reuse: type other than none refreshes "
+               "the hierarchy of a matrix of the same pattern (tP and RP are refused: Trilinos 13.2 fails in "
+               "them on contact problems)");
 }
 
 }  // namespace

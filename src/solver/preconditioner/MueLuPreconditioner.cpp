@@ -3,6 +3,7 @@
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <MueLu_Hierarchy.hpp>
 #include <MueLu_ParameterListInterpreter.hpp>
+#include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
 
@@ -54,9 +55,41 @@ MueLuPreconditioner::MueLuPreconditioner(const Teuchos::ParameterList& params, i
       params_.remove(sub);
   }
   params_.setParameters(params);
+  // Both recompute products on the graphs of the first build, which Tpetra 13.2's reuse
+  // kernels reject as new entries in a static graph on the Hessians of mortar and
+  // force-controlled problems, although their pattern does not change.
+  if (params_.isType<std::string>("reuse: type"))
+    for (const char* broken : {"tP", "RP"})
+      if (params_.get<std::string>("reuse: type") == broken)
+        throw InputError(std::string("Solver/Preconditioner/MueLu/reuse: type: \"") + broken +
+                         "\" fails inside Trilinos 13.2's matrix products on the Hessians of contact problems; use "
+                         "\"none\" (the default), \"S\", \"RAP\" or \"emin\"");
 }
 
+namespace {
+
+// True on every rank if A and B have the same rows, columns and entries in each row (their
+// values aside). Collective.
+bool samePattern(const CrsMatrix& A, const CrsMatrix& B) {
+  bool same = A.getRowMap()->isSameAs(*B.getRowMap()) && A.getColMap()->isSameAs(*B.getColMap());
+  if (same && A.getCrsGraph() != B.getCrsGraph()) {
+    const auto a = A.getLocalMatrixHost().graph, b = B.getLocalMatrixHost().graph;
+    same = a.row_map.extent(0) == b.row_map.extent(0) && a.entries.extent(0) == b.entries.extent(0);
+    for (std::size_t i = 0; same && i < a.row_map.extent(0); ++i) same = a.row_map(i) == b.row_map(i);
+    for (std::size_t k = 0; same && k < a.entries.extent(0); ++k) same = a.entries(k) == b.entries(k);
+  }
+  int local = same ? 1 : 0, all = 0;
+  Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_MIN, 1, &local, &all);
+  return all == 1;
+}
+
+}  // namespace
+
 void MueLuPreconditioner::compute(const RCP<CrsMatrix>& A, bool reuse) {
+  // MueLu's reuse keeps the coarse matrices' graphs: a matrix of another pattern (H of two
+  // bodies, whose A^T D A is assembled by products) gets a new hierarchy.
+  if (reuse && !op_.is_null() && !built_.is_null() && !samePattern(*A, *built_)) reuse = false;
+  built_ = A;
   if (reuse && !op_.is_null()) {
     auto mueluOp = Teuchos::rcp_dynamic_cast<MueLuOperator>(op_, true);
     MueLu::ReuseTpetraPreconditioner(A, *mueluOp);

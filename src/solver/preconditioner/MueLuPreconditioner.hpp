@@ -23,7 +23,8 @@ class MueLuPreconditioner : public MultilevelPreconditioner {
                       RCP<const MultiVector> nullspace, RCP<const MultiVector> coordinates);
 
   // Builds the hierarchy for A. With `reuse`, a hierarchy built before for a matrix of the
-  // same pattern is refreshed according to the list's "reuse: type" instead of rebuilt.
+  // same pattern is refreshed according to the list's "reuse: type" instead of rebuilt; for a
+  // matrix of another pattern it is rebuilt. Collective.
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
 
   RCP<Operator> getOperator() const override;
@@ -33,6 +34,7 @@ class MueLuPreconditioner : public MultilevelPreconditioner {
   Teuchos::ParameterList params_;
   RCP<const MultiVector> nullspace_, coordinates_;
   RCP<Operator> op_;
+  RCP<const CrsMatrix> built_;  // the matrix of the last compute()
   // MueLu's factories, made from params_ at the first compute() and kept for the next ones.
   RCP<MueLu::HierarchyManager<Scalar, LocalOrdinal, GlobalOrdinal, Node>> factory_;
 };

@@ -1,18 +1,21 @@
 // Pins a MueLu configuration that is correct on every rank count with Debian's Trilinos 13.2
 // (whose Amesos2 coarse solvers are wrong on more than one rank): Belos CG preconditioned by
-// MueLu on Galeri's 2D and 3D elasticity matrices, with asserted iteration bounds.
+// MueLu on Galeri's 2D and 3D elasticity matrices, with asserted iteration bounds; and the
+// reuse of a hierarchy.
 #include <gtest/gtest.h>
 
 #include <Galeri_XpetraMaps.hpp>
 #include <Galeri_XpetraProblemFactory.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <TpetraExt_MatrixMatrix.hpp>
 #include <Xpetra_CrsMatrixWrap.hpp>
 #include <Xpetra_MapFactory.hpp>
 #include <Xpetra_MatrixMatrix.hpp>
 #include <Xpetra_MultiVectorFactory.hpp>
 #include <Xpetra_TpetraMultiVector.hpp>
 
+#include "signorini/core/Error.hpp"
 #include "solver/linear/KrylovSolver.hpp"
 #include "solver/preconditioner/MueLuPreconditioner.hpp"
 
@@ -111,6 +114,45 @@ TEST(MueLuParallel, UserSmootherTypeDropsOurSmootherParams) {
   const auto& mp = merged.parameters().sublist("smoother: params");
   EXPECT_EQ(mp.get<int>("chebyshev: degree"), 3);
   EXPECT_DOUBLE_EQ(mp.get<double>("chebyshev: ratio eigenvalue"), 7.0);
+}
+
+// Reuse types whose matrix products fail inside Trilinos 13.2 on contact Hessians are input
+// errors, named with the ones that work.
+TEST(MueLuParallel, BrokenReuseTypesAreInputErrors) {
+  for (const char* type : {"tP", "RP"}) {
+    Teuchos::ParameterList user;
+    user.set("reuse: type", type);
+    EXPECT_THROW(MueLuPreconditioner(user, 2, Teuchos::null, Teuchos::null), InputError) << type;
+  }
+  Teuchos::ParameterList smoothers;
+  smoothers.set("reuse: type", "S");
+  EXPECT_NO_THROW(MueLuPreconditioner(smoothers, 2, Teuchos::null, Teuchos::null));
+}
+
+// A reuse asked for a matrix of another pattern (A^2 after A) builds a new hierarchy: CG on
+// A^2 takes as many iterations as with a hierarchy built for A^2 alone, where "RAP" reuse
+// (A's prolongators and coarse matrices kept, the fine smoother refreshed) takes another
+// number.
+TEST(MueLuParallel, AReuseForAnotherPatternRebuilds) {
+  const ElasticityProblem p = galeriElasticity(2, 24);
+  ElasticityProblem squared = p;
+  squared.A = rcp(new CrsMatrix(p.A->getRowMap(), 0));
+  Tpetra::MatrixMatrix::Multiply(*p.A, false, *p.A, false, *squared.A);
+  Teuchos::ParameterList user;
+  user.set("reuse: type", "RAP");
+  const auto iterations = [&](MueLuPreconditioner& amg) {
+    auto b = rcp(new MultiVector(squared.A->getRangeMap(), 1));
+    b->putScalar(1.0);
+    auto x = rcp(new MultiVector(squared.A->getDomainMap(), 1));
+    const KrylovResult r = KrylovSolver().solve(squared.A, amg.getOperator(), b, x, 1e-8, 1000);
+    EXPECT_TRUE(r.converged);
+    return r.iterations;
+  };
+  MueLuPreconditioner fresh(user, 2, p.nullspace, Teuchos::null), reused(user, 2, p.nullspace, Teuchos::null);
+  fresh.compute(squared.A);
+  reused.compute(p.A);
+  reused.compute(squared.A, true);
+  EXPECT_EQ(iterations(reused), iterations(fresh));
 }
 
 }  // namespace
