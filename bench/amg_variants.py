@@ -84,15 +84,23 @@ def main():
     os.makedirs(os.path.join(ROOT, "bench", "results"), exist_ok=True)
     with open(os.path.join(ROOT, "bench", "results", "amg-variants.json"), "w") as f:
         json.dump({"provenance": made, "runs": records}, f, indent=1)
-    rows = ["| variant | problem | n | levels | operator complexity | CG iterations to the end of the first main iteration | "
-            "max per system | AMG setup [s] | Krylov [s] |", "|---|---|---|---|---|---|---|---|---|"]
-    for r in records:
-        rows.append(f"| {r['variant']} | {r['problem']} | {r['n']} | {r['levels']} | {r['operator_complexity']} | "
-                    f"{r['krylov_first_iteration']} | {r['max_per_system']} | {r['amg_setup_seconds']} | "
-                    f"{r['krylov_seconds']} |")
+    rows = table(records)
     with open(os.path.join(ROOT, "bench", "results", "amg-variants.md"), "w") as f:
         f.write("\n".join(rows) + "\n")
     print("\n".join(rows))
+
+
+def table(records):
+    """The Markdown rows; '-' where MueLu reported nothing (geometric levels ending in a direct solve)."""
+    def cell(value):
+        return "-" if value is None else value
+    rows = ["| variant | problem | n | levels | operator complexity | CG iterations to the end of the first main iteration | "
+            "max per system | AMG setup [s] | Krylov [s] |", "|---|---|---|---|---|---|---|---|---|"]
+    for r in records:
+        rows.append(f"| {r['variant']} | {r['problem']} | {r['n']} | {cell(r['levels'])} | {cell(r['operator_complexity'])} | "
+                    f"{r['krylov_first_iteration']} | {r['max_per_system']} | {r['amg_setup_seconds']} | "
+                    f"{r['krylov_seconds']} |")
+    return rows
 
 
 if __name__ == "__main__":
