@@ -161,17 +161,6 @@ ContactFormulation formulationOf(const ProblemDefinition& problem, std::size_t p
   return pair < problem.contacts.size() ? problem.contacts[pair].formulation : ContactFormulation::nodal;
 }
 
-// 1 on the constraints of pair `pair`, 0 on the others'.
-RCP<Vector> constraintsOfPair(const DistributedSpace& ds, const ProblemDefinition& problem, std::size_t pair,
-                              const RCP<const Map>& constraintMap) {
-  auto rows = rcp(new Vector(constraintMap));
-  if (pair >= problem.contacts.size()) return rows;
-  const OwnedContactNodes contact = ownedContactNodes(ds, problem);
-  for (std::size_t k = contact.pairStart[pair]; k < contact.pairStart[pair + 1]; ++k)
-    rows->replaceGlobalValue(contact.first + k, 1.0);
-  return rows;
-}
-
 }  // namespace
 
 struct ContactPressure::MultiplierBasis : ContactMultiplierBasis {
@@ -195,7 +184,10 @@ ContactPressure::ContactPressure(const FiniteElementSpace& feSpace, const Proble
     if (!problem.contacts.empty()) throw Error("contact pressure: the problem has no contact pair " + std::to_string(pair));
     overlapNodeConstraint_.assign(ds.overlapSpaceNodes().size(), -1);
   }
-  pairRows_ = constraintsOfPair(ds, problem, pair, constraintMap);
+  // The pair's constraints: those of its owned nodes (owned nodes come first in the overlap).
+  pairRows_ = rcp(new Vector(constraintMap));
+  for (std::size_t i = 0; i < ds.ownedNodeMap()->getNodeNumElements(); ++i)
+    if (overlapNodeConstraint_[i] >= 0) pairRows_->replaceGlobalValue(overlapNodeConstraint_[i], 1.0);
   const auto& overlapNodes = ds.overlapSpaceNodes();
   std::vector<long long> constraintOfNode(space.numNodes(), -1);
   for (std::size_t i = 0; i < overlapNodes.size(); ++i) constraintOfNode[overlapNodes[i]] = overlapNodeConstraint_[i];

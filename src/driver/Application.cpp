@@ -298,6 +298,13 @@ bool isFinite(const SolveResult& result) {
          std::isfinite(result.lambda->norm1());
 }
 
+void append(ContactPressureSamples& to, const ContactPressureSamples& from) {
+  to.dim = from.dim;
+  to.points.insert(to.points.end(), from.points.begin(), from.points.end());
+  to.weights.insert(to.weights.end(), from.weights.begin(), from.weights.end());
+  to.pressures.insert(to.pressures.end(), from.pressures.begin(), from.pressures.end());
+}
+
 // Each contact pair's recovered pressure and statistics (logged when there are several; the
 // totals always), contact.csv and the solution files, as Output asks; the statistics go into
 // `summary` (none without contact). Collective.
@@ -328,13 +335,7 @@ void writeSolutionOutputs(const AssembledProblem& problem, const SolveResult& re
     summary.contactPairs.push_back({pair.name, pair.boundary, pair.masterBoundary, statistics.back()});
     if (comm.getRank() == 0 && def.contacts.size() > 1)
       logContact(statistics.back(), out, "Contact pair \"" + pair.name + "\"");
-    if (output.get<bool>("write contact samples")) {
-      const ContactPressureSamples s = recovery.samples(*pressures.back());
-      samples.dim = s.dim;
-      samples.points.insert(samples.points.end(), s.points.begin(), s.points.end());
-      samples.weights.insert(samples.weights.end(), s.weights.begin(), s.weights.end());
-      samples.pressures.insert(samples.pressures.end(), s.pressures.begin(), s.pressures.end());
-    }
+    if (output.get<bool>("write contact samples")) append(samples, recovery.samples(*pressures.back()));
   }
   summary.contact = combinedStatistics(statistics);
   if (comm.getRank() == 0) logContact(*summary.contact, out, def.contacts.size() > 1 ? "Contact, all pairs" : "Contact");
