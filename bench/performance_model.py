@@ -101,34 +101,41 @@ def predicted(dim, n, parts, halo, per_node):
     return messages / parts, volume / parts
 
 
-def check():
+def check_rows():
+    """Per case and rank count above 2: the blocks, and mean messages and bytes sent per rank
+    and CG iteration, measured and modelled."""
     runs = load("communication.json")["runs"]
-    print("| case | ranks | blocks | messages per CG iteration, measured | model | KiB sent, measured | model |")
-    print("|---|---|---|---|---|---|---|")
+    rows = []
     for case, (dim, n) in CASES.items():
         halo, per_node, _ = calibration(runs, case)
         for r in sorted((r for r in runs if r["case"] == case and r["ranks"] > 2), key=lambda r: r["ranks"]):
             messages, volume = predicted(dim, n, r["ranks"], halo, per_node)
             measured = r["per_cg_iteration"]
-            p = decompose(dim, n, r["ranks"])
-            print(f"| {case} | {r['ranks']} | {' x '.join(map(str, p[:dim]))} | {measured['messages_sent']['mean']:.0f} "
-                  f"| {messages:.0f} | {measured['bytes_sent']['mean'] / 1024:.0f} | {volume / 1024:.0f} |")
+            rows.append({"case": case, "ranks": r["ranks"], "blocks": decompose(dim, n, r["ranks"])[:dim],
+                         "messages": measured["messages_sent"]["mean"], "model_messages": messages,
+                         "bytes": measured["bytes_sent"]["mean"], "model_bytes": volume})
+    return rows
 
 
-def predict():
+def check():
+    print("| case | ranks | blocks | messages per CG iteration, measured | model | KiB sent, measured | model |")
+    print("|---|---|---|---|---|---|---|")
+    for r in check_rows():
+        print(f"| {r['case']} | {r['ranks']} | {' x '.join(map(str, r['blocks']))} | {r['messages']:.0f} "
+              f"| {r['model_messages']:.0f} | {r['bytes'] / 1024:.0f} | {r['model_bytes'] / 1024:.0f} |")
+
+
+def prediction_rows():
     """3D P1: 128^3 boxes (6.4 M unknowns) over 64-1024 ranks (strong), and blocks of 40^3
     boxes (~200 000 unknowns) per rank (weak). Both hierarchies end in a coarsest geometric
-    grid of at most 2500 unknowns, gathered to rank 0."""
+    grid of at most 2500 unknowns, gathered to rank 0. Times in seconds per CG iteration."""
     runs = load("communication.json")["runs"]
     halo, per_node, allreduces = calibration(runs, "3d-p1-nx40")
     reference = next(c for c in load("reference-solve.json")["cases"] if c["problem"] == "family/3d-p1-nx100")
     contact = reference["contact"]
     # Compute time per unknown and CG iteration on one rank of the measured run.
     per_unknown = contact["seconds"]["krylov"] / contact["cg_iterations"] * reference["ranks"] / contact["n"]
-    ms = lambda t: f"{1e3 * t:.2f}"
-    print("| scaling | ranks | unknowns per rank | compute | halo latency | halo volume | coarse gather | all-reduces "
-          "| per CG iteration | compute share |")
-    print("|---|---|---|---|---|---|---|---|---|---|")
+    rows = []
     for label, boxes in (("strong, 128^3 boxes", lambda parts: 128), ("weak, 40^3 boxes per rank", None)):
         for parts in (64, 256, 1024):
             if boxes:  # the interior block of the decomposition
@@ -139,14 +146,24 @@ def predict():
                 unknowns = 3 * (n + 1) ** 3 / parts
             else:
                 count, faceNodes, unknowns = 26, 6 * 41 ** 2, 3 * 40 ** 3
-            compute = per_unknown * unknowns
-            latency = halo * count * LATENCY
-            volume = per_node * faceNodes / BANDWIDTH
-            gather = 2 * (parts - 1) * LATENCY
-            reduce = allreduces * 2 * math.log2(parts) * LATENCY
-            total = compute + latency + volume + gather + reduce
-            print(f"| {label} | {parts} | {unknowns:.0f} | {ms(compute)} | {ms(latency)} | {ms(volume)} "
-                  f"| {ms(gather)} | {ms(reduce)} | {ms(total)} | {compute / total:.0%} |")
+            row = {"scaling": label, "ranks": parts, "unknowns": unknowns, "neighbours": count,
+                   "compute": per_unknown * unknowns, "latency": halo * count * LATENCY,
+                   "volume": per_node * faceNodes / BANDWIDTH, "gather": 2 * (parts - 1) * LATENCY,
+                   "reduce": allreduces * 2 * math.log2(parts) * LATENCY}
+            row["total"] = sum(row[k] for k in ("compute", "latency", "volume", "gather", "reduce"))
+            rows.append(row)
+    return rows
+
+
+def predict():
+    ms = lambda t: f"{1e3 * t:.2f}"
+    print("| scaling | ranks | unknowns per rank | compute | halo latency | halo volume | coarse gather | all-reduces "
+          "| per CG iteration | compute share |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for r in prediction_rows():
+        print(f"| {r['scaling']} | {r['ranks']} | {r['unknowns']:.0f} | {ms(r['compute'])} | {ms(r['latency'])} "
+              f"| {ms(r['volume'])} | {ms(r['gather'])} | {ms(r['reduce'])} | {ms(r['total'])} "
+              f"| {r['compute'] / r['total']:.0%} |")
 
 
 if __name__ == "__main__":
