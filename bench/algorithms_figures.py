@@ -21,31 +21,10 @@ SECTION is one of
                   constraints switch (preconditioners-algebraic-rebuild.json).
 Each prints Markdown: a sentence or a bullet list.
 """
-import json
-import os
-import sys
-
 from preconditioners_table import approximate, first_last, load
+from quoted_figures import SEQUENCES, count, records, results, run, span
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-DIMENSION = {"2d": "2D P1", "3d": "3D P1"}
-SEQUENCE = {**DIMENSION, "2d-p2": "2D P2", "2d-p3": "2D P3", "3d-p2": "3D P2"}
-
-
-def results(name):
-    with open(os.path.join(ROOT, "bench", "results", name + ".json")) as f:
-        return json.load(f)
-
-
-def span(values, form="{}"):
-    """"a–b" over the values, or "a" if they are all alike."""
-    low, high = form.format(min(values)), form.format(max(values))
-    return low if low == high else f"{low}–{high}"
-
-
-def count(n):
-    """An integer with its thousands apart: 823 875."""
-    return f"{n:,}".replace(",", " ")
+DIMENSION = {s: SEQUENCES[s] for s in ("2d", "3d")}
 
 
 def seconds(t):
@@ -65,7 +44,7 @@ def fewer(percentages):
 
 
 def primal():
-    runs = [r["summary"] for r in results("table2")["runs"] if r["summary"]["method"] == "primal"]
+    runs = [r["summary"] for r in records("table2") if r["summary"]["method"] == "primal"]
     print(f"On problems A–M (`bench/results/table2.json`, {span([s['ranks'] for s in runs])} rank) the primal "
           f"method takes {span([s['newton_steps'] for s in runs])} Newton steps in "
           f"{span([s['outer_iterations'] for s in runs])} main iterations.")
@@ -92,8 +71,8 @@ def v_cycles():
     share = [100 * c["contact"]["newton_systems"] / (c["contact"]["cg_iterations"] + c["contact"]["newton_systems"])
              for c in cases]
     print(f"On the family's members in `bench/results/reference-solve.json` a Newton system takes "
-          f"{span(per_system, '{:.1f}')} CG iterations on average, so that a last application per system "
-          f"would be {span(share, '{:.0f}')}% of all V-cycles.")
+          f"{span(per_system, 1)} CG iterations on average, so that a last application per system "
+          f"would be {span(share, 0)}% of all V-cycles.")
 
 
 def component_members(runs):
@@ -140,7 +119,7 @@ def weight_cap():
     for sequence in ("2d", "2d-p2", "2d-p3"):
         default = approximate_defaults(runs, sequence)[0]
         uncapped = runs[(sequence, default["nx"], "unfiltered", "reduction")]
-        print(f"- {default['problem']} ({SEQUENCE[sequence]}): {first_last(default).replace(' / ', ' → ')} against "
+        print(f"- {default['problem']} ({SEQUENCES[sequence]}): {first_last(default).replace(' / ', ' → ')} against "
               f"{first_last(uncapped).replace(' / ', ' → ')};")
     saved = [100 * (1 - d["summary"]["krylov_iterations"]
                     / runs[(s, d["nx"], "unfiltered", "reduction")]["summary"]["krylov_iterations"])
@@ -149,7 +128,7 @@ def weight_cap():
 
 
 def direct_solvers():
-    runs = results("direct-solvers")["runs"]
+    runs = records("direct-solvers")
     print("Refactorization on one rank, CHOLMOD against KLU2 (`bench/results/direct-solvers.json`):")
     print()
     for dim in sorted({r["dim"] for r in runs}, reverse=True):
@@ -164,11 +143,11 @@ def gmsh_pk_ratios(runs, path, key):
     base = {(r["problem"], r["degree"], r["size_factor"]): r for r in runs if r["path"] == "matrix-free"}
     ratios = [r[key] / base[(r["problem"], r["degree"], r["size_factor"])][key] for r in runs
               if r["path"] == path and (r["problem"], r["degree"], r["size_factor"]) in base]
-    return span(ratios, "{:.1f}")
+    return span(ratios, 1)
 
 
 def gmsh_pk():
-    runs = [r for r in results("gmsh-pk")["runs"] if r["status"] == "converged"]
+    runs = [r for r in records("gmsh-pk") if r["status"] == "converged"]
     meshes = len({(r["problem"], r["degree"], r["size_factor"]) for r in runs})
     print("Against the P1 level on the mesh's vertices (the `matrix-free` rows of `bench/results/gmsh-pk.json`, "
           f"{meshes} meshes):")
@@ -224,7 +203,7 @@ def algebraic_rebuild():
     pairs = [(switching[m], every[m]) for m in sorted(switching)]
 
     def ratio(get):
-        return span([get(a) / get(b) for a, b in pairs], "{:.2f}")
+        return span([get(a) / get(b) for a, b in pairs], 2)
     print(f"- MueLu alone (`bench/results/preconditioners-algebraic-rebuild.json`, {len(pairs)} P1 members), rebuilt "
           f"when constraints switch against at every step: {span([a['preconditioner_setups'] for a, _ in pairs])} "
           f"setups per solve against {span([b['preconditioner_setups'] for _, b in pairs])}, "
@@ -242,6 +221,4 @@ SECTIONS = {"primal": primal, "v-cycles": v_cycles, "starts": starts, "weight-ca
             "direct-solvers": direct_solvers, "gmsh-pk": gmsh_pk, "rebuilds": rebuilds}
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2 or sys.argv[1] not in SECTIONS:
-        sys.exit(f"usage: {sys.argv[0]} {'|'.join(SECTIONS)}")
-    SECTIONS[sys.argv[1]]()
+    run(SECTIONS)

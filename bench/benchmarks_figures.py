@@ -11,49 +11,25 @@ that compares is worded from the data: it says what holds in the current files, 
 of a set rewrites it.
 """
 import datetime
-import json
-import os
 import statistics
-import sys
 
 from preconditioners_table import approximate, barrier_steps, finish_krylov, load as load_runs, ratios
+from quoted_figures import SEQUENCES, records, results, run, span
 from ratios_table import TARGETS
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 LARGE = 1e5  # "the members with more than 10⁵ unknowns"
 MACHINE_BYTES = 24e9  # the memory of the machine the largest matrix-free sets were sized for
-SEQUENCES = {"2d": "2D P1", "3d": "3D P1", "2d-p2": "2D P2", "2d-p3": "2D P3", "3d-p2": "3D P2"}
 TARGET_NAMES = ("the largest count per system", "the totals", "last over first step")  # of ratios_table's TARGETS
 
 
 # ---------------------------------------------------------------- helpers
-
-def load(name):
-    with open(os.path.join(ROOT, "bench", "results", name + ".json")) as f:
-        return json.load(f)
-
-
-def records(name):
-    data = load(name)
-    return data["runs"] if isinstance(data, dict) else data
-
-
-def number(value, digits):
-    return f"{value:.{digits}f}"
-
-
-def span(values, digits=1, suffix=""):
-    """'low–high' of the values as printed with the digits, or one value where they agree."""
-    low, high = number(min(values), digits), number(max(values), digits)
-    return (low if low == high else f"{low}–{high}") + suffix
-
 
 def percent_span(fractions):
     return span([100 * f for f in fractions], 0, "%")
 
 
 def seconds(value):
-    return number(value, 2 if value < 10 else 1)
+    return f"{value:.{2 if value < 10 else 1}f}"
 
 
 def words(items, empty="none"):
@@ -96,7 +72,7 @@ def ratio_clause(ratios_by_name, better_below_one, noun):
 
 def noise():
     """Spread of the repeated solves of reference-solve.json, the set that repeats them."""
-    cases = [c for c in load("reference-solve")["cases"] if c["contact"]["n"] > LARGE]
+    cases = [c for c in results("reference-solve")["cases"] if c["contact"]["n"] > LARGE]
     spreads = [max(runs) / min(runs) - 1 for c in cases for runs in
                (c["contact"]["solve_seconds_per_run"], c["reference"]["solve_seconds_per_run"])]
     repeats = sorted({c["repeats"] for c in cases})
@@ -154,7 +130,7 @@ def fixed_centering():
     where = "every problem" if len(finished) == len(problems) else (words(finished) if finished else "no problem")
     ratio = {p: f[p]["time"]["solve"] / m[p]["time"]["solve"] for p in problems}
     largest = max(problems, key=lambda p: f[p]["n"])
-    dates = (load("table2")["provenance"]["date"], load("table2-fixed-centering")["provenance"]["date"])
+    dates = (results("table2")["provenance"]["date"], results("table2-fixed-centering")["provenance"]["date"])
     print(f"The fixed rule takes {span([s['outer_iterations'] for s in f.values()], 0)} main iterations with "
           f"{systems}, the last of them an active-set finish on {where} (Mehrotra: "
           f"{span([s['outer_iterations'] for s in m.values()], 0)} main iterations, "
@@ -169,14 +145,14 @@ def fixed_centering():
 # ---------------------------------------------------------------- reference solve
 
 def reference_solve():
-    cases = load("reference-solve")["cases"]
+    cases = results("reference-solve")["cases"]
     large = [c for c in cases if c["contact"]["n"] > LARGE]
     paper = [c for c in cases if c["problem"].startswith("paper/")]
     one = [c["problem"].split("/")[1] for c in paper if c["reference"]["cg_iterations"] == 1]
     of = lambda chosen, key: [c[key] for c in chosen]  # noqa: E731
-    print(f"- Members with more than 10⁵ unknowns: the contact solve takes {span(of(large, 'solve_time_ratio'))} "
-          f"times the reference's time and {span(of(large, 'cg_ratio'))} times its CG iterations; problems A–M: "
-          f"{span(of(paper, 'solve_time_ratio'))} and {span(of(paper, 'cg_ratio'))}"
+    print(f"- Members with more than 10⁵ unknowns: the contact solve takes {span(of(large, 'solve_time_ratio'), 1)} "
+          f"times the reference's time and {span(of(large, 'cg_ratio'), 1)} times its CG iterations; problems A–M: "
+          f"{span(of(paper, 'solve_time_ratio'), 1)} and {span(of(paper, 'cg_ratio'), 1)}"
           + (f" (the reference takes one CG iteration on {words(one)})." if one else "."))
     share = [c["contact"]["seconds"]["amg_setup"] / c["contact"]["seconds"]["solve"] for c in large]
     setups = lambda run: span([c[run]["amg_setups"] for c in large], 0)  # noqa: E731
@@ -219,8 +195,8 @@ def ipopt():
     head = ("Signorini is faster on every problem" if len(faster) == len(runs) else
             f"Signorini is faster on {words(faster)}" if faster else "Signorini is faster on none")
     smallest = min(runs, key=lambda r: r["n"])["problem"]
-    print(f"- {head}: IPOPT's best takes {span(small.values())} times as long on the problems below 10⁴ unknowns "
-          f"({ratio[smallest]:.1f} on {smallest}, the smallest), {span(large.values())} times on "
+    print(f"- {head}: IPOPT's best takes {span(small.values(), 1)} times as long on the problems below 10⁴ unknowns "
+          f"({ratio[smallest]:.1f} on {smallest}, the smallest), {span(large.values(), 1)} times on "
           f"{words(sorted(large))}" + (f"; IPOPT did not converge on {words(failed)}." if failed else "."))
     counts = " and ".join(f"{span([r['ipopt'][name]['iterations'] for r in runs], 0)} {label}"
                           for name, label in IPOPT_CONFIGS.items())
@@ -300,7 +276,7 @@ def matrix_free_solve():
     assembled = max((r for r in p3 if r["path"] == "assembled"), key=lambda r: r["n"])
     print(f"- Matrix-free, the peak memory per unknown is {percent_span(saved(2))} lower in 2D and "
           f"{percent_span(saved(3))} lower in 3D: {span([r['peak_bytes_per_unknown'] for r in big], 0)} bytes per "
-          f"unknown at 3D P3 with {span([r['n'] / 1e6 for r in big])} M unknowns, against "
+          f"unknown at 3D P3 with {span([r['n'] / 1e6 for r in big], 1)} M unknowns, against "
           f"{assembled['peak_bytes_per_unknown']:.0f} assembled with {millions(assembled['n'])}.")
     for line in same_memory(runs):
         print(line)
@@ -486,7 +462,7 @@ def rebuild_time(runs):
     small = time_ratios([p for p in pairs if p[0]["summary"]["n"] < LARGE])
     large = time_ratios([p for p in pairs if p[0]["summary"]["n"] >= LARGE])
     unfiltered = time_ratios(pairs_of(runs, "unfiltered"))
-    case = next(c for c in load("reference-solve")["cases"] if c["problem"] == "family/3d-p1-nx64")["contact"]
+    case = next(c for c in results("reference-solve")["cases"] if c["problem"] == "family/3d-p1-nx64")["contact"]
     return (f"- **Lagged rebuild** against the default: {setups(1)} AMG setups instead of {setups(0)}, "
             f"{span(cg, 2)} times the CG iterations (up to {most} per system); its solve takes "
             f"{span(small.values(), 2)} times the default's below 10⁵ unknowns, {ratio_clause(small, True, 'faster')}, "
@@ -532,7 +508,7 @@ def starting_vectors(runs):
                      f"iterations ({against(pairs)})")
     pair = largest_members(pairs_of(runs, "from zero"))[-1][0]
     table_run = load_runs("preconditioners-forcing")[(pair["sequence"], pair["nx"], "default", "reduction")]
-    case = next((c for c in load("reference-solve")["cases"]
+    case = next((c for c in results("reference-solve")["cases"]
                  if c["contact"]["n"] == pair["summary"]["n"] and c["ranks"] == pair["ranks"]), None)
     reference = (f" and {seconds(case['contact']['seconds']['solve'])} s in `reference-solve.json` (the fastest of "
                  f"{case['repeats']})" if case else "")
@@ -760,7 +736,7 @@ def incompressibility():
     nus = sorted({r["nu"] for r in runs})
     low, high = [nu for nu in nus if nu >= 0.49][0], nus[-1]
     growth = ((1 - 2 * low) / (1 - 2 * high)) ** 0.5
-    grows = words(f"{span([cg[(p, config, high)] / cg[(p, config, low)] for p in problems])} "
+    grows = words(f"{span([cg[(p, config, high)] / cg[(p, config, low)] for p in problems], 1)} "
                   + ("times with the default" if config == "default" else f"with {config}") for config in configs)
     converged = all(r["summary"]["converged"] for r in runs)
     parts = []
@@ -799,11 +775,5 @@ SECTIONS = {
 }
 
 
-def main():
-    if len(sys.argv) != 2 or sys.argv[1] not in SECTIONS:
-        sys.exit(f"usage: benchmarks_figures.py SECTION, one of {', '.join(SECTIONS)}")
-    SECTIONS[sys.argv[1]]()
-
-
 if __name__ == "__main__":
-    main()
+    run(SECTIONS)

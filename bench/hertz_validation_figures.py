@@ -12,12 +12,10 @@ deep-block, two-bodies-2d, two-bodies-3d and punch (a bullet list each). Every f
 every comparison worded from them (which variant is closest, how far a set of runs strays),
 is computed from the JSON.
 """
-import json
-import os
-import sys
 import textwrap
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from quoted_figures import results, run
+
 CONSISTENT, LUMPED, PATCH = ("nodal", "consistent"), ("nodal", "lumped"), ("nodal", "patch")
 WEIGHTED, DUAL = ("weighted gap", "auto"), ("dual mortar", "auto")
 VARIANTS = [CONSISTENT, LUMPED, PATCH, WEIGHTED, DUAL]
@@ -33,11 +31,6 @@ GMSH = {"half-disk-2d", "half-ball-3d", "deep-block-3d"}
 # The README's rows: (example, degree), each on its finest mesh with the default constraints.
 README_ROWS = [("cylinder-2d", 1), ("cylinder-2d", 3), ("sphere-3d", 1), ("sphere-3d", 2), ("sphere-3d", 3),
                ("half-ball-3d", 2), ("deep-block-3d", 1)]
-
-
-def load():
-    with open(os.path.join(ROOT, "bench", "results", "hertz.json")) as f:
-        return json.load(f)
 
 
 def variant(run):
@@ -111,7 +104,8 @@ def joined(runs, key, fmt):
     return ", ".join(fmt(r[key]) for r in runs)
 
 
-def span(runs):
+def mesh_span(runs):
+    """"coarsest to finest" by the runs' mesh labels."""
     return "%s to %s" % (mesh(runs[0]["mesh"]), mesh(runs[-1]["mesh"]))
 
 
@@ -216,7 +210,7 @@ def cylinder(data):
     depth = sorted({"%.2f" % nodal[d][-1]["a_hertz"] for d in ds})
     return [
         bullet("Half-width, nodal constraints, coarsest to finest mesh: " + "; ".join(
-            "P%d %s (%s)" % (d, joined(nodal[d], "a_error", pct), span(nodal[d])) for d in ds) + "."),
+            "P%d %s (%s)" % (d, joined(nodal[d], "a_error", pct), mesh_span(nodal[d])) for d in ds) + "."),
         bullet("Peak pressure on the finest meshes, nodal constraints: " + "; ".join(
             "P%d %s" % (d, finest_by_variant(rows, example, d, "p0_error", pct, [k for k in (CONSISTENT, LUMPED, PATCH)
                                                                                  if series(rows, example, d, k)]))
@@ -226,7 +220,7 @@ def cylinder(data):
                "recovery: " + "; ".join("P%d %s" % (d, joined(nodal[d][1:], "l2_order", order))
                                         for d in ds) + "."),
         bullet("Peak pressure of the lumped recovery for P3, %s: %s." % (
-            span(series(rows, example, 3, LUMPED)), joined(series(rows, example, 3, LUMPED), "p0_error", pct))),
+            mesh_span(series(rows, example, 3, LUMPED)), joined(series(rows, example, 3, LUMPED), "p0_error", pct))),
         bullet("Smallest L² error on the finest mesh: " + "; ".join(smallest_l2(rows, example, d) for d in ds) + "."),
         bullet("Weighted gaps' half-width on the finest meshes against the nodal constraints': " + "; ".join(
             rim_against_nodal(rows, example, d) for d in ds) + "."),
@@ -352,13 +346,14 @@ def p1(data):
     dual_3d = "; ".join("%s %s" % (e, joined(series(rows, e, 1, DUAL), "p0_error", pct))
                         for e in HERTZ if e.endswith("3d"))
     return [
-        bullet("Sphere, contact radius, %s: %s." % (span(sphere[CONSISTENT]), joined(sphere[CONSISTENT], "a_error", pct))),
+        bullet("Sphere, contact radius, %s: %s." % (mesh_span(sphere[CONSISTENT]),
+                                                   joined(sphere[CONSISTENT], "a_error", pct))),
         bullet("Sphere, peak of the lumped recovery, %s: %s (Hertz' contact radius spans %s cells)." % (
-            span(sphere[LUMPED]), joined(sphere[LUMPED], "p0_error", pct), cells_per_radius(sphere[LUMPED]))),
+            mesh_span(sphere[LUMPED]), joined(sphere[LUMPED], "p0_error", pct), cells_per_radius(sphere[LUMPED]))),
         bullet("Sphere, peak on the finest mesh (%s): %s." % (
             mesh(sphere[LUMPED][-1]["mesh"]), finest_by_variant(rows, "sphere-3d", 1, "p0_error", pct))),
         bullet("Sphere, patch average, %s: peak %s; L² error on the finest mesh %s against the lumped "
-               "recovery's %s." % (span(sphere[PATCH]), joined(sphere[PATCH], "p0_error", pct),
+               "recovery's %s." % (mesh_span(sphere[PATCH]), joined(sphere[PATCH], "p0_error", pct),
                                    l2(sphere[PATCH][-1]["l2_error"]), l2(sphere[LUMPED][-1]["l2_error"]))),
         gmsh_p1(rows),
         lumped_against_patch_2d(rows),
@@ -388,8 +383,8 @@ def half_ball(data):
     return [
         bullet("P1, contact radius with nodal constraints within %s on every mesh (%s)." % (bound(worst["a_error"]), where)),
         bullet("P1 peak, %s: %s with the lumped recovery, %s with the patch average." % (
-            span(lumped), joined(lumped, "p0_error", pct), joined(patch, "p0_error", pct))),
-        bullet("P1 L² error of the patch average, %s: %s." % (span(patch), joined(patch, "l2_error", l2))),
+            mesh_span(lumped), joined(lumped, "p0_error", pct), joined(patch, "p0_error", pct))),
+        bullet("P1 L² error of the patch average, %s: %s." % (mesh_span(patch), joined(patch, "l2_error", l2))),
     ]
 
 
@@ -416,7 +411,7 @@ def deep_block(data):
             "P%d (%s) %s" % (d, mesh(finest(rows, example, d, CONSISTENT)["mesh"]),
                              pct(finest(rows, example, d, CONSISTENT)["a_error"])) for d in degrees(rows, example)) + "."),
         bullet("P1 peak, %s (n = %d at the finest): %s with the lumped recovery, %s with the patch average." % (
-            span(lumped), lumped[-1]["n"], joined(lumped, "p0_error", pct), joined(patch, "p0_error", pct))),
+            mesh_span(lumped), lumped[-1]["n"], joined(lumped, "p0_error", pct), joined(patch, "p0_error", pct))),
         deep_p2(rows, example),
     ]
 
@@ -434,7 +429,7 @@ def two_bodies(rows, examples):
                           ", ".join("%s %s" % (BODIES[r["example"]], pct(r["a_error"])) for r in coarse),
                           bound(spacing(coarse[0]) / coarse[0]["a_hertz"]), bound(width["a_error"]),
                           mesh(series(rows, examples[0], 1, DUAL)[1]["mesh"]), width_where)),
-        bullet("L² error, %s: " % span(series(rows, examples[0], 1, DUAL)) + "; ".join(
+        bullet("L² error, %s: " % mesh_span(series(rows, examples[0], 1, DUAL)) + "; ".join(
             "%s %s (observed orders %s)" % (BODIES[e], joined(series(rows, e, 1, DUAL), "l2_error", l2),
                                             joined(series(rows, e, 1, DUAL)[1:], "l2_order", order))
             for e in examples) + "."),
@@ -472,11 +467,10 @@ SECTIONS = {"readme": readme, "force-approach": force_approach, "cylinder": cyli
             "two-bodies-3d": lambda data: two_bodies(data["rows"], ["ball-on-block-3d", "ball-on-stiff-block-3d"])}
 
 
-def main():
-    if len(sys.argv) != 2 or sys.argv[1] not in SECTIONS:
-        sys.exit("usage: hertz_validation_figures.py %s" % "|".join(SECTIONS))
-    print("\n".join(SECTIONS[sys.argv[1]](load())))
+def printed(section):
+    """The section as run calls it: printing its lines, computed from hertz.json."""
+    return lambda: print("\n".join(section(results("hertz"))))
 
 
 if __name__ == "__main__":
-    main()
+    run({name: printed(section) for name, section in SECTIONS.items()})

@@ -20,30 +20,10 @@ SECTION is one of
   beyond         what the predictions of bench/performance_model.py predict say.
 Each prints Markdown: a sentence or a bullet list.
 """
-import json
-import os
-import sys
-
 from performance_model import CASES, calibration, check_rows, prediction_rows
+from quoted_figures import count, records, results, run, span
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 DIMENSION = {"2d-p1-nx200": "2D", "3d-p1-nx40": "3D"}
-
-
-def load(name):
-    with open(os.path.join(ROOT, "bench", "results", name + ".json")) as f:
-        return json.load(f)
-
-
-def span(values, form="{}"):
-    """"a–b" over the values, or "a" if they are all alike."""
-    low, high = form.format(min(values)), form.format(max(values))
-    return low if low == high else f"{low}–{high}"
-
-
-def count(n):
-    """An integer with its thousands apart: 823 875."""
-    return f"{n:,}".replace(",", " ")
 
 
 def signed_span(values):
@@ -53,7 +33,7 @@ def signed_span(values):
 
 
 def family():
-    runs = [r["summary"] for r in load("table2")["runs"] if r["summary"]["method"] == "primal-dual"]
+    runs = [r["summary"] for r in records("table2") if r["summary"]["method"] == "primal-dual"]
     ranks = span([s["ranks"] for s in runs])
     print(f"Per solve of problems A–M with the primal-dual method ({ranks} rank, `bench/results/table2.json`): "
           f"{span([s['outer_iterations'] for s in runs])} main iterations, "
@@ -63,24 +43,24 @@ def family():
 
 def mueLu_complexity():
     """Operator complexity of MueLu's smoothed aggregation alone, per dimension."""
-    dims = {s["summary"]["problem"]: s["summary"]["d"] for s in load("table2")["runs"]}
+    dims = {s["summary"]["problem"]: s["summary"]["d"] for s in records("table2")}
     by_dim = {}
-    for r in load("amg-variants")["runs"]:
+    for r in records("amg-variants"):
         if r["variant"] == "smoothed aggregation" and r["operator_complexity"] is not None:
             name = r["problem"].split("/")[1]
             dim = dims.get(name) or int(name[0])  # "paper/J", or "family/3d-p1-nx40"
             by_dim.setdefault(dim, []).append(r["operator_complexity"])
-    return ", ".join(f"{span(v, '{:.2f}')} in {d}D P1" for d, v in sorted(by_dim.items()))
+    return ", ".join(f"{span(v, 2)} in {d}D P1" for d, v in sorted(by_dim.items()))
 
 
 def memory():
-    assembly = load("assembly")["runs"]
+    assembly = records("assembly")
     rows = {(r["dim"], r["degree"]): r["nonzeros"] / r["n"] for r in assembly if r["ranks"] == 1}
     print("- Nonzeros per row of Q (`bench/results/assembly.json`): "
           + ", ".join(f"{v:.0f} in {d}D P{k}" for (d, k), v in sorted(rows.items())) + ".")
     print(f"- Operator complexity of MueLu's hierarchy alone (smoothed aggregation, "
           f"`bench/results/amg-variants.json`): {mueLu_complexity()}.")
-    cases = [c for c in load("reference-solve")["cases"] if c["problem"].startswith("family/3d-p1")]
+    cases = [c for c in results("reference-solve")["cases"] if c["problem"].startswith("family/3d-p1")]
     largest = sorted(cases, key=lambda c: c["contact"]["n"])[-2:]
     print("- Peak memory of whole 3D P1 solves (`bench/results/reference-solve.json`): "
           + ", ".join(f"{c['contact']['peak_bytes_per_unknown']:.0f} bytes per unknown at "
@@ -97,22 +77,22 @@ def memory():
 
 def fixed_mib():
     """A rank's fixed memory: the peak of problem A (50 unknowns) on one rank."""
-    run = next(r["summary"] for r in load("table2")["runs"] if r["summary"]["problem"] == "A")
+    run = next(r["summary"] for r in records("table2") if r["summary"]["problem"] == "A")
     return run["memory_mib"]["max_rank"]
 
 
 def matrix_free():
-    stored = [r for r in load("matrix-free")["runs"] if r["degree"] > 1]
+    stored = [r for r in records("matrix-free") if r["degree"] > 1]
     parts = []
     for dim, degree in sorted({(r["dim"], r["degree"]) for r in stored}):
         same = [r for r in stored if (r["dim"], r["degree"]) == (dim, degree)]
         free = [r["matrix_free_bytes_per_unknown"] for r in same]
         assembled = [r["assembled_bytes_per_unknown"] for r in same]
-        parts.append(f"{span(free, '{:.0f}')} bytes at {dim}D P{degree} ({span(assembled, '{:.0f}')} assembled)")
+        parts.append(f"{span(free, 0)} bytes at {dim}D P{degree} ({span(assembled, 0)} assembled)")
     print("- Stored per unknown by the matrix-free stiffness (`bench/results/matrix-free.json`): "
           + ", ".join(parts) + ".")
     runs = [r for name in ("matrix-free-solve", "matrix-free-solve-largest-p2", "matrix-free-solve-largest-p3")
-            for r in load(name)["runs"] if r["dim"] == 3 and r["status"] == "converged"]
+            for r in records(name) if r["dim"] == 3 and r["status"] == "converged"]
     fixed = fixed_mib()
     parts = []
     for degree in sorted({r["degree"] for r in runs}):
@@ -125,11 +105,11 @@ def matrix_free():
 
 
 def two_ranks():
-    return {r["case"]: r for r in load("communication")["runs"] if r["ranks"] == 2}
+    return {r["case"]: r for r in records("communication") if r["ranks"] == 2}
 
 
 def iterations():
-    runs = load("communication")["runs"]
+    runs = records("communication")
     for case in CASES:
         counts = sorted({(r["main_iterations"], r["newton_systems"], r["cg_iterations"])
                          for r in runs if r["case"] == case})
@@ -162,7 +142,7 @@ def reductions():
 
 
 def calibration_figures():
-    runs = load("communication")["runs"]
+    runs = records("communication")
     halos = ", ".join(f"{calibration(runs, c)[0]:.1f} in {DIMENSION[c]}" for c in CASES)
     print(f"E = {halos} (`bench/results/communication.json`).")
 
@@ -193,7 +173,7 @@ def beyond():
     where = f"at {', '.join(map(str, over))} of {counts} ranks" if over else f"at none of {counts} ranks"
     print(f"- Strong scaling: the coarsest-grid gather exceeds the compute {where} "
           f"({1e3 * last['gather']:.2f} against {1e3 * last['compute']:.2f} ms at {last['ranks']} ranks).")
-    print(f"- Halo latency per CG iteration: {span([1e3 * r['latency'] for r in rows], '{:.2f}')} ms "
+    print(f"- Halo latency per CG iteration: {span([1e3 * r['latency'] for r in rows], 2)} ms "
           f"({span([r['neighbours'] for r in rows])} neighbours); all-reduces at most "
           f"{1e3 * max(r['reduce'] for r in rows):.2f} ms.")
 
@@ -203,6 +183,4 @@ SECTIONS = {"family": family, "memory": memory, "matrix-free": matrix_free, "ite
             "calibration": calibration_figures, "agreement": agreement, "beyond": beyond}
 
 if __name__ == "__main__":
-    if len(sys.argv) != 2 or sys.argv[1] not in SECTIONS:
-        sys.exit(f"usage: {sys.argv[0]} {'|'.join(SECTIONS)}")
-    SECTIONS[sys.argv[1]]()
+    run(SECTIONS)
