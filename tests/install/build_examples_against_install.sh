@@ -94,3 +94,9 @@ test -s "$work/paper-pipeline/output/solution.pvtu"
 build_example hertz-gmsh
 mpiexec -np 2 "$work/hertz-gmsh/hertz_gmsh" "$source_dir/examples/hertz/half-disk-2d.geo" 0.5
 mpiexec -np 2 "$work/hertz-gmsh/hertz_gmsh" "$source_dir/examples/hertz/half-disk-2d.geo" 1 1
+build_example two-bodies
+two_bodies=$(mpiexec -np 2 "$work/two-bodies/two_bodies" "$source_dir/examples/bodies/disk-on-block-2d.geo" 100) ||
+  { echo "the two-bodies example does not solve"; exit 1; }
+echo "$two_bodies"
+echo "$two_bodies" | awk '/imbalance/ { found = 1; if ($(NF - 3) + 0 > 1e-10) exit 1 } END { if (!found) exit 1 }' ||
+  { echo "two_bodies: action and reaction do not balance to 1e-10"; exit 1; }
