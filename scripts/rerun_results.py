@@ -9,9 +9,11 @@ commit's (build/bin/signorini --version).
 
 --stale reruns the sets that scripts/stale_results.py reports, --only the named ones (the
 file names without .json); --list prints each set and its command. Without either, every
-cited set runs: that takes hours on 2 cores (hertz, gmsh-meshes, scaling and the
-preconditioner sets are the long ones). --check exits with an error if a cited set has no
-command here or a command names a script that does not exist (a test runs it).
+cited set runs: that takes hours on 2 cores (hertz, gmsh-meshes, the two --largest
+matrix-free sets and the preconditioner sets are the long ones), more than one sitting may
+hold: the sets made in several sittings stay current as long as src/ and include/ do not
+change between them. --check exits with an error if a cited set has no command here or a
+command names a script that does not exist (a test runs it).
 """
 import argparse
 import os
