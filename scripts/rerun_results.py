@@ -43,7 +43,7 @@ COMMANDS = {
     "matrix-free": ["bench/matrix_free.py"],
     "matrix-free-solve": ["bench/matrix_free_solve.py"],
     "matrix-free-solve-largest-p2": ["bench/matrix_free_solve.py", "--largest", "2"],
-    "matrix-free-solve-largest-p3": ["bench/matrix_free_solve.py", "--largest"],
+    "matrix-free-solve-largest-p3": ["bench/matrix_free_solve.py", "--largest", "3"],
     "preconditioners-algebraic-rebuild": ["bench/preconditioners.py", "--configs", "algebraic,algebraic default",
                                           "--forcing", "reduction", "--max-nx", "400", "--max-nx-3d", "40",
                                           "--name", "preconditioners-algebraic-rebuild"],
