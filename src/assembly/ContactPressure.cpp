@@ -61,15 +61,17 @@ class RestrictedOperator : public Operator {
 using Facets = std::vector<std::pair<long long, int>>;
 
 // The constraints of the contact facets' nodes on this rank: the owned ones, then the
-// ghosts' in ascending order (FECrsGraph wants the owned map as a prefix).
+// ghosts' in ascending order (FECrsGraph wants the owned map as a prefix). Between bodies,
+// the nodes that the master boundary does not cover have none.
 std::vector<GlobalOrdinal> overlapConstraintRows(const LagrangeSpace& space, const Facets& facets,
                                                  const std::vector<long long>& constraintOfNode,
-                                                 const Map& constraintMap) {
+                                                 const Map& constraintMap, bool betweenBodies) {
   auto owned = constraintMap.getNodeElementList();
   std::vector<GlobalOrdinal> rows(owned.begin(), owned.end()), ghosts;
   for (const auto& [cell, facet] : facets)
     for (int a : space.basis().facetNodes(facet)) {
       const long long k = constraintOfNode[space.cellNodes(cell)[a]];
+      if (k < 0 && betweenBodies) continue;
       if (k < 0) throw Error("contact pressure: a contact facet node has no constraint");
       if (!constraintMap.isNodeGlobalElement(k)) ghosts.push_back(k);
     }
@@ -79,9 +81,9 @@ std::vector<GlobalOrdinal> overlapConstraintRows(const LagrangeSpace& space, con
   return rows;
 }
 
-// The boundary mass matrix's graph: every pair of nodes of a contact facet; an owned
-// constraint with no facet on any rank (cannot happen for nodes of contact facets) keeps a
-// diagonal. columns[i]: the sorted columns of overlap row i.
+// The boundary mass matrix's graph: every pair of constrained nodes of a contact facet; an
+// owned constraint with no facet on any rank (cannot happen for nodes of contact facets) keeps
+// a diagonal. columns[i]: the sorted columns of overlap row i.
 RCP<FEGraph> boundaryMassGraph(const LagrangeSpace& space, const Facets& facets, const std::vector<int>& overlapIndex,
                                const std::vector<GlobalOrdinal>& rows, const RCP<const Map>& constraintMap,
                                const RCP<const Map>& overlapMap, std::vector<std::vector<GlobalOrdinal>>& columns) {
@@ -89,8 +91,10 @@ RCP<FEGraph> boundaryMassGraph(const LagrangeSpace& space, const Facets& facets,
   for (const auto& [cell, facet] : facets) {
     const auto nodes = space.basis().facetNodes(facet);
     for (int a : nodes)
-      for (int b : nodes)
-        columns[overlapIndex[space.cellNodes(cell)[a]]].push_back(rows[overlapIndex[space.cellNodes(cell)[b]]]);
+      for (int b : nodes) {
+        const int i = overlapIndex[space.cellNodes(cell)[a]], j = overlapIndex[space.cellNodes(cell)[b]];
+        if (i >= 0 && j >= 0) columns[i].push_back(rows[j]);
+      }
   }
   Kokkos::DualView<std::size_t*, FEGraph::device_type> counts("entries per row", rows.size());
   for (std::size_t i = 0; i < rows.size(); ++i) {
@@ -128,8 +132,10 @@ RCP<CrsMatrix> boundaryMass(const DistributedSpace& ds, const Facets& facets, co
     facetQuadrature(space.basis(), coords.data(), facet, 2 * space.degree(), rule);
     const auto nodes = space.basis().facetNodes(facet);
     for (int a : nodes) {
+      if (overlapIndex[space.cellNodes(cell)[a]] < 0) continue;  // no constraint
       const GlobalOrdinal row = rows[overlapIndex[space.cellNodes(cell)[a]]];
       for (int b : nodes) {
+        if (overlapIndex[space.cellNodes(cell)[b]] < 0) continue;
         double value = 0;
         for (int q = 0; q < rule.size(); ++q) value += rule.weights[q] * rule.phi[q * n + a] * rule.phi[q * n + b];
         const GlobalOrdinal col = rows[overlapIndex[space.cellNodes(cell)[b]]];
@@ -191,7 +197,7 @@ ContactPressure::ContactPressure(const FiniteElementSpace& feSpace, const Proble
   const auto& overlapNodes = ds.overlapSpaceNodes();
   std::vector<long long> constraintOfNode(space.numNodes(), -1);
   for (std::size_t i = 0; i < overlapNodes.size(); ++i) constraintOfNode[overlapNodes[i]] = overlapNodeConstraint_[i];
-  const std::vector<GlobalOrdinal> rows = overlapConstraintRows(space, facets_, constraintOfNode, *constraintMap);
+  const std::vector<GlobalOrdinal> rows = overlapConstraintRows(space, facets_, constraintOfNode, *constraintMap, betweenBodies_);
   overlapMap_ = rcp(new Map(Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid(),
                             Teuchos::ArrayView<const GlobalOrdinal>(rows), 0, constraintMap->getComm()));
   overlapIndex_.assign(space.numNodes(), -1);
@@ -228,8 +234,11 @@ RCP<Vector> ContactPressure::nodalValues(const Vector& coefficients) const {
   for (const auto& [cell, facet] : facets_) {
     const auto nodes = space.basis().facetNodes(facet);
     for (int b : nodes) {
+      if (overlapIndex_[space.cellNodes(cell)[b]] < 0) continue;  // no constraint
       double value = 0;
-      for (int a : nodes) value += c[overlapIndex_[space.cellNodes(cell)[a]]] * multipliers_->coefficient(facet, a, b);
+      for (int a : nodes)
+        if (overlapIndex_[space.cellNodes(cell)[a]] >= 0)
+          value += c[overlapIndex_[space.cellNodes(cell)[a]]] * multipliers_->coefficient(facet, a, b);
       here.replaceLocalValue(overlapIndex_[space.cellNodes(cell)[b]], value);
     }
   }
@@ -244,9 +253,13 @@ RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
   for (const auto& [cell, facet] : facets_) {
     const auto nodes = space.basis().facetNodes(facet);
     bool loaded = false;
-    for (int a : nodes) loaded = loaded || activeHere[overlapIndex_[space.cellNodes(cell)[a]]] != 0.0;
+    for (int a : nodes) {
+      const int i = overlapIndex_[space.cellNodes(cell)[a]];
+      loaded = loaded || (i >= 0 && activeHere[i] != 0.0);
+    }
     if (loaded)
-      for (int a : nodes) loadedHere.replaceLocalValue(overlapIndex_[space.cellNodes(cell)[a]], 1.0);
+      for (int a : nodes)
+        if (overlapIndex_[space.cellNodes(cell)[a]] >= 0) loadedHere.replaceLocalValue(overlapIndex_[space.cellNodes(cell)[a]], 1.0);
   }
   auto loaded = rcp(new Vector(constraintMap_));
   loaded->doExport(loadedHere, Export(overlapMap_, constraintMap_), Tpetra::ADD);
@@ -257,14 +270,22 @@ RCP<Vector> ContactPressure::loadedNodes(const Vector& active) const {
 
 int ContactPressure::dim() const { return space_.dim(); }
 
+// The nodes of the contact facets, constrained or not (between bodies the master boundary
+// may cover the contact boundary in part, and the rows move the nodes it leaves out too).
 RCP<Vector> ContactPressure::contactBoundaryDofs() const {
   const DistributedSpace& ds = distributedSpace(space_);
+  const LagrangeSpace& space = ds.space();
   const int dim = ds.dim();
+  const auto& overlapNodes = ds.overlapSpaceNodes();
+  std::vector<LocalOrdinal> overlapIndex(space.numNodes(), -1);
+  for (std::size_t i = 0; i < overlapNodes.size(); ++i) overlapIndex[overlapNodes[i]] = static_cast<LocalOrdinal>(i);
+  Vector here(ds.overlapDofMap());
+  for (const auto& [cell, facet] : facets_)
+    for (int a : space.basis().facetNodes(facet))
+      for (int c = 0; c < dim; ++c) here.replaceLocalValue(dim * overlapIndex[space.cellNodes(cell)[a]] + c, 1.0);
   auto dofs = rcp(new Vector(ds.ownedDofMap()));
-  auto data = dofs->getDataNonConst();
-  for (std::size_t i = 0; i < ds.ownedNodeMap()->getNodeNumElements(); ++i)  // owned nodes come first
-    if (overlapNodeConstraint_[i] >= 0)
-      for (int c = 0; c < dim; ++c) data[dim * i + c] = 1.0;
+  dofs->doExport(here, Export(ds.overlapDofMap(), ds.ownedDofMap()), Tpetra::ADD);
+  for (auto& x : dofs->getDataNonConst()) x = x > 0 ? 1.0 : 0.0;
   return dofs;
 }
 
@@ -358,7 +379,8 @@ void ContactPressure::forEachQuadraturePoint(const Vector& pressure, Visit&& vis
     const auto nodes = space.basis().facetNodes(facet);
     for (int q = 0; q < rule.size(); ++q) {
       double p = 0;
-      for (int a : nodes) p += rule.phi[q * n + a] * values[overlapIndex_[space.cellNodes(cell)[a]]];
+      for (int a : nodes)  // none where the node has no constraint
+        if (overlapIndex_[space.cellNodes(cell)[a]] >= 0) p += rule.phi[q * n + a] * values[overlapIndex_[space.cellNodes(cell)[a]]];
       visit(&rule.points[q * dim], rule.weights[q], p);
     }
   }

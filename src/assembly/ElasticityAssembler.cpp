@@ -287,16 +287,36 @@ ContactConstraints weightedGapConstraints(const DistributedSpace& ds, const Prob
 
 }  // namespace
 
-// One constraint per contact node of each pair, numbered pair after pair on each rank and in
-// the order of the renumbered nodes within a pair. Ranks own contiguous node ranges in rank
-// order, so a rank's constraints start after the contact nodes of the ranks before it.
+namespace {
+
+// Whether each space node of this rank may carry a constraint of the pair: every node of its
+// contact boundary against a rigid obstacle, the nodes that the master boundary covers
+// against another body (refused if there are none).
+std::vector<char> constrainableNodes(const DistributedSpace& ds, const ContactPair& pair) {
+  std::vector<char> result(ds.space().numNodes(), pair.masterBoundary.empty());
+  if (pair.masterBoundary.empty()) return result;
+  const std::vector<char> covered = coveredSlaveNodes(ds, pair);
+  for (std::size_t i = 0; i < covered.size(); ++i) result[ds.overlapSpaceNodes()[i]] = covered[i];
+  if (maxOverRanks(*ds.comm(), static_cast<double>(std::count(covered.begin(), covered.end(), 1))) == 0)
+    throw InputError(pair.path() + ": the master boundary \"" + pair.masterBoundary + "\" covers no node of the contact "
+                     "boundary \"" + pair.boundary + "\": no facet of it faces the contact boundary");
+  return result;
+}
+
+}  // namespace
+
+// One constraint per contact node of each pair (against another body, per node that the master
+// boundary covers), numbered pair after pair on each rank and in the order of the renumbered
+// nodes within a pair. Ranks own contiguous node ranges in rank order, so a rank's constraints
+// start after the contact nodes of the ranks before it.
 OwnedContactNodes ownedContactNodes(const DistributedSpace& ds, const ProblemDefinition& problem) {
   OwnedContactNodes result;
   result.pairStart.push_back(0);
   for (const ContactPair& pair : problem.contacts) {
     const auto begin = result.nodes.size();
+    const std::vector<char> constrainable = constrainableNodes(ds, pair);
     for (long long node : ds.boundaryNodes(ds.mesh().tag(pair.boundary)))
-      if (ds.ownsNode(node)) result.nodes.push_back(node);
+      if (ds.ownsNode(node) && constrainable[node]) result.nodes.push_back(node);
     std::sort(result.nodes.begin() + begin, result.nodes.end(),
               [&](long long a, long long b) { return ds.globalNode(a) < ds.globalNode(b); });
     result.pairStart.push_back(result.nodes.size());
@@ -363,14 +383,23 @@ RCP<Vector> contactNodeWeights(const DistributedSpace& ds, const ProblemDefiniti
       (!contact.nodes.empty() && constraintMap->getMinGlobalIndex() != contact.first))
     throw Error("contact weights: the constraint map is not distributed like the contact nodes");
   // Constraint first + k belongs to the k-th owned contact node.
-  auto out = weights->getDataNonConst();
   for (std::size_t p = 0; p < problem.contacts.size(); ++p) {
     if (onlyPair && *onlyPair != p) continue;
-    const RCP<const Vector> owned = ownedNodeWeights(ds, problem.contacts[p]);
-    auto in = owned->getData();
-    for (std::size_t k = contact.pairStart[p]; k < contact.pairStart[p + 1]; ++k)
-      out[constraintMap->getLocalElement(contact.first + k)] =
-          in[ds.ownedNodeMap()->getLocalElement(ds.globalNode(contact.nodes[k]))];
+    RCP<const Vector> pairWeights;
+    if (problem.contacts[p].masterBoundary.empty()) {
+      pairWeights = ownedNodeWeights(ds, problem.contacts[p]);
+    } else {  // over the part that the master boundary covers, on the pair's rows
+      const auto constraintOf = overlapNodeConstraints(ds, problem, p);
+      pairWeights = mortarConstraints(ds, problem.contacts[p], constraintOf, constraintMap).weights;
+    }
+    auto in = pairWeights->getData();
+    auto out = weights->getDataNonConst();
+    for (std::size_t k = contact.pairStart[p]; k < contact.pairStart[p + 1]; ++k) {
+      const LocalOrdinal row = constraintMap->getLocalElement(contact.first + k);
+      out[row] = problem.contacts[p].masterBoundary.empty()
+                     ? in[ds.ownedNodeMap()->getLocalElement(ds.globalNode(contact.nodes[k]))]
+                     : in[row];
+    }
   }
   return weights;
 }

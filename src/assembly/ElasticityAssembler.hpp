@@ -45,8 +45,9 @@ RCP<MatrixFreeElasticityOperator> matrixFreeStiffness(const std::shared_ptr<cons
 // A is node nodes[k]. Each rank holds its nodes of every pair, pair after pair (those of pair
 // p are nodes[pairStart[p] .. pairStart[p + 1])), each pair's in the order of the renumbered
 // nodes, so each rank owns the contiguous range [first, first + nodes.size()) of the
-// numGlobal constraints. A node on the contact boundaries of two pairs has a row in each.
-// Collective.
+// numGlobal constraints. A node on the contact boundaries of two pairs has a row in each. A
+// pair between two bodies has rows at the slave nodes that its master boundary covers only
+// (coveredSlaveNodes). Collective.
 struct OwnedContactNodes {
   GlobalOrdinal first = 0;
   long long numGlobal = 0;
@@ -62,8 +63,8 @@ std::vector<long long> overlapNodeConstraints(const DistributedSpace& space, con
 
 // The contact boundary's measure lumped to the contact nodes, on A's range map: HRZ lumping
 // of the P_k basis for nodal constraints (positive for every degree), the integral of the
-// multiplier function psi for weighted gaps. Each node stands for this much of Gamma_c.
-// Every pair's, or only those of `onlyPair` (0 on the other rows).
+// multiplier function psi for weighted gaps (between bodies, over the part of Gamma_c that
+// the master covers). Each node stands for this much of Gamma_c. Every pair's, or only those of `onlyPair` (0 on the other rows).
 RCP<Vector> contactNodeWeights(const DistributedSpace& space, const ProblemDefinition& problem,
                                const RCP<const Map>& constraintMap, std::optional<std::size_t> onlyPair = std::nullopt);
 

@@ -16,6 +16,14 @@
 // is constant passes from one side to the other exactly (the contact patch test). Each rank
 // integrates its own slave facets; the master facets it needs come from the ranks that hold
 // them, chosen by the bounding box of its slave facets (no rank gathers a whole surface).
+//
+// The master boundary may cover the slave boundary in part. A slave node has a constraint
+// where it lies on a covered piece of one of its facets (coveredSlaveNodes); the others have
+// none, and on a facet with nodes of both kinds the multiplier functions of the nodes without
+// a constraint are shared out equally among the others (Wohlmuth's modification at the
+// boundary of the contact zone): the functions still sum to one on the covered pieces, so a
+// constant pressure still passes from one side to the other exactly. A covered piece that
+// holds none of its facet's nodes is not constrained.
 #include <vector>
 
 #include "assembly/DistributedSpace.hpp"
@@ -27,13 +35,20 @@ namespace signorini {
 struct MortarRows {
   RCP<CrsMatrix> A;  // rows on constraintMap, columns the owned DOFs of both bodies
   RCP<Vector> d;
+  RCP<Vector> weights;  // the integral of each row's multiplier function over the covered pieces
 };
 
+// Whether each overlap node (overlapSpaceNodes() order) is a node of the slave boundary that
+// lies on a covered piece of one of its facets, on any rank. Throws InputError for the same
+// boundary on both sides and a formulation it does not support. Collective.
+std::vector<char> coveredSlaveNodes(const DistributedSpace& space, const ContactPair& pair);
+
 // The rows of `pair` (the other rows of constraintMap empty). constraintOf: the pair's
-// constraint of each overlap node (overlapNodeConstraints), -1 off the slave boundary. Throws
-// InputError for a pair it cannot pose: the same boundary on both sides or on one body, a
-// formulation it does not support, slave facets that no master facet covers, bodies that
-// overlap at the start (ContactPair::initialOverlapTolerance). Collective.
+// constraint of each overlap node (overlapNodeConstraints), -1 off the slave boundary and at
+// the nodes that coveredSlaveNodes leaves out. Throws InputError for a pair it cannot pose (as
+// coveredSlaveNodes, and both sides on one body), a constraint whose multiplier function has no positive integral over the
+// covered pieces, bodies that overlap at the start (ContactPair::initialOverlapTolerance).
+// Collective.
 MortarRows mortarConstraints(const DistributedSpace& space, const ContactPair& pair,
                              const std::vector<long long>& constraintOf, const RCP<const Map>& constraintMap);
 

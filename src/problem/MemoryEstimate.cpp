@@ -14,10 +14,10 @@
 namespace signorini {
 namespace {
 
-// Bytes per unknown, by dimension and degree, with Q assembled and with a matrix-free P2/P3
-// stiffness (P1 keeps Q assembled). Measured on the largest members beyond the ranks' fixed
-// memory (110 MiB each): assembled 822, 965, 1038 (2D P1-P3) and 1377, 1744, 2385 (3D);
-// matrix-free 773, 671 (2D P2, P3) and 833, 583 (3D). Four fifths of them are the bounds.
+// Lower bounds of the bytes per unknown, by dimension and degree, with Q assembled and with a
+// matrix-free P2/P3 stiffness (P1 keeps Q assembled): about four fifths of the peak resident
+// memory per unknown beyond the ranks' fixed memory that the largest members of the family
+// reach (bench/results/matrix-free-solve*.json record it), so that a refusal is certain.
 constexpr double kAssembledBytesPerUnknown[2][3] = {{650, 770, 830}, {1100, 1390, 1900}};
 constexpr double kMatrixFreeBytesPerUnknown[2][3] = {{650, 610, 530}, {1100, 660, 460}};
 

@@ -75,9 +75,9 @@ void addContactParameters(ParameterList& contact) {
   contact.set("master boundary", "",
               "The surface of another body that the contact boundary (then the slave side) touches: mortar "
               "constraints between the two bodies, normals and gaps from the slave side (doc/algorithms.md; "
-              "2D and 3D, P1 to P3, with mesh: refinements too). Make the slave the side that lies within the "
-              "master's reach, and where both do, the finer and the softer one (a slave much stiffer than its "
-              "master shows an oscillating pressure); obstacle: direction then points from the master into the "
+              "2D and 3D, P1 to P3, with mesh: refinements too). The master may cover the slave in part: slave "
+              "nodes that no master facet faces have no constraint. Make the slave the finer and the softer "
+              "side (a slave much stiffer than its master shows an oscillating pressure); obstacle: direction then points from the master into the "
               "slave body (the sign of the normal force reported). Empty: the rigid obstacle of the gap and "
               "obstacle parameters");
   contact.set("initial overlap: tolerance", 0.1,

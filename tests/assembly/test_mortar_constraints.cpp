@@ -37,17 +37,21 @@ namespace {
 
 using namespace signorini;
 
-// Two unit squares, "lower" [0,1]^2 and "upper" [0,1] x [1 + gap, 2 + gap], meshed apart
-// (Geometry.AutoCoherence = 0 keeps their interface points distinct): the lower one's top
-// "lower top" in 10 segments (their inner points moved by `perturbation` along it), the upper
-// one's bottom "upper bottom" in 7. Boundaries "bottom", "top", "sides". Written by rank 0.
-std::string writeBlocks(const Comm& comm, double gap, double perturbation) {
+// Two blocks, the unit square "lower" [0,1]^2 and "upper" [0,width] x [1 + gap, 2 + gap],
+// meshed apart (Geometry.AutoCoherence = 0 keeps their interface points distinct): the lower
+// one's top "lower top" in 10 segments (their inner points moved by `perturbation` along it),
+// the upper one's bottom "upper bottom" in 7. Boundaries "bottom", "top", "sides". A facet
+// is in one group: `groups` "left" splits the lower top into "lower top left" (its first 6
+// segments) and "lower top right", "surface" makes its top and sides "lower surface" (and
+// "sides" the upper block's only). Written by rank 0.
+std::string writeBlocks(const Comm& comm, double gap, double perturbation, double width = 1.0,
+                        const std::string& groups = "top") {
   const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
   std::ostringstream name;
   name << std::string(binary ? binary : "/tmp") << "/mortar-np" << comm.getSize();
   const std::string directory = name.str();
   std::ostringstream file;
-  file << "blocks-" << gap << "-" << perturbation << ".geo";
+  file << "blocks-" << gap << "-" << perturbation << "-" << width << "-" << groups << ".geo";
   if (comm.getRank() == 0) {
     std::filesystem::create_directories(directory);
     std::ofstream geo(directory + "/" + file.str());
@@ -57,7 +61,8 @@ std::string writeBlocks(const Comm& comm, double gap, double perturbation) {
     // The lower top's inner points, moved along it to break any regularity.
     for (int i = 1; i < 10; ++i)
       geo << "Point(" << 100 + i << ") = {" << i / 10.0 + perturbation * std::sin(7.0 * i) << ", 1, 0, h};\n";
-    geo << "Point(5) = {0, 1 + g, 0, h}; Point(6) = {1, 1 + g, 0, h}; Point(7) = {1, 2 + g, 0, h};\n"
+    geo << "w = " << width << ";\n"
+        << "Point(5) = {0, 1 + g, 0, h}; Point(6) = {w, 1 + g, 0, h}; Point(7) = {w, 2 + g, 0, h};\n"
         << "Point(8) = {0, 2 + g, 0, h};\n"
         << "Line(1) = {1, 2}; Line(2) = {2, 3};\n"
         << "Line(110) = {3, 109};\n";
@@ -68,8 +73,12 @@ std::string writeBlocks(const Comm& comm, double gap, double perturbation) {
         << "Curve Loop(1) = {1, 2, 110, 109, 108, 107, 106, 105, 104, 103, 102, 101, 4}; Plane Surface(1) = {1};\n"
         << "Curve Loop(2) = {5, 6, 7, 8}; Plane Surface(2) = {2};\n"
         << "Physical Curve(\"bottom\") = {1}; Physical Curve(\"top\") = {7};\n"
-        << "Physical Curve(\"sides\") = {2, 4, 6, 8};\n"
-        << "Physical Curve(\"lower top\") = {101:110};\n"
+        << (groups == "surface" ? "Physical Curve(\"sides\") = {6, 8};\n"
+                                   "Physical Curve(\"lower surface\") = {2, 4, 101:110};\n"
+                                 : "Physical Curve(\"sides\") = {2, 4, 6, 8};\n")
+        << (groups == "left" ? "Physical Curve(\"lower top left\") = {101:106};\n"
+                               "Physical Curve(\"lower top right\") = {107:110};\n"
+                             : groups == "top" ? "Physical Curve(\"lower top\") = {101:110};\n" : "")
         << "Physical Curve(\"upper bottom\") = {5};\n"
         << "Physical Surface(\"lower\") = {1}; Physical Surface(\"upper\") = {2};\n";
   }
@@ -80,21 +89,26 @@ std::string writeBlocks(const Comm& comm, double gap, double perturbation) {
 // Two unit cubes, "lower" [0,1]^3 and "upper" [0,1]^2 x [1 + gap, 2 + gap], meshed apart at
 // sizes h and H (OpenCASCADE boxes without a boolean fragment keep their own faces), so
 // that their interface triangles do not match. Boundaries "bottom", "top", "sides" (x = 0, 1),
-// "y sides", "lower top" and "upper bottom". Written by rank 0.
-std::string writeCubes(const Comm& comm, double gap, double h, double H) {
+// "y sides", "lower top" and "upper bottom"; with `surface`, "lower surface" the lower cube's
+// top and sides instead of its "lower top", and the sides groups the upper cube's only.
+// Written by rank 0.
+std::string writeCubes(const Comm& comm, double gap, double h, double H, bool surface = false) {
   const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
   std::ostringstream name, file;
   name << std::string(binary ? binary : "/tmp") << "/mortar-np" << comm.getSize();
-  file << name.str() << "/cubes-" << gap << "-" << h << "-" << H << ".geo";
+  file << name.str() << "/cubes-" << gap << "-" << h << "-" << H << (surface ? "-surface" : "") << ".geo";
   if (comm.getRank() == 0) {
     std::filesystem::create_directories(name.str());
     std::ofstream geo(file.str());
     geo << "SetFactory(\"OpenCASCADE\");\n"
         << "Box(1) = {0, 0, 0, 1, 1, 1};\nBox(2) = {0, 0, " << 1 + gap << ", 1, 1, 1};\n"
         << "MeshSize{PointsOf{Volume{1};}} = " << h << ";\nMeshSize{PointsOf{Volume{2};}} = " << H << ";\n"
-        << "Physical Surface(\"bottom\") = {5}; Physical Surface(\"lower top\") = {6};\n"
+        << "Physical Surface(\"bottom\") = {5};\n"
         << "Physical Surface(\"upper bottom\") = {11}; Physical Surface(\"top\") = {12};\n"
-        << "Physical Surface(\"sides\") = {1, 2, 7, 8}; Physical Surface(\"y sides\") = {3, 4, 9, 10};\n"
+        << (surface ? "Physical Surface(\"lower surface\") = {1, 2, 3, 4, 6};\n"
+                      "Physical Surface(\"sides\") = {7, 8}; Physical Surface(\"y sides\") = {9, 10};\n"
+                    : "Physical Surface(\"lower top\") = {6};\n"
+                      "Physical Surface(\"sides\") = {1, 2, 7, 8}; Physical Surface(\"y sides\") = {3, 4, 9, 10};\n")
         << "Physical Volume(\"lower\") = {1}; Physical Volume(\"upper\") = {2};\n";
   }
   comm.barrier();
@@ -283,6 +297,117 @@ TEST(MortarConstraints, SeveralPairsPassThePatchTestTogether) {
       for (int c = 0; s.masterForce && c < 2; ++c) EXPECT_NEAR((*s.masterForce)[c], -s.force[c], 1e-10 * pressure);
     }
   }
+}
+
+// The solution of a problem solved to KKT measures far below the differences asked of it.
+SolveResult solvedTightly(const AssembledProblem& p) {
+  Teuchos::ParameterList solver;
+  solver.set("kkt: tolerance", 1e-12);
+  SolveResult r = InteriorPointSolver(solver).solve(p.qp, p.multigrid);
+  EXPECT_TRUE(r.converged()) << r.message;
+  return r;
+}
+
+// The largest difference of two vectors on maps with the same elements, relative to the
+// first's largest entry, over every rank.
+double relativeDifference(const Vector& a, const Vector& b) {
+  auto x = a.getData(), y = b.getData();
+  EXPECT_EQ(x.size(), y.size());
+  double local = 0;
+  for (Teuchos::ArrayRCP<const double>::size_type i = 0; i < std::min(x.size(), y.size()); ++i)
+    local = std::max(local, std::abs(x[i] - y[i]));
+  return maxOverRanks(*a.getMap()->getComm(), local) / a.normInf();
+}
+
+// The master boundary may cover the slave boundary in part: here the lower block's top and
+// sides are the slave side, and the sides face no master facet. Only the nodes of the top
+// have constraints, and the patch test passes as with the top alone (P1 and P2, 2D and 3D;
+// the lower block's rollers on the whole slave side, which the uniaxial strain of the exact
+// solution satisfies on its top too).
+TEST(MortarConstraints, SlaveFacetsThatNoMasterCoversHaveNoConstraints) {
+  const Comm& comm = *Tpetra::getDefaultComm();
+  const double pressure = 0.01;
+  for (int dim : {2, 3})
+  for (int degree : {1, 2}) {
+    const auto pressed = [&](const std::string& file) {
+      Teuchos::ParameterList problem = pressedBlocks(file, 0.0, degree, dim);
+      problem.sublist("Dirichlet").remove("top");
+      problem.sublist("Traction").sublist("top").set(dim == 2 ? "traction: y" : "traction: z", "-0.01");
+      return problem;
+    };
+    const Teuchos::ParameterList top =
+        pressed(dim == 2 ? writeBlocks(comm, 0.0, 0.03) : writeCubes(comm, 0.0, 0.3, 0.22));
+    Teuchos::ParameterList surface =
+        pressed(dim == 2 ? writeBlocks(comm, 0.0, 0.03, 1.0, "surface") : writeCubes(comm, 0.0, 0.3, 0.22, true));
+    surface.sublist("Contact").set("boundary", "lower surface");
+    surface.sublist("Dirichlet").sublist("lower surface").set("displacement: x", "0");
+    if (dim == 3) surface.sublist("Dirichlet").sublist("lower surface").set("displacement: y", "0");
+    const AssembledProblem p = build(surface);
+    EXPECT_EQ(p.qp.A->getGlobalNumRows(), build(top).qp.A->getGlobalNumRows()) << dim << "D P" << degree;
+    EXPECT_LT(largestPressureDeviation(p, pressure), 1e-8) << dim << "D P" << degree;
+  }
+}
+
+// A master boundary that ends at a slave node (the upper block 0.6 wide, the slave nodes 0.1
+// apart): the slave nodes beyond have no constraint, and the problem is the one whose slave
+// boundary stops there, with the same rows and the same solution.
+TEST(MortarConstraints, AMasterEndingAtASlaveNodeTrimsTheSlaveBoundary) {
+  const Comm& comm = *Tpetra::getDefaultComm();
+  const std::string file = writeBlocks(comm, 0.0, 0.0, 0.6), split = writeBlocks(comm, 0.0, 0.0, 0.6, "left");
+  for (int degree : {1, 2}) {
+    Teuchos::ParameterList trimmed = pressedBlocks(split, 0.01, degree);
+    trimmed.sublist("Contact").set("boundary", "lower top left");
+    const AssembledProblem whole = build(pressedBlocks(file, 0.01, degree)), part = build(trimmed);
+    ASSERT_EQ(whole.qp.A->getGlobalNumRows(), degree == 1 ? 7u : 13u);
+    ASSERT_EQ(part.qp.A->getGlobalNumRows(), whole.qp.A->getGlobalNumRows());
+    const SolveResult a = solvedTightly(whole), b = solvedTightly(part);
+    EXPECT_LT(relativeDifference(*a.lambda, *b.lambda), 1e-9) << "P" << degree;
+    EXPECT_LT(relativeDifference(*a.v, *b.v), 1e-9) << "P" << degree;
+  }
+}
+
+// A master boundary that ends inside a slave facet (the upper block 0.63 wide): the covered
+// part of the facet carries the constraint of its one covered node. The multiplier functions
+// sum to one on the covered part, so that the rows applied to a unit pressure give each side
+// a force of the covered length, and an initial gap g sums to g times that length. Pressed
+// down, the action and reaction balance and the contact area stays within the covered part.
+TEST(MortarConstraints, AMasterEndingInsideASlaveFacetCoversItsCoveredPart) {
+  const Comm& comm = *Tpetra::getDefaultComm();
+  const double gap = 0.05, covered = 0.63;
+  for (int degree : {1, 2}) {
+    const AssembledProblem p = build(pressedBlocks(writeBlocks(comm, gap, 0.0, covered), 0.0, degree));
+    ASSERT_EQ(p.qp.A->getGlobalNumRows(), degree == 1 ? 7u : 13u);  // the nodes up to x = 0.6
+    auto d = p.qp.d->getData();
+    double sum = 0, smallest = 1;
+    for (double value : d) {
+      sum += value;
+      smallest = std::min(smallest, value);
+    }
+    EXPECT_NEAR(sumOverRanks(comm, sum), gap * covered, 1e-14) << "P" << degree;
+    EXPECT_GT(minOverRanks(comm, smallest), 0.0) << "P" << degree;
+    Vector ones(p.qp.A->getRangeMap()), force(p.qp.A->getDomainMap());
+    ones.putScalar(1.0);
+    p.qp.A->apply(ones, force, Teuchos::TRANS);
+    auto f = force.getData();
+    auto y = p.multigrid.coordinates->getData(1);
+    double onSides[2] = {0, 0};  // the vertical forces on the lower and the upper block
+    for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(y.size()); ++i) onSides[y[i] > 1 + gap / 2] += f[2 * i + 1];
+    EXPECT_NEAR(sumOverRanks(comm, onSides[0]), covered, 1e-12) << "P" << degree;
+    EXPECT_NEAR(sumOverRanks(comm, onSides[1]), -covered, 1e-12) << "P" << degree;
+  }
+  Teuchos::ParameterList pressed = pressedBlocks(writeBlocks(comm, 0.0, 0.0, covered), 0.01);
+  pressed.sublist("Contact").set("obstacle: direction", Teuchos::Array<double>(Teuchos::tuple(0.0, -1.0)));
+  const AssembledProblem p = build(pressed);
+  const SolveResult r = solvedTightly(p);
+  const RCP<Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
+  const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap(), 0);
+  const ContactStatistics s = contactStatistics(recovery, *recovery.pressure(*r.lambda, *active), *p.qp.A,
+                                                *r.lambda, *active, p.definition.contacts[0].obstacleDirection);
+  ASSERT_TRUE(s.masterForce.has_value());
+  for (int c = 0; c < 2; ++c) EXPECT_NEAR((*s.masterForce)[c], -s.force[c], 1e-10 * s.normalForce);
+  EXPECT_GT(s.normalForce, 0.0);
+  EXPECT_GT(s.area, 0.0);
+  EXPECT_LE(s.area, covered + 1e-12);
 }
 
 // Hertz between two elastic bodies (examples/bodies/disk-on-block-2d.xml): a half-disk of
