@@ -18,6 +18,7 @@ packages=(
   libopenblas0-serial         # optimised BLAS for CHOLMOD (serial: MPI runs one rank per core)
   libgmsh-dev gmsh            # Gmsh SDK (mesh reading) and CLI (test meshes)
   libmuparser-dev             # user expressions for loads, gaps, displacements
+  libboost-dev                # Boost.Geometry's R-tree: the master facets near each slave facet
   libgtest-dev                # unit tests
   clang libclang-rt-14-dev    # the sanitizer build and the libFuzzer targets (make sanitize)
   valgrind                    # the memcheck run in the test suite

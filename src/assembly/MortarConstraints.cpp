@@ -6,6 +6,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Export.hpp>
@@ -15,6 +16,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "assembly/ContactMultiplierBasis.hpp"
+#include "assembly/FacetSearch.hpp"
 #include "assembly/MeshPieces.hpp"
 #include "assembly/MortarFacet.hpp"
 #include "assembly/SummedRows.hpp"
@@ -84,20 +86,37 @@ double distanceAlong(const MortarFacet& m, double facing, const double* xs) {
   return dot(r, m.normal) / facing;
 }
 
+// The master facets near this rank's slave facets, found along each slave facet's normal line.
+struct NearMaster {
+  std::vector<MortarFacet> facets;
+  FacetSearch search;
+  double reach;  // how far along a slave normal a master facet may lie
+};
+
 // The pieces of slave facet s that the master facets facing it cover. A master facet beyond
-// reach at a piece's middle is another part of the surface.
-std::vector<CoveredPiece> coveredPieces(const MortarFacet& s, const std::vector<MortarFacet>& master, double reach) {
+// reach at a piece's middle is another part of the surface. The search's boxes, grown by the
+// largest facet, meet the slave's normal line through its centroid within reach wherever a
+// master facet covers a piece within reach.
+std::vector<CoveredPiece> coveredPieces(const MortarFacet& s, const NearMaster& near) {
+  std::array<double, 3> centroid{}, from{}, to{};
+  for (int v = 0; v < s.dim; ++v)
+    for (int a = 0; a < 3; ++a) centroid[a] += s.x[v][a] / s.dim;
+  for (int a = 0; a < 3; ++a) {
+    from[a] = centroid[a] - near.reach * s.normal[a];
+    to[a] = centroid[a] + near.reach * s.normal[a];
+  }
   std::vector<CoveredPiece> covered;
-  for (const MortarFacet& m : master) {
+  for (const int k : near.search.meeting(from, to)) {
+    const MortarFacet& m = near.facets[k];
     const double facing = dot(s.normal, m.normal);
     if (facing > -1e-12) continue;  // not facing the slave side
     const auto pieces = projectedOverlap(s, m);
     if (pieces.empty()) continue;
-    double middle[3] = {0, 0, 0}, centroid[3] = {0, 0, 0};
+    double middle[3] = {0, 0, 0}, pieceCentroid[3] = {0, 0, 0};
     for (int v = 0; v < s.dim; ++v)
-      for (int a = 0; a < 3; ++a) centroid[a] += pieces[0][v][a] / s.dim;
-    s.point(centroid, middle);
-    if (std::abs(distanceAlong(m, facing, middle)) > reach) continue;
+      for (int a = 0; a < 3; ++a) pieceCentroid[a] += pieces[0][v][a] / s.dim;
+    s.point(pieceCentroid, middle);
+    if (std::abs(distanceAlong(m, facing, middle)) > near.reach) continue;
     for (const Piece& piece : pieces) covered.push_back({&m, piece});
   }
   return covered;
@@ -290,27 +309,26 @@ void checkPair(const DistributedSpace& ds, const ContactPair& pair) {
 // box's diagonal). Collective.
 struct MortarSides {
   LocalFacets slave, master;
-  std::vector<MortarFacet> near;
-  double reach = 0;
+  NearMaster near;
 };
 
 MortarSides mortarSides(const DistributedSpace& ds, const ContactPair& pair) {
   checkPair(ds, pair);
-  MortarSides sides;
-  sides.slave = boundaryFacets(ds, ds.mesh().tag(pair.boundary));
-  sides.master = boundaryFacets(ds, ds.mesh().tag(pair.masterBoundary));
+  LocalFacets slave = boundaryFacets(ds, ds.mesh().tag(pair.boundary));
+  LocalFacets master = boundaryFacets(ds, ds.mesh().tag(pair.masterBoundary));
   double largest = 0;
-  for (const auto* side : {&sides.slave, &sides.master})
+  for (const auto* side : {&slave, &master})
     for (const MortarFacet& f : side->facets) largest = std::max(largest, diagonal(f.boundingBox()));
-  const auto& slave = sides.slave.facets;
-  std::array<double, 6> box = boundingBox(slave.data(), slave.data() + slave.size());
+  largest = maxOverRanks(*ds.comm(), largest);
+  std::array<double, 6> box = boundingBox(slave.facets.data(), slave.facets.data() + slave.facets.size());
   for (int c = 0; c < 3; ++c) {
     box[c] = minOverRanks(*ds.comm(), box[c]);
     box[3 + c] = maxOverRanks(*ds.comm(), box[3 + c]);
   }
-  sides.reach = std::max(2.0 * maxOverRanks(*ds.comm(), largest), diagonal(box));
-  sides.near = nearMasterFacets(*ds.comm(), slave, sides.master.facets, sides.reach);
-  return sides;
+  const double reach = std::max(2.0 * largest, diagonal(box));
+  std::vector<MortarFacet> near = nearMasterFacets(*ds.comm(), slave.facets, master.facets, reach);
+  FacetSearch search(near, largest);
+  return {std::move(slave), std::move(master), {std::move(near), std::move(search), reach}};
 }
 
 }  // namespace
@@ -319,7 +337,7 @@ std::vector<char> coveredSlaveNodes(const DistributedSpace& ds, const ContactPai
   const MortarSides sides = mortarSides(ds, pair);
   Vector here(ds.overlapNodeMap()), owned(ds.ownedNodeMap());
   for (const MortarFacet& facet : sides.slave.facets) {
-    const std::vector<CoveredPiece> pieces = coveredPieces(facet, sides.near, sides.reach);
+    const std::vector<CoveredPiece> pieces = coveredPieces(facet, sides.near);
     for (int i = 0; i < facet.count; ++i)
       if (onPieces(facet, i, pieces)) here.replaceGlobalValue(facet.nodes[i], 1.0);
   }
@@ -365,7 +383,7 @@ MortarRows mortarConstraints(const DistributedSpace& ds, const ContactPair& pair
     if (std::none_of(kept, kept + facet.count, [](bool k) { return k; })) continue;
     const double size = diagonal(facet.boundingBox());
     integrateFacet(
-        facet, coveredPieces(facet, sides.near, sides.reach), kept, psi, local, facetNodes,
+        facet, coveredPieces(facet, sides.near), kept, psi, local, facetNodes,
         ds.space().nodesPerCell(), rule,
         [&](int j, GlobalOrdinal column, double value) { entries[rows[j]].emplace_back(column, value); },
         [&](int j, double weight, double value) {

@@ -18,20 +18,24 @@ void cross3(const double* a, const double* b, double* c) {
   c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
-// A polygon in the slave's barycentric coordinates (lambda_1, lambda_2) cut by the half plane
-// c0 + c1 lambda_1 + c2 lambda_2 >= 0 (Sutherland and Hodgman).
-std::vector<std::array<double, 2>> clip(const std::vector<std::array<double, 2>>& polygon, double c0, double c1,
-                                        double c2) {
-  std::vector<std::array<double, 2>> kept;
-  const std::size_t n = polygon.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    const auto& p = polygon[i];
-    const auto& q = polygon[(i + 1) % n];
+// A convex polygon in the slave's barycentric coordinates (lambda_1, lambda_2): a triangle
+// clipped by the three sides of the reference triangle has at most six vertices.
+struct Polygon {
+  std::array<std::array<double, 2>, 8> p;
+  int n = 0;
+};
+
+// The polygon cut by the half plane c0 + c1 lambda_1 + c2 lambda_2 >= 0 (Sutherland and Hodgman).
+Polygon clip(const Polygon& polygon, double c0, double c1, double c2) {
+  Polygon kept;
+  for (int i = 0; i < polygon.n; ++i) {
+    const auto& p = polygon.p[i];
+    const auto& q = polygon.p[(i + 1) % polygon.n];
     const double fp = c0 + c1 * p[0] + c2 * p[1], fq = c0 + c1 * q[0] + c2 * q[1];
-    if (fp >= 0) kept.push_back(p);
+    if (fp >= 0) kept.p[kept.n++] = p;
     if ((fp >= 0) != (fq >= 0)) {
       const double t = fp / (fp - fq);
-      kept.push_back({p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])});
+      kept.p[kept.n++] = {p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])};
     }
   }
   return kept;
@@ -51,18 +55,23 @@ std::vector<Piece> overlapOfSegments(const MortarFacet& slave, const MortarFacet
 // The master triangle projected onto the slave's plane, clipped to the slave triangle, and
 // cut into a fan of triangles (the clipped polygon is convex).
 std::vector<Piece> overlapOfTriangles(const MortarFacet& slave, const MortarFacet& master) {
-  std::vector<std::array<double, 2>> polygon;
+  Polygon polygon;
+  polygon.n = 3;
   for (int i = 0; i < 3; ++i) {
     double lambda[3];
     slave.barycentric(master.x[i], lambda);
-    polygon.push_back({lambda[1], lambda[2]});
+    polygon.p[i] = {lambda[1], lambda[2]};
   }
-  polygon = clip(polygon, 0, 1, 0);
-  polygon = clip(polygon, 0, 0, 1);
-  polygon = clip(polygon, 1, -1, -1);
+  // The sides of the slave triangle, lambda_1 >= 0, lambda_2 >= 0, 1 - lambda_1 - lambda_2 >= 0.
+  static constexpr double kSides[3][3] = {{0, 1, 0}, {0, 0, 1}, {1, -1, -1}};
+  for (const auto& side : kSides) {  // wholly beyond one side: no overlap (the common case, cheaply)
+    const auto beyond = [&](const std::array<double, 2>& q) { return side[0] + side[1] * q[0] + side[2] * q[1] < 0; };
+    if (std::all_of(polygon.p.begin(), polygon.p.begin() + 3, beyond)) return {};
+  }
+  for (const auto& side : kSides) polygon = clip(polygon, side[0], side[1], side[2]);
   std::vector<Piece> pieces;
-  for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-    const auto &p = polygon[0], &q = polygon[i], &r = polygon[i + 1];
+  for (int i = 1; i + 1 < polygon.n; ++i) {
+    const auto &p = polygon.p[0], &q = polygon.p[i], &r = polygon.p[i + 1];
     const double area = 0.5 * std::abs((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
     if (area <= 1e-12) continue;  // of the reference triangle's 1/2
     Piece piece;
