@@ -101,80 +101,21 @@ std::mutex& gmshMutex() {
   return mutex;
 }
 
-// Gmsh 4.8 has no gmsh::isInitialized(). Its getters are silent no-ops when the API was
-// never initialised, and throw when it was initialised and finalised since: either way the
-// value stays untouched.
-bool gmshIsInitialized() {
-  double terminal = -1;
-  try {
-    gmsh::option::getNumber("General.Terminal", terminal);
-  } catch (...) {
-    return false;
-  }
-  return terminal != -1;
+// Opens `path` in the process that reads: a child of the caller's (GmshSandbox.hpp), which
+// ends after the read, so a Gmsh session of the caller's (copied into the child) may be
+// replaced and nothing needs putting back. Gmsh is initialised first, whether or not the
+// caller had (Gmsh 4.8 then only warns): no Gmsh function may run before that, as Gmsh 4.8
+// leaves its settings uninitialised memory until then, and an error reported on them (such
+// as "not initialised") may exit the process.
+void openInThisProcess(const std::string& path) {
+  gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+  // Errors only, on standard error (the sandbox shows them when Gmsh exits on one), and as
+  // exceptions, whatever a caller's session had set.
+  gmsh::option::setNumber("General.Terminal", 1);
+  gmsh::option::setNumber("General.Verbosity", 1);
+  gmsh::option::setNumber("General.AbortOnError", 2);
+  gmsh::open(path);
 }
-
-// Opens Gmsh for one read and puts everything back on destruction, even on error: either
-// initialises and finalises Gmsh, or (when the caller already runs a Gmsh session) reads
-// into a temporary model and restores the caller's current model and terminal option.
-class GmshSession {
- public:
-  GmshSession() : owner_(!gmshIsInitialized()) {
-    if (owner_) gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
-  }
-  GmshSession(const GmshSession&) = delete;
-  GmshSession& operator=(const GmshSession&) = delete;
-
-  ~GmshSession() {
-    try {
-      if (owner_) {
-        gmsh::finalize();
-        return;
-      }
-      if (addedModel_) {
-        gmsh::model::setCurrent(kModelName);
-        gmsh::model::remove();
-      }
-      if (savedModel_) gmsh::model::setCurrent(callerModel_);
-      if (savedTerminal_) {
-        gmsh::option::setNumber("General.Terminal", callerTerminal_);
-        gmsh::option::setNumber("General.Verbosity", callerVerbosity_);
-      }
-    } catch (...) {
-      // Nothing sensible to do about a failing clean-up; never throw from a destructor.
-    }
-  }
-
-  void load(const std::string& path) {
-    if (!owner_) {
-      gmsh::option::getNumber("General.Terminal", callerTerminal_);
-      gmsh::option::getNumber("General.Verbosity", callerVerbosity_);
-      savedTerminal_ = true;
-    }
-    // Errors only, on standard error: the sandbox shows them when Gmsh exits on one.
-    gmsh::option::setNumber("General.Terminal", 1);
-    gmsh::option::setNumber("General.Verbosity", 1);
-    if (owner_) {
-      gmsh::open(path);
-      return;
-    }
-    gmsh::model::getCurrent(callerModel_);
-    savedModel_ = true;
-    gmsh::model::add(kModelName);
-    addedModel_ = true;
-    gmsh::merge(path);
-  }
-
- private:
-  static constexpr const char* kModelName = "signorini-readGmshMesh";
-  bool owner_;
-  bool savedTerminal_ = false;
-  double callerTerminal_ = 0;
-  double callerVerbosity_ = 0;
-  bool savedModel_ = false;
-  std::string callerModel_;
-  bool addedModel_ = false;
-};
 
 // ---------------------------------------------------------------------------------------
 // Extraction through the Gmsh API (current model).
@@ -626,8 +567,7 @@ SimplexMesh readInThisProcess(const std::string& path, double sizeFactor, GmshMe
   {
     std::lock_guard<std::mutex> lock(gmshMutex());
     try {
-      GmshSession session;
-      session.load(path);
+      openInThisProcess(path);
       if (geometry) {
         gmsh::option::setNumber("Mesh.MeshSizeFactor", sizeFactor);
         gmsh::option::setNumber("Mesh.ElementOrder", 1);
@@ -733,8 +673,7 @@ std::vector<double> projectInThisProcess(const std::string& path, const std::vec
   std::lock_guard<std::mutex> lock(gmshMutex());
   std::vector<double> result(points.size());
   try {
-    GmshSession session;
-    session.load(path);
+    openInThisProcess(path);
     // One call per entity, with all its points.
     std::map<std::pair<int, int>, std::vector<std::size_t>> byEntity;
     for (std::size_t i = 0; i < dims.size(); ++i) byEntity[{dims[i], entities[i]}].push_back(i);

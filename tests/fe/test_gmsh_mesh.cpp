@@ -567,6 +567,28 @@ TEST(GmshMesh, FileThatCrashesGmshIsAnInputError) {
   EXPECT_EQ(readGmshMesh(good).numCells(), expected.cells);
 }
 
+// The reading process is a copy of this one, with its Gmsh session: a caller's Gmsh set to
+// exit the process on an error (General.AbortOnError 4) and to print nothing still gets the
+// error as an input error with Gmsh's message.
+TEST(GmshMesh, CallerGmshSettingsDoNotChangeHowErrorsAreReported) {
+  TempDir dir;
+  const std::string empty = dir.file("empty.msh");
+  std::ofstream{empty};
+  const std::string quads = dir.file("quads.msh");
+  SquareOptions options;
+  options.quads = true;
+  writeSquare(quads, {4.1, false}, options);
+
+  GmshApi api;
+  gmsh::option::setNumber("General.AbortOnError", 4);
+  gmsh::option::setNumber("General.Terminal", 0);
+  const std::string message = inputErrorOf([&] { readGmshMesh(empty); });
+  const std::string quadMessage = inputErrorOf([&] { readGmshMesh(quads); });
+  gmsh::option::setNumber("General.AbortOnError", 2);  // so that this process's own Gmsh goes on
+  EXPECT_NE(message.find("no elements"), std::string::npos) << message;
+  EXPECT_NE(quadMessage.find("type 3"), std::string::npos) << quadMessage;
+}
+
 TEST(GmshMesh, LineMeshIsRejected) {
   TempDir dir;
   const std::string path = dir.file("lines.msh");
