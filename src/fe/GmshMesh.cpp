@@ -102,15 +102,15 @@ std::mutex& gmshMutex() {
 }
 
 // Opens `path` in the process that reads: a child of the caller's (GmshSandbox.hpp), which
-// ends after the read, so a Gmsh session of the caller's (copied into the child) may be
-// replaced and nothing needs putting back. Gmsh is initialised first, whether or not the
+// ends after the read, so the caller's own Gmsh model and options (copied into the child)
+// may be replaced and nothing needs putting back. Gmsh is initialised first, whether or not the
 // caller had (Gmsh 4.8 then only warns): no Gmsh function may run before that, as Gmsh 4.8
 // leaves its settings uninitialised memory until then, and an error reported on them (such
 // as "not initialised") may exit the process.
 void openInThisProcess(const std::string& path) {
   gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
   // Errors only, on standard error (the sandbox shows them when Gmsh exits on one), and as
-  // exceptions, whatever a caller's session had set.
+  // exceptions, whatever options the calling program had given Gmsh.
   gmsh::option::setNumber("General.Terminal", 1);
   gmsh::option::setNumber("General.Verbosity", 1);
   gmsh::option::setNumber("General.AbortOnError", 2);
