@@ -94,7 +94,7 @@ struct RawMesh {
 };
 
 // ---------------------------------------------------------------------------------------
-// Gmsh session.
+// Opening a file in Gmsh.
 
 std::mutex& gmshMutex() {
   static std::mutex mutex;
