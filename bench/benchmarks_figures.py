@@ -695,22 +695,34 @@ def gmsh_meshes():
     runs = gmsh_runs()
     cases = sorted({key[0] for key in runs})
     flat, deep = [c for c in cases if c.startswith("2d")], [c for c in cases if c.startswith("3d")]
-    against = lambda mesh, base, key, chosen, digits=2: span(mesh_ratio(runs, mesh, base, key, chosen),  # noqa: E731
-                                                              digits)
-    linear = span(mesh_ratio(runs, "refined", "box", "cg_iterations", deep, "linear"), 2)
-    print(f"- 2D, the refined Gmsh mesh against the box: wall {against('refined', 'box', 'wall_seconds', flat)} "
-          f"times, solve {against('refined', 'box', 'solve_seconds', flat)} times, CG iterations "
-          f"{against('refined', 'box', 'cg_iterations', flat)} times.")
-    print(f"- 3D, the refined Gmsh mesh against the box: {against('refined', 'box', 'cg_iterations', deep)} times "
-          f"the CG iterations of the contact solve, {linear} times those of the linear solve.")
+    refined = sorted({key[1] for key in runs if key[1].startswith("refined")})
+
+    def against(meshes, base, key, chosen, digits=2, solve="contact"):
+        return span([x for mesh in meshes for x in mesh_ratio(runs, mesh, base, key, chosen, solve)], digits)
+
+    print(f"- 2D, the refined Gmsh mesh against the box: wall {against(refined, 'box', 'wall_seconds', flat)} "
+          f"times, solve {against(refined, 'box', 'solve_seconds', flat)} times, CG iterations "
+          f"{against(refined, 'box', 'cg_iterations', flat)} times.")
+    for mesh in refined:
+        chosen = [c for c in deep if any(key[:2] == (c, mesh) for key in runs)]
+        if chosen:
+            print(f"- 3D, {mesh} against the box ({', '.join(chosen)}): wall "
+                  f"{against([mesh], 'box', 'wall_seconds', chosen)} times, "
+                  f"{against([mesh], 'box', 'cg_iterations', chosen)} times the CG iterations of the contact solve, "
+                  f"{against([mesh], 'box', 'cg_iterations', chosen, solve='linear')} times those of the linear solve.")
     setups = lambda meshes: [r["multigrid_setups"] for (c, m, _, s), r in runs.items()  # noqa: E731
                              if m in meshes and s == "contact" and "-p1" in c]
     print(f"- P1 on the `.msh` meshes: {span(setups(('msh', 'parts')), 0)} multigrid setups per contact solve "
           f"(box: {span(setups(('box',)), 0)}). Read in parts against read whole: setup "
-          f"{against('parts', 'msh', 'setup_seconds', cases)} times, rank 0's growth "
-          f"{against('parts', 'msh', 'rank0_setup_mib', cases)} times.")
-    print(f"- Refined against the box: setup {against('refined', 'box', 'setup_seconds', cases, 1)} times, rank 0's "
-          f"growth {against('refined', 'box', 'rank0_setup_mib', cases, 1)} times.")
+          f"{against(['parts'], 'msh', 'setup_seconds', cases)} times, rank 0's growth "
+          f"{against(['parts'], 'msh', 'rank0_setup_mib', cases)} times.")
+    print(f"- Refined against the box: setup {against(refined, 'box', 'setup_seconds', cases, 1)} times, rank 0's "
+          f"growth {against(refined, 'box', 'rank0_setup_mib', cases, 1)} times.")
+    for (case, mesh, ranks, solve), r in sorted(runs.items()):
+        one = runs.get((case, mesh, 1, solve))
+        if ranks > 2 and solve == "contact" and mesh != "box" and one:
+            print(f"- {case}, {mesh} on {ranks} ranks: rank 0's setup growth {r['rank0_setup_mib']:.0f} MiB, "
+                  f"{r['rank0_setup_mib'] / one['rank0_setup_mib']:.2f} times its growth on 1 rank.")
 
 
 PRESSURE = 0.01  # the pressure bench/two_bodies.py applies on a unit area: the load and the pressure

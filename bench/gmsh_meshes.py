@@ -5,16 +5,18 @@ plane (doc/benchmark-family.md). Three meshes per case:
 
   box      the family's box mesh (its nested geometric grids);
   refined  a coarse Gmsh mesh of the .geo refined uniformly on every rank
-           (Problem/mesh: refinements), each refinement a geometric level;
+           (Problem/mesh: refinements), each refinement a geometric level; "refined r2"
+           is refined twice;
   msh      the fine mesh written by Gmsh as a .msh file and read as is (rank 0 reads and
            partitions it; its own P1 grid, MueLu below);
   parts    the same fine mesh partitioned by Gmsh and written as one file per rank
            (gmsh -part N -part_split), each rank reading its own (runs on 2 ranks or more).
 
-Each on 1 and 2 ranks (--ranks), with the contact solve and a linear solve of the same
-problem with the bottom clamped instead (no contact): setup, assembly and solve times,
-end-to-end wall time, CG iterations, multigrid setups, peak memory of the largest rank, the
-growth of rank 0's resident set during setup, and the contact solve over the linear one.
+Each on 1 and 2 ranks (--ranks; the large case on 4 ranks too), with the contact solve and a
+linear solve of the same problem with the bottom clamped instead (no contact): setup,
+assembly and solve times, end-to-end wall time, CG iterations, multigrid setups, peak memory
+of the largest rank, the growth of rank 0's resident set during setup, and the contact solve
+over the linear one.
 
     /usr/bin/python3 bench/gmsh_meshes.py [--ranks 1,2] [--cases 3d-p1,3d-p2,2d-p1,3d-p1-large]
 
@@ -31,15 +33,22 @@ from preconditioners import ENV, ROOT
 from provenance import provenance, write_results
 
 FAMILY = os.path.join(ROOT, "xml", "family")
-# name: (dimension, degree, box input, box cells, coarse size and refinements, fine .msh size or None).
-# Gmsh cuts the cube's edges into whole numbers of segments, so the sizes come near the box's
-# unknowns, not to them: the table gives n.
+# name: (dimension, degree, box input, box cells, the refined meshes' coarse sizes and refinements,
+# fine .msh size or None, more rank counts than --ranks). Gmsh cuts the cube's edges into whole
+# numbers of segments, so the sizes come near the box's unknowns, not to them: the table gives n.
+# 3D P1 has two refined meshes: coarse size 1/17 refined twice comes nearest the box's size
+# (17 x 4 segments per edge), 0.116 refined three times (9 x 8 segments) has one level more.
 CASES = {
-    "3d-p1": (3, 1, "3d-p1-nx64.xml", 64, (0.116, 3), 0.0142),
-    "3d-p2": (3, 2, "3d-p2-nx32.xml", 32, (0.127, 2), 0.032),
-    "2d-p1": (2, 1, "2d-p1-nx1000.xml", 1000, (0.035, 5), 0.0011),
-    "3d-p1-large": (3, 1, "3d-p1-nx100.xml", 100, (0.08, 3), None),
+    "3d-p1": (3, 1, "3d-p1-nx64.xml", 64, [(0.0588, 2), (0.116, 3)], 0.0142, []),
+    "3d-p2": (3, 2, "3d-p2-nx32.xml", 32, [(0.127, 2)], 0.032, []),
+    "2d-p1": (2, 1, "2d-p1-nx1000.xml", 1000, [(0.035, 5)], 0.0011, []),
+    "3d-p1-large": (3, 1, "3d-p1-nx100.xml", 100, [(0.08, 3)], None, [4]),
 }
+
+
+def refined_mesh(refinements):
+    """The table's name of a refined mesh."""
+    return f"refined r{refinements}"
 
 
 def geometry(dim, size):
@@ -79,12 +88,13 @@ def fine_parts(workdir, dim, size, ranks):
 
 
 def mesh_settings(case, mesh, workdir, ranks):
-    dim, degree, _, cells, (coarse, refinements), fine = CASES[case]
+    dim, degree, _, cells, refined, fine, _ = CASES[case]
     if mesh == "box":
         return [f"Problem/mesh: cells={{{cells}}}"]
-    if mesh == "refined":
-        return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={write_geometry(workdir, dim, coarse)}",
-                f"Problem/mesh: refinements={refinements}"]
+    for coarse, refinements in refined:
+        if mesh == refined_mesh(refinements):
+            return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={write_geometry(workdir, dim, coarse)}",
+                    f"Problem/mesh: refinements={refinements}"]
     file = fine_parts(workdir, dim, fine, ranks) if mesh == "parts" else fine_msh(workdir, dim, fine)
     return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={file}"]
 
@@ -145,12 +155,14 @@ def main():
     args = parser.parse_args()
     ranks = [int(r) for r in args.ranks.split(",")]
     os.makedirs(args.workdir, exist_ok=True)
-    made = provenance(max(ranks))  # before any result file is rewritten
+    made = provenance(max(ranks + [r for case in args.cases.split(',') for r in CASES[case][6]]))  # before any result file is rewritten
     runs = []
     for case in args.cases.split(","):
-        fine = ["msh", "parts"] if CASES[case][5] else []
-        for np in ranks:
-            for mesh in ["box", "refined"] + [m for m in fine if m != "parts" or np > 1]:
+        _, _, _, _, refined, fine_size, more_ranks = CASES[case]
+        fine = ["msh", "parts"] if fine_size else []
+        for np in sorted(set(ranks + more_ranks)):
+            meshes = ["box"] + [refined_mesh(r) for _, r in refined]
+            for mesh in meshes + [m for m in fine if m != "parts" or np > 1]:
                 for linear in (False, True):
                     runs.append(run(case, mesh, np, linear, args.workdir))
                     print(json.dumps(runs[-1]), flush=True)
