@@ -154,15 +154,16 @@ def main():
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "gmsh-meshes"))
     args = parser.parse_args()
     ranks = [int(r) for r in args.ranks.split(",")]
+    cases = args.cases.split(",")
+    rank_counts = {case: sorted(set(ranks + CASES[case][6])) for case in cases}
     os.makedirs(args.workdir, exist_ok=True)
-    made = provenance(max(ranks + [r for case in args.cases.split(',') for r in CASES[case][6]]))  # before any result file is rewritten
+    made = provenance(max(max(counts) for counts in rank_counts.values()))  # before any result file is rewritten
     runs = []
-    for case in args.cases.split(","):
-        _, _, _, _, refined, fine_size, more_ranks = CASES[case]
-        fine = ["msh", "parts"] if fine_size else []
-        for np in sorted(set(ranks + more_ranks)):
-            meshes = ["box"] + [refined_mesh(r) for _, r in refined]
-            for mesh in meshes + [m for m in fine if m != "parts" or np > 1]:
+    for case in cases:
+        _, _, _, _, refined, fine_size, _ = CASES[case]
+        meshes = ["box"] + [refined_mesh(r) for _, r in refined] + (["msh", "parts"] if fine_size else [])
+        for np in rank_counts[case]:
+            for mesh in [m for m in meshes if m != "parts" or np > 1]:
                 for linear in (False, True):
                     runs.append(run(case, mesh, np, linear, args.workdir))
                     print(json.dumps(runs[-1]), flush=True)
