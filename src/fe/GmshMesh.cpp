@@ -275,34 +275,63 @@ void checkTypes(const std::vector<ElementBlock>& blocks, int d, const std::strin
 // ---------------------------------------------------------------------------------------
 // Building the SimplexMesh from the raw data (no Gmsh involved).
 
+// The node tags of an element, sorted, padded with 0 (never a node tag).
+using NodeSet = std::array<Tag, 4>;
+NodeSet nodeSet(const Tag* nodes, int nodesPerElement) {
+  NodeSet set{0, 0, 0, 0};
+  for (int i = 0; i < nodesPerElement; ++i) {  // insertion sort of at most 4 tags
+    int j = i;
+    for (; j > 0 && set[j - 1] > nodes[i]; --j) set[j] = set[j - 1];
+    set[j] = nodes[i];
+  }
+  return set;
+}
+
+// SplitMix64's mixing over the tags.
+std::uint64_t hashOf(const NodeSet& set) {
+  std::uint64_t h = 0;
+  for (Tag t : set) {
+    h ^= static_cast<std::uint64_t>(t) + 0x9e3779b97f4a7c15ULL;
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+    h ^= h >> 31;
+  }
+  return h;
+}
+
 // Elements of the blocks in increasing element tag, (tag, first node tag), each element and
 // each set of nodes once: of elements with the same nodes, the one with the smallest tag.
 // Such duplicates are how MSH 2 files store an element in several physical groups (one copy
 // per group, under different tags); Gmsh reads all copies into the one entity, which is then
-// in all the groups.
+// in all the groups. Equal node sets are found among equal hashes of them, which sort faster
+// than the sets.
 std::vector<std::pair<Tag, const Tag*>> uniqueElements(const std::vector<ElementBlock>& blocks,
                                                        int nodesPerElement) {
-  using Key = std::array<Tag, 4>;  // sorted node tags, padded with 0 (never a node tag)
-  std::vector<std::pair<Key, std::pair<Tag, const Tag*>>> keyed;
+  std::vector<std::pair<Tag, const Tag*>> all;
   for (const ElementBlock& block : blocks)
-    for (std::size_t e = 0; e < block.elementTags.size(); ++e) {
-      const Tag* nodes = block.nodeTags.data() + e * nodesPerElement;
-      Key key{0, 0, 0, 0};
-      for (int i = 0; i < nodesPerElement; ++i) {  // insertion sort of at most 4 tags
-        int j = i;
-        for (; j > 0 && key[j - 1] > nodes[i]; --j) key[j] = key[j - 1];
-        key[j] = nodes[i];
-      }
-      keyed.push_back({key, {block.elementTags[e], nodes}});
-    }
-  std::sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) {
-    return a.first != b.first ? a.first < b.first : a.second.first < b.second.first;
+    for (std::size_t e = 0; e < block.elementTags.size(); ++e)
+      all.push_back({block.elementTags[e], block.nodeTags.data() + e * nodesPerElement});
+  std::vector<std::pair<std::uint64_t, std::size_t>> byHash(all.size());  // ties: by element tag
+  for (std::size_t i = 0; i < all.size(); ++i) byHash[i] = {hashOf(nodeSet(all[i].second, nodesPerElement)), i};
+  std::sort(byHash.begin(), byHash.end(), [&all](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first : all[a.second].first < all[b.second].first;
   });
+  std::vector<char> duplicate(all.size(), 0);
+  for (std::size_t first = 0, end = 0; first < byHash.size(); first = end) {
+    end = first + 1;
+    while (end < byHash.size() && byHash[end].first == byHash[first].first) ++end;
+    for (std::size_t a = first + 1; a < end; ++a)  // a run of equal hashes, by tag
+      for (std::size_t b = first; b < a && !duplicate[byHash[a].second]; ++b)
+        if (!duplicate[byHash[b].second] && nodeSet(all[byHash[a].second].second, nodesPerElement) ==
+                                                nodeSet(all[byHash[b].second].second, nodesPerElement))
+          duplicate[byHash[a].second] = 1;
+  }
   std::vector<std::pair<Tag, const Tag*>> elements;
-  for (std::size_t i = 0; i < keyed.size(); ++i)
-    if (i == 0 || keyed[i].first != keyed[i - 1].first) elements.push_back(keyed[i].second);
-  std::sort(elements.begin(), elements.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
+  elements.reserve(all.size());
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (!duplicate[i]) elements.push_back(all[i]);
+  const auto byTag = [](const auto& a, const auto& b) { return a.first < b.first; };
+  if (!std::is_sorted(elements.begin(), elements.end(), byTag)) std::sort(elements.begin(), elements.end(), byTag);
   return elements;
 }
 
@@ -343,11 +372,46 @@ double longestEdge(int dim, const double* x) {
   return longest;
 }
 
-// The index of node tag `node` in the sorted tags `used`, -1 if it is not there.
-long long vertexIndex(const std::vector<Tag>& used, Tag node) {
-  const auto it = std::lower_bound(used.begin(), used.end(), node);
-  return it != used.end() && *it == node ? static_cast<long long>(it - used.begin()) : -1;
-}
+// The mesh's vertices: the node tags its cells use, ascending, and the vertex id of a tag.
+// Gmsh numbers the nodes of a mesh it writes 1, 2, .., so where the largest tag is at most
+// twice the number of nodes in the file, a table by tag gives the ids; a binary search
+// otherwise.
+class VertexTags {
+ public:
+  VertexTags(const std::vector<std::pair<Tag, const Tag*>>& cells, int nodesPerCell, std::size_t nodesInFile) {
+    Tag largest = 0;
+    for (const auto& cell : cells) largest = std::max(largest, *std::max_element(cell.second, cell.second + nodesPerCell));
+    if (largest / 2 <= nodesInFile) {
+      idOfTag_.assign(largest + 1, -1);
+      for (const auto& cell : cells)
+        for (int i = 0; i < nodesPerCell; ++i) idOfTag_[cell.second[i]] = 0;
+      for (Tag t = 0; t <= largest; ++t)
+        if (idOfTag_[t] == 0) {
+          idOfTag_[t] = static_cast<long long>(tags_.size());
+          tags_.push_back(t);
+        }
+      return;
+    }
+    tags_.reserve(cells.size() * nodesPerCell);
+    for (const auto& cell : cells) tags_.insert(tags_.end(), cell.second, cell.second + nodesPerCell);
+    std::sort(tags_.begin(), tags_.end());
+    tags_.erase(std::unique(tags_.begin(), tags_.end()), tags_.end());
+  }
+
+  const std::vector<Tag>& tags() const { return tags_; }
+  std::vector<Tag> release() { return std::move(tags_); }
+
+  // The vertex id of node tag `node`, -1 if no cell uses it.
+  long long id(Tag node) const {
+    if (!idOfTag_.empty()) return node < idOfTag_.size() ? idOfTag_[node] : -1;
+    const auto it = std::lower_bound(tags_.begin(), tags_.end(), node);
+    return it != tags_.end() && *it == node ? static_cast<long long>(it - tags_.begin()) : -1;
+  }
+
+ private:
+  std::vector<Tag> tags_;
+  std::vector<long long> idOfTag_;  // empty: search tags_
+};
 
 // A 2D mesh must lie in the plane z = 0 (to round-off relative to its extent).
 void checkPlanar(const SimplexMesh& mesh, const std::vector<Tag>& used, const std::vector<double>& z,
@@ -367,51 +431,74 @@ void checkPlanar(const SimplexMesh& mesh, const std::vector<Tag>& used, const st
                        " has z = " + std::to_string(z[v]) + "; a 2D mesh must lie in the plane z = 0");
 }
 
-// The boundary facets of the named groups, each checked to be a face of some cell.
-void addBoundaryFacets(const RawMesh& raw, const std::vector<Tag>& used, const std::string& prefix,
-                       SimplexMesh& mesh) {
+// Whether each of `faces` (sorted vertex ids) is a face of a cell. Only the cells' faces whose
+// vertices are all vertices of `faces` are looked up.
+std::vector<char> facesOfCells(const SimplexMesh& mesh, const std::vector<Face>& faces) {
   const int dim = mesh.dim, nodesPerCell = dim + 1;
-  const std::size_t numCells = mesh.cells.size() / nodesPerCell;
-  std::vector<Face> faces;
-  faces.reserve(nodesPerCell * numCells);
-  for (std::size_t c = 0; c < numCells; ++c) {
+  std::vector<Face> sorted(faces);
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<char> onFace(mesh.numVertices(), 0), found(sorted.size(), 0);
+  for (const Face& face : faces)
+    for (int i = 0; i < dim; ++i)
+      if (face[i] >= 0) onFace[face[i]] = 1;
+  for (long long c = 0; c < mesh.numCells(); ++c) {
     const long long* cell = mesh.cells.data() + nodesPerCell * c;
     for (int omit = 0; omit < nodesPerCell; ++omit) {
       long long ids[3];
       for (int i = 0, k = 0; i < nodesPerCell; ++i)
         if (i != omit) ids[k++] = cell[i];
-      faces.push_back(sortedFace(ids, dim));
+      if (!onFace[ids[0]] || !onFace[ids[1]] || (dim == 3 && !onFace[ids[2]])) continue;
+      const auto it = std::lower_bound(sorted.begin(), sorted.end(), sortedFace(ids, dim));
+      if (it != sorted.end() && *it == sortedFace(ids, dim)) found[it - sorted.begin()] = 1;
     }
   }
-  std::sort(faces.begin(), faces.end());
+  std::vector<char> result(faces.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    result[f] = found[std::lower_bound(sorted.begin(), sorted.end(), faces[f]) - sorted.begin()];
+  return result;
+}
 
-  for (const BoundaryGroup& group : raw.boundaryGroups) {
+// The boundary facets of the named groups, each checked to be a face of some cell.
+void addBoundaryFacets(const RawMesh& raw, const VertexTags& vertices, const std::string& prefix,
+                       SimplexMesh& mesh) {
+  const int dim = mesh.dim;
+  std::vector<Face> faces;
+  std::vector<std::pair<Tag, std::size_t>> elementAndGroup;  // of each facet, for the message
+  const auto notAFace = [&](const std::pair<Tag, std::size_t>& facet) {
+    throw InputError(prefix + "boundary element " + std::to_string(facet.first) + " of the group \"" +
+                     boundaryName(raw.boundaryGroups[facet.second]) + "\" is not a " + (dim == 2 ? "edge" : "face") +
+                     " of any cell of the mesh");
+  };
+  for (std::size_t g = 0; g < raw.boundaryGroups.size(); ++g) {
+    const BoundaryGroup& group = raw.boundaryGroups[g];
     const std::string name = boundaryName(group);
     if (!mesh.boundaryTags.emplace(name, group.tag).second)
       throw InputError(prefix + "two physical groups of dimension " + std::to_string(dim - 1) +
                        " (tags " + std::to_string(mesh.boundaryTags.at(name)) + " and " +
                        std::to_string(group.tag) + ") have the same name \"" + name + "\"");
     for (const auto& element : uniqueElements(group.blocks, dim)) {
+      elementAndGroup.push_back({element.first, g});
       long long ids[3];
-      for (int i = 0; i < dim; ++i) ids[i] = vertexIndex(used, element.second[i]);
-      const Face face = sortedFace(ids, dim);
-      if (std::find(ids, ids + dim, -1) != ids + dim || !std::binary_search(faces.begin(), faces.end(), face))
-        throw InputError(prefix + "boundary element " + std::to_string(element.first) + " of the group \"" +
-                         name + "\" is not a " + (dim == 2 ? "edge" : "face") + " of any cell of the mesh");
+      for (int i = 0; i < dim; ++i) ids[i] = vertices.id(element.second[i]);
+      if (std::find(ids, ids + dim, -1) != ids + dim) notAFace(elementAndGroup.back());
+      faces.push_back(sortedFace(ids, dim));
       mesh.facets.insert(mesh.facets.end(), ids, ids + dim);
       mesh.facetTags.push_back(group.tag);
     }
   }
+  const std::vector<char> isFace = facesOfCells(mesh, faces);
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    if (!isFace[f]) notAFace(elementAndGroup[f]);
 }
 
 // The elements of the blocks whose nodes are all vertices of the mesh, as vertex ids, with
 // their blocks' entities.
-void addGeometryEntities(const std::vector<std::pair<int, ElementBlock>>& blocks, const std::vector<Tag>& used,
+void addGeometryEntities(const std::vector<std::pair<int, ElementBlock>>& blocks, const VertexTags& vertices,
                          int nodesPerElement, std::vector<long long>& elements, std::vector<int>& entities) {
   for (const auto& [entity, block] : blocks)
     for (std::size_t e = 0; e < block.elementTags.size(); ++e) {
       long long ids[3];
-      for (int i = 0; i < nodesPerElement; ++i) ids[i] = vertexIndex(used, block.nodeTags[nodesPerElement * e + i]);
+      for (int i = 0; i < nodesPerElement; ++i) ids[i] = vertices.id(block.nodeTags[nodesPerElement * e + i]);
       if (std::find(ids, ids + nodesPerElement, -1) != ids + nodesPerElement) continue;
       elements.insert(elements.end(), ids, ids + nodesPerElement);
       entities.push_back(entity);
@@ -461,12 +548,8 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix, std::vector
                      " hold no elements, so the mesh has no cells");
 
   // Vertices: the nodes of the cells, in increasing node tag.
-  std::vector<Tag> used;
-  used.reserve(cellElements.size() * nodesPerCell);
-  for (const auto& element : cellElements)
-    used.insert(used.end(), element.second, element.second + nodesPerCell);
-  std::sort(used.begin(), used.end());
-  used.erase(std::unique(used.begin(), used.end()), used.end());
+  VertexTags vertices(cellElements, nodesPerCell, raw.nodeTags.size());
+  const std::vector<Tag>& used = vertices.tags();
 
   std::vector<std::size_t> byTag(raw.nodeTags.size());
   std::iota(byTag.begin(), byTag.end(), std::size_t{0});
@@ -493,7 +576,7 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix, std::vector
   std::vector<double> x(dim * nodesPerCell);
   for (std::size_t c = 0; c < cellElements.size(); ++c) {
     long long* cell = mesh.cells.data() + nodesPerCell * c;
-    for (int i = 0; i < nodesPerCell; ++i) cell[i] = vertexIndex(used, cellElements[c].second[i]);
+    for (int i = 0; i < nodesPerCell; ++i) cell[i] = vertices.id(cellElements[c].second[i]);
     for (int i = 0; i < nodesPerCell; ++i)
       for (int j = 0; j < dim; ++j) x[dim * i + j] = mesh.vertices[dim * cell[i] + j];
     const double det = signedDeterminant(dim, x.data());
@@ -504,10 +587,10 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix, std::vector
   }
 
   addCellTags(raw, cellElements, prefix, mesh);
-  addBoundaryFacets(raw, used, prefix, mesh);
-  addGeometryEntities(raw.geometryFacetBlocks, used, dim, mesh.geometryFacets, mesh.geometryFacetEntities);
-  addGeometryEntities(raw.geometryEdgeBlocks, used, 2, mesh.geometryEdges, mesh.geometryEdgeEntities);
-  if (vertexTags) *vertexTags = std::move(used);
+  addBoundaryFacets(raw, vertices, prefix, mesh);
+  addGeometryEntities(raw.geometryFacetBlocks, vertices, dim, mesh.geometryFacets, mesh.geometryFacetEntities);
+  addGeometryEntities(raw.geometryEdgeBlocks, vertices, 2, mesh.geometryEdges, mesh.geometryEdgeEntities);
+  if (vertexTags) *vertexTags = vertices.release();
   return mesh;
 }
 

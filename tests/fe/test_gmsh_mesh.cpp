@@ -197,15 +197,16 @@ Expected writeCube(const std::string& path, const Format& format) {
 
 // A mesh given node by node: nodes (x, y, z) numbered 1.., triangles on surface 1 (physical
 // group "domain"), and lines on curve 1 (physical group "edge").
+// Node i at coords[3i..3i+2] has tag nodeTags[i] (default: i + 1); the elements name tags.
 void writeHandMadeMesh(const std::string& path, const std::vector<double>& coords,
-                       const std::vector<std::size_t>& triangles,
-                       const std::vector<std::size_t>& lines) {
+                       const std::vector<std::size_t>& triangles, const std::vector<std::size_t>& lines,
+                       std::vector<std::size_t> nodeTags = {}) {
   GmshApi api;
   gmsh::model::add("hand-made");
   gmsh::model::addDiscreteEntity(1, 1);
   gmsh::model::addDiscreteEntity(2, 1);
-  std::vector<std::size_t> nodeTags(coords.size() / 3);
-  for (std::size_t i = 0; i < nodeTags.size(); ++i) nodeTags[i] = i + 1;
+  if (nodeTags.empty())
+    for (std::size_t i = 0; i < coords.size() / 3; ++i) nodeTags.push_back(i + 1);
   gmsh::model::mesh::addNodes(2, 1, nodeTags, coords);
   std::vector<std::size_t> triangleTags(triangles.size() / 3), lineTags(lines.size() / 2);
   for (std::size_t i = 0; i < triangleTags.size(); ++i) triangleTags[i] = i + 1;
@@ -617,6 +618,19 @@ TEST(GmshMesh, HandMadeMeshIsReadAsGiven) {
   EXPECT_EQ(mesh.facets, (std::vector<long long>{0, 1, 2, 1}));  // Gmsh's order
   EXPECT_EQ(mesh.facetTags, (std::vector<int>{mesh.tag("edge"), mesh.tag("edge")}));
   EXPECT_EQ(mesh.boundaryTags.size(), 1u);
+}
+
+// Node tags far apart (no table by tag): the vertices still come in increasing tag.
+TEST(GmshMesh, SparseNodeTagsAreReadInTagOrder) {
+  TempDir dir;
+  const std::string path = dir.file("sparse.msh");
+  // The square of HandMadeMeshIsReadAsGiven, its corners tagged 7, 100000, 3, 5000000.
+  writeHandMadeMesh(path, {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0}, {7, 100000, 3, 7, 5000000, 3}, {7, 100000, 3, 100000},
+                    {7, 100000, 3, 5000000});
+  const SimplexMesh mesh = readGmshMesh(path);
+  EXPECT_EQ(mesh.vertices, (std::vector<double>{1, 1, 0, 0, 1, 0, 0, 1}));
+  EXPECT_EQ(mesh.cells, (std::vector<long long>{1, 2, 0, 1, 0, 3}));  // the second one's 1, 2 swapped
+  EXPECT_EQ(mesh.facets, (std::vector<long long>{1, 2, 0, 2}));
 }
 
 TEST(GmshMesh, TriangleOffThePlaneIsRejected) {
