@@ -81,22 +81,24 @@ RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefine
   std::vector<long long> pointIds(coarse.numCells() * perCell);
   for (long long c = 0; c < coarse.numCells(); ++c)
     for (long long p = 0; p < perCell; ++p) pointIds[c * perCell + p] = lattice.pointId(c, points[p], n);
+  // The vertices: the distinct ids, ascending, each first met in the coarse cell of lowest
+  // index; one sort of (id, position) numbers them all.
   std::vector<long long>& ids = result.vertexIds;
-  ids = pointIds;
-  std::sort(ids.begin(), ids.end());
-  ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  result.vertexPoints.resize(ids.size());
-  result.vertexCells.assign(ids.size(), -1);
-  mesh.vertices.resize(d * ids.size());
-  for (long long c = 0; c < coarse.numCells(); ++c)
-    for (long long p = 0; p < perCell; ++p) {
-      long long& local = pointIds[c * perCell + p];
-      local = std::lower_bound(ids.begin(), ids.end(), local) - ids.begin();
-      if (result.vertexCells[local] >= 0) continue;
-      result.vertexCells[local] = c;
-      result.vertexPoints[local] = points[p];
-      lattice.pointCoordinates(c, points[p], n, &mesh.vertices[d * local]);
+  std::vector<std::pair<long long, std::size_t>> byId(pointIds.size());
+  for (std::size_t k = 0; k < pointIds.size(); ++k) byId[k] = {pointIds[k], k};
+  std::sort(byId.begin(), byId.end());
+  for (const auto& [id, at] : byId) {
+    if (ids.empty() || ids.back() != id) {
+      ids.push_back(id);
+      result.vertexCells.push_back(static_cast<long long>(at) / perCell);
+      result.vertexPoints.push_back(points[at % perCell]);
     }
+    pointIds[at] = static_cast<long long>(ids.size()) - 1;
+  }
+  std::vector<std::pair<long long, std::size_t>>().swap(byId);
+  mesh.vertices.resize(d * ids.size());
+  for (std::size_t v = 0; v < ids.size(); ++v)
+    lattice.pointCoordinates(result.vertexCells[v], result.vertexPoints[v], n, &mesh.vertices[d * v]);
   mesh.cells.reserve(coarse.numCells() * templateCells.size() * (d + 1));
   for (long long c = 0; c < coarse.numCells(); ++c)
     for (const std::array<int, 4>& cell : refinement.cellPoints(level))
