@@ -12,6 +12,7 @@
 #include <Teuchos_CommHelpers.hpp>
 
 #include "assembly/GlobalPartition.hpp"
+#include "assembly/RefinedMeshPart.hpp"
 #include "assembly/SplitMeshPart.hpp"
 #include "core/RootTask.hpp"
 #include "fe/GmshMesh.hpp"
@@ -239,7 +240,10 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
   long long serialBytes = 0;
   runOnRoot(*comm_, [&] {
     if (!mesh) throw InputError("coarse mesh: rank 0 has no mesh");
-    mesh = std::make_shared<const SimplexMesh>(withShortestDiagonals(*mesh));
+    SimplexMesh rotated = withShortestDiagonals(*mesh);
+    mesh.reset();
+    orderAlongCurve(rotated);
+    mesh = std::make_shared<const SimplexMesh>(std::move(rotated));
     GlobalPartition partition(*mesh, 1, size);
     for (int r = 0; r < size; ++r) parts.push_back(partition.part(r));
     // Edges hold lattice points from resolution 2 on, faces (3D) from 3 on.
@@ -271,6 +275,7 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_pt
 CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, GmshMeshPart&& part, long long resolution)
     : comm_(comm) {
   part.mesh = withShortestDiagonals(part.mesh);
+  orderCellsAlongCurve(part.mesh);
   part_ = latticePartOfSplitMesh(comm_, std::move(part), resolution);
   indexNearEntities();
 }

@@ -27,15 +27,15 @@ namespace signorini::detail {
 
 class CoarseMeshLattice {
  public:
-  // Collective. Rank 0 partitions its `mesh` (METIS; the other ranks pass nullptr) and sends
-  // each rank its cells with the numbers and owners of their entities. Only points of
-  // resolution up to `resolution` can be asked for: the entities that hold none are not
-  // numbered. Throws on every rank InputError for a missing or inconsistent mesh, Error if
-  // the partition fails.
+  // Collective. Rank 0 renumbers its `mesh` along a Morton curve (orderAlongCurve), partitions
+  // it (METIS; the other ranks pass nullptr) and sends each rank its cells with the numbers
+  // and owners of their entities. Only points of resolution up to `resolution` can be asked
+  // for: the entities that hold none are not numbered. Throws on every rank InputError for a
+  // missing or inconsistent mesh, Error if the partition fails.
   CoarseMeshLattice(const RCP<const Comm>& comm, std::shared_ptr<const SimplexMesh> mesh, long long resolution);
   // Collective. Every rank passes its own part of a mesh read in parts (rank r part r); the
   // ranks number the entities together (latticePartOfSplitMesh), and none holds the mesh.
-  // Resolution as above.
+  // Each part's cells are put along a Morton curve (orderCellsAlongCurve). Resolution as above.
   CoarseMeshLattice(const RCP<const Comm>& comm, GmshMeshPart&& part, long long resolution);
 
   const RCP<const Comm>& comm() const { return comm_; }

@@ -39,6 +39,39 @@ std::vector<long long> coarseCellsAlongCurve(const SimplexMesh& mesh) {
   return order;
 }
 
+void orderCellsAlongCurve(SimplexMesh& mesh) {
+  const int npc = mesh.dim + 1;
+  const std::vector<long long> order = coarseCellsAlongCurve(mesh);
+  std::vector<long long> cells;
+  cells.reserve(mesh.cells.size());
+  for (long long c : order) cells.insert(cells.end(), &mesh.cells[npc * c], &mesh.cells[npc * c] + npc);
+  mesh.cells.swap(cells);
+  if (!mesh.cellTags.empty()) {
+    std::vector<int> tags(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) tags[i] = mesh.cellTags[order[i]];
+    mesh.cellTags.swap(tags);
+  }
+}
+
+void orderAlongCurve(SimplexMesh& mesh) {
+  orderCellsAlongCurve(mesh);
+  std::vector<long long> newVertex(mesh.numVertices(), -1);
+  long long next = 0;
+  for (long long& v : mesh.cells) {
+    long long& id = newVertex[v];
+    if (id < 0) id = next++;
+    v = id;
+  }
+  for (long long& id : newVertex)
+    if (id < 0) id = next++;  // in no cell
+  std::vector<double> vertices(mesh.vertices.size());
+  for (std::size_t v = 0; v < newVertex.size(); ++v)
+    std::copy_n(&mesh.vertices[mesh.dim * v], mesh.dim, &vertices[mesh.dim * newVertex[v]]);
+  mesh.vertices.swap(vertices);
+  for (auto* ids : {&mesh.facets, &mesh.geometryFacets, &mesh.geometryEdges})
+    for (long long& id : *ids) id = newVertex[id];
+}
+
 std::vector<long long> nodesByLocality(const LagrangeSpace& space, const std::vector<long long>& coarseOrder,
                                        long long perCoarse) {
   std::vector<long long> order;

@@ -43,6 +43,16 @@ DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, con
 // mesh's cells come in the mesher's order, which scatters neighbours in memory.
 std::vector<long long> coarseCellsAlongCurve(const SimplexMesh& mesh);
 
+// Puts `mesh`'s cells (and their tags) in coarseCellsAlongCurve() order, in place: the loops
+// over cells then visit neighbours one after another.
+void orderCellsAlongCurve(SimplexMesh& mesh);
+
+// orderCellsAlongCurve() and the vertices in order of first appearance in the cells, the
+// facets and geometry entities renumbered to match. The global numbers of a partitioned mesh,
+// and so each part's arrays and matrix rows, inherit this order: a mesher's would scatter a
+// cell's neighbours in memory.
+void orderAlongCurve(SimplexMesh& mesh);
+
 // The space's nodes in order of first appearance over its cells, coarse cell by coarse cell
 // in `coarseOrder` (each coarse cell's `perCoarse` fine cells are consecutive): a global
 // numbering in this order keeps a cell's nodes near in memory.
