@@ -1,5 +1,9 @@
 #include "solver/preconditioner/MueLuPreconditioner.hpp"
 
+#include <algorithm>
+#include <numeric>
+#include <vector>
+
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <MueLu_Hierarchy.hpp>
 #include <MueLu_ParameterListInterpreter.hpp>
@@ -41,10 +45,13 @@ Teuchos::ParameterList MueLuPreconditioner::defaultParameters(int blockSize) {
 
 MueLuPreconditioner::MueLuPreconditioner(const Teuchos::ParameterList& params, int blockSize,
                                          RCP<const MultiVector> nullspace,
-                                         RCP<const MultiVector> coordinates)
+                                         RCP<const MultiVector> coordinates,
+                                         MinAggregateSize minAggregateSize)
     : params_(defaultParameters(blockSize)),
       nullspace_(std::move(nullspace)),
-      coordinates_(std::move(coordinates)) {
+      coordinates_(std::move(coordinates)),
+      highValenceRoots_(minAggregateSize == MinAggregateSize::HighValenceRoots &&
+                        !params.isParameter("aggregation: min agg size")) {
   // Our smoother parameters belong to our smoother choice: a user who picks another
   // smoother (or coarse solver) gets that package's defaults for it, plus whatever params
   // the user gives, never ours (Chebyshev's degree is an error for a relaxation).
@@ -83,6 +90,25 @@ bool samePattern(const CrsMatrix& A, const CrsMatrix& B) {
   return all == 1;
 }
 
+// The 99th percentile over all nodes of a node's row size in the nodal graph of A (the node
+// and its neighbours): the entries of the node's first row over blockSize, rounded up. Collective.
+int highValenceRowSize(const CrsMatrix& A, int blockSize) {
+  constexpr int kLargest = 512;
+  std::vector<long long> local(kLargest + 1, 0), global(kLargest + 1, 0);
+  const auto rowMap = A.getRowMap();
+  for (LocalOrdinal r = 0; r < static_cast<LocalOrdinal>(A.getNodeNumRows()); ++r) {
+    if (rowMap->getGlobalElement(r) % blockSize != 0) continue;
+    const std::size_t size = (A.getNumEntriesInLocalRow(r) + blockSize - 1) / blockSize;
+    ++local[std::min<std::size_t>(size, kLargest)];
+  }
+  Teuchos::reduceAll(*A.getComm(), Teuchos::REDUCE_SUM, kLargest + 1, local.data(), global.data());
+  const long long nodes = std::accumulate(global.begin(), global.end(), 0LL);
+  long long atMost = 0;
+  for (int size = 0; size < kLargest; ++size)
+    if ((atMost += global[size]) * 100 >= nodes * 99) return size;
+  return kLargest;
+}
+
 }  // namespace
 
 void MueLuPreconditioner::compute(const RCP<CrsMatrix>& A, bool reuse) {
@@ -98,7 +124,12 @@ void MueLuPreconditioner::compute(const RCP<CrsMatrix>& A, bool reuse) {
   // The parameter list is interpreted once: building MueLu's factories from it costs more
   // than a whole setup of a small hierarchy, and every Newton step sets one up.
   try {
-    if (factory_.is_null()) factory_ = rcp(new Interpreter(params_, A->getDomainMap()->getComm()));
+    if (factory_.is_null()) {
+      if (highValenceRoots_)
+        params_.set("aggregation: min agg size",
+                    std::max(2, highValenceRowSize(*A, params_.get<int>("number of equations"))));
+      factory_ = rcp(new Interpreter(params_, A->getDomainMap()->getComm()));
+    }
     const RCP<Hierarchy> hierarchy = factory_->CreateHierarchy();
     hierarchy->setlib(Xpetra::UseTpetra);
     const RCP<MueLu::Level> fine = hierarchy->GetLevel(0);

@@ -17,10 +17,19 @@ class MueLuPreconditioner : public MultilevelPreconditioner {
   // small enough for that to be exact in practice (see tests/solver/test_muelu_parallel).
   static Teuchos::ParameterList defaultParameters(int blockSize);
 
+  // How "aggregation: min agg size" is chosen when the user's list does not set it.
+  // HighValenceRoots: the 99th percentile of the nodal row sizes (a node and its neighbours) of
+  // the first matrix, so that aggregation starts only from the best-connected nodes and grows
+  // around them: fewer, larger aggregates and a sparser coarse level where MueLu is the whole
+  // hierarchy of a fine unstructured mesh, whose first coarse level is otherwise a tenth of
+  // the fine one and dense.
+  enum class MinAggregateSize { MueLuDefault, HighValenceRoots };
+
   // `params` is the user's "MueLu" list; entries it lacks are taken from defaultParameters.
   // `nullspace` lives on the DOF map, `coordinates` on the node map (either may be null).
   MueLuPreconditioner(const Teuchos::ParameterList& params, int blockSize,
-                      RCP<const MultiVector> nullspace, RCP<const MultiVector> coordinates);
+                      RCP<const MultiVector> nullspace, RCP<const MultiVector> coordinates,
+                      MinAggregateSize minAggregateSize = MinAggregateSize::MueLuDefault);
 
   // Builds the hierarchy for A. With `reuse`, a hierarchy built before for a matrix of the
   // same pattern is refreshed according to the list's "reuse: type" instead of rebuilt; for a
@@ -33,6 +42,7 @@ class MueLuPreconditioner : public MultilevelPreconditioner {
  private:
   Teuchos::ParameterList params_;
   RCP<const MultiVector> nullspace_, coordinates_;
+  bool highValenceRoots_;  // set aggregation: min agg size from the first matrix
   RCP<Operator> op_;
   RCP<const CrsMatrix> built_;  // the matrix of the last compute()
   // MueLu's factories, made from params_ at the first compute() and kept for the next ones.

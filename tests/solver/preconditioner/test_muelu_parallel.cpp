@@ -95,6 +95,31 @@ TEST(MueLuParallel, Elasticity3DDefaultsConvergeFast) {
   EXPECT_LE(r.iterations, 40);
 }
 
+// With high-valence roots, aggregation starts only at nodes whose row in the nodal graph is
+// at least the 99th percentile of the row sizes: on a brick mesh of 16^3 cells two thirds of
+// the nodes are interior with all 26 neighbours (27 nodes in the row), the rest have fewer.
+// A user's own min agg size wins; either way CG converges fast.
+TEST(MueLuParallel, HighValenceRootsTakeThe99thPercentileOfTheNodalRowSizes) {
+  const ElasticityProblem p = galeriElasticity(3, 16);
+  using Choice = MueLuPreconditioner::MinAggregateSize;
+  MueLuPreconditioner chosen(Teuchos::ParameterList(), 3, p.nullspace, Teuchos::null, Choice::HighValenceRoots);
+  chosen.compute(p.A);
+  EXPECT_EQ(chosen.parameters().get<int>("aggregation: min agg size"), 27);
+
+  Teuchos::ParameterList user;
+  user.set("aggregation: min agg size", 4);
+  MueLuPreconditioner users(user, 3, p.nullspace, Teuchos::null, Choice::HighValenceRoots);
+  users.compute(p.A);
+  EXPECT_EQ(users.parameters().get<int>("aggregation: min agg size"), 4);
+
+  auto b = rcp(new MultiVector(p.A->getRangeMap(), 1));
+  b->randomize();
+  auto x = rcp(new MultiVector(p.A->getDomainMap(), 1));
+  const KrylovResult r = KrylovSolver().solve(p.A, chosen.getOperator(), b, x, 1e-8, 500);
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(r.iterations, 40);
+}
+
 // A smoother other than ours starts from the package's defaults plus the user's params,
 // with or without a params sublist; the same smoother merges the user's params into ours.
 TEST(MueLuParallel, UserSmootherTypeDropsOurSmootherParams) {
