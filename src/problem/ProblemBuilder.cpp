@@ -15,6 +15,7 @@
 #include "assembly/CoarseMeshLattice.hpp"
 #include "assembly/ElasticityAssembler.hpp"
 #include "assembly/MeshVertexGrid.hpp"
+#include "assembly/ParallelMshRead.hpp"
 #include "assembly/RefinedMeshGrid.hpp"
 #include "core/Collectives.hpp"
 #include "core/CommunicationPhase.hpp"
@@ -102,6 +103,16 @@ int numPartFiles(const Comm& comm, const std::filesystem::path& file) {
   return count;
 }
 
+// The space of a mesh of which every rank holds its own part (rank r part r).
+std::shared_ptr<const GeometricGrid> partSpace(const Teuchos::ParameterList& problem, const GmshSource& gmsh,
+                                               const std::filesystem::path& file, GmshMeshPart&& part,
+                                               const RCP<const Comm>& comm, AssembledProblem& result,
+                                               std::shared_ptr<const DistributedSpace>& space) {
+  const long long resolution = finestResolution(problem, part.mesh.dim, gmsh);
+  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(part), resolution);
+  return latticeSpace(problem, gmsh, file, lattice, result, space);
+}
+
 // The space of a Gmsh mesh written in `numParts` part files, one per rank: each rank reads
 // its own and no rank holds the mesh.
 std::shared_ptr<const GeometricGrid> splitGmshSpace(const Teuchos::ParameterList& problem, const GmshSource& gmsh,
@@ -123,16 +134,16 @@ std::shared_ptr<const GeometricGrid> splitGmshSpace(const Teuchos::ParameterList
       throw InputError("Gmsh mesh file '" + path + "': it holds part " + std::to_string(part.part + 1) + ", not part " +
                        std::to_string(comm->getRank() + 1));
   });
-  const long long resolution = finestResolution(problem, part.mesh.dim, gmsh);
-  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(part), resolution);
-  return latticeSpace(problem, gmsh, file, lattice, result, space);
+  return partSpace(problem, gmsh, file, std::move(part), comm, result, space);
 }
 
 // The definition of the validated `problem` list and the space, with the grids of a refined
-// mesh if there are. Every rank makes its own part of a box mesh. A Gmsh mesh is read by rank
-// 0 alone, once, and freed once each rank has its part (of the mesh, or of the coarse mesh it
-// refines: CoarseMeshLattice); a mesh written in parts, each rank its own part. The mesh's
-// dimension decides the one the rest of the definition is read with.
+// mesh if there are. Every rank makes its own part of a box mesh. A mesh written in parts:
+// each rank its own part. A .msh file with `mesh: read` = "all ranks", on more than one rank:
+// all ranks together, each keeping a slice and then its part (readMshInParallel), where the
+// parallel reader knows the file's format. Any other Gmsh mesh is read by rank 0 alone, once,
+// and freed once each rank has its part (CoarseMeshLattice). The mesh's dimension decides the
+// one the rest of the definition is read with.
 std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                                                const std::string& baseDirectory, AssembledProblem& result,
                                                std::shared_ptr<const DistributedSpace>& space) {
@@ -150,6 +161,11 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
   if (file.is_relative()) file = std::filesystem::path(baseDirectory) / file;
   if (const int numParts = numPartFiles(*comm, file); numParts > 0)
     return splitGmshSpace(problem, gmsh, file, numParts, comm, result, space);
+  if (gmsh.readByAllRanks && comm->getSize() > 1 && file.extension() == ".msh") {
+    std::string unsupported;  // the file is then read whole by rank 0
+    GmshMeshPart part = detail::readMshInParallel(comm, file.string(), unsupported);
+    if (unsupported.empty()) return partSpace(problem, gmsh, file, std::move(part), comm, result, space);
+  }
   detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
   int dim = mesh ? mesh->dim : 0;
   Teuchos::broadcast(*comm, 0, 1, &dim);

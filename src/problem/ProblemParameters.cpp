@@ -118,11 +118,8 @@ void addContactPairs(ParameterList& problem) {
   addContactParameters(contact.sublist(kAnyNameSublist));
 }
 
-}  // namespace
-
-ParameterList validProblemParameters() {
-  ParameterList p("Problem");
-  p.set("name", "unnamed", "Name of the problem, reported in outputs");
+// The mesh: a box, or a Gmsh file and how it is read and refined.
+void addMeshParameters(ParameterList& p) {
   p.set("mesh: type", "box", "\"box\": structured simplex mesh of a box; \"gmsh\": a .msh file",
         choices({"box", "gmsh"}));
   p.set("mesh: dimension", 2, "Space dimension of a box mesh", range(2, 3));
@@ -134,6 +131,13 @@ ParameterList validProblemParameters() {
         "When name.msh does not exist but name_1.msh .. name_N.msh do (a mesh Gmsh partitioned and wrote "
         "in parts: gmsh -part N -part_split), each of the N ranks reads its own part; N must be the rank "
         "count");
+  p.set("mesh: read", "rank 0",
+        "How a whole .msh file is read on more than one rank. \"rank 0\": rank 0 reads it (Gmsh) and "
+        "partitions it (METIS), then sends each rank its part. \"all ranks\": every rank reads a slice of "
+        "the file, PT-Scotch partitions the cells in parallel and each rank receives its part, so that no "
+        "rank holds the whole mesh (for MSH 4.1 ASCII files, Gmsh's default format; other files are read "
+        "by rank 0)",
+        choices({"rank 0", "all ranks"}));
   p.set("mesh: size factor", 1.0, "A .geo geometry's mesh sizes are multiplied by this (Gmsh's Mesh.MeshSizeFactor)",
         range(1e-6, 1e6));
   p.set("mesh: refinements", 0,
@@ -143,6 +147,14 @@ ParameterList validProblemParameters() {
         "midpoints; those on the boundary of a .geo geometry are moved onto it (curved boundaries stay "
         "curved), those of a .msh file stay on the facets of the mesh read",
         range(0, 10));
+}
+
+}  // namespace
+
+ParameterList validProblemParameters() {
+  ParameterList p("Problem");
+  p.set("name", "unnamed", "Name of the problem, reported in outputs");
+  addMeshParameters(p);
   p.set("element: degree", 1, "Degree of the continuous Lagrange elements", range(1, 3));
   p.set("material: young's modulus", 1.0, "Young's modulus E", range(1e-300, 1e300));
   p.set("material: poisson ratio", 0.3, "Poisson ratio nu", range(-0.999, 0.4999));
@@ -313,7 +325,8 @@ GmshSource detail::gmshSourceOf(const ParameterList& p) {
   if (p.get<std::string>("mesh: type") != "gmsh") return {};
   const std::string file = p.get<std::string>("mesh: file");
   if (file.empty()) throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
-  return {file, p.get<double>("mesh: size factor"), p.get<int>("mesh: refinements")};
+  return {file, p.get<double>("mesh: size factor"), p.get<int>("mesh: refinements"),
+          p.get<std::string>("mesh: read") == "all ranks"};
 }
 
 ProblemDefinition detail::definitionOf(const ParameterList& p, int meshDim) {

@@ -1,0 +1,450 @@
+#include "assembly/ParallelMshRead.hpp"
+
+#include <mpi.h>
+#include <ptscotch.h>
+
+#include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
+
+#include <algorithm>
+#include <array>
+#include <climits>
+#include <cmath>
+#include <cstdint>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/Collectives.hpp"
+#include "core/NeighbourExchange.hpp"
+#include "core/RootTask.hpp"
+#include "fe/MshFileSlice.hpp"
+#include "signorini/core/Error.hpp"
+
+namespace signorini::detail {
+namespace {
+
+using Key = std::array<long long, 3>;  // a face's sorted node tags, padded with -1
+
+Key sortedKey(const long long* tags, int n) {
+  Key key{-1, -1, -1};
+  for (int i = 0; i < n; ++i) {  // insertion: at most three tags
+    int j = i;
+    for (; j > 0 && key[j - 1] > tags[i]; --j) key[j] = key[j - 1];
+    key[j] = tags[i];
+  }
+  return key;
+}
+
+// SplitMix64 of a face's tags: its directory rank is the hash modulo the rank count.
+std::uint64_t hashOf(const Key& key) {
+  std::uint64_t h = 0;
+  for (long long t : key) {
+    h ^= static_cast<std::uint64_t>(t) + 0x9e3779b97f4a7c15ULL;
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
+    h ^= h >> 31;
+  }
+  return h;
+}
+
+// Faces a rank sends its directories in one round (four numbers each): the directory works in
+// rounds, by the faces' hashes, so that its records take a bounded memory.
+constexpr long long kFacesPerRound = 1 << 21;
+
+// The ranks' blocks of received records as one array.
+std::vector<long long> joined(const std::vector<std::vector<long long>>& fromRank) {
+  std::vector<long long> all;
+  for (const auto& block : fromRank) all.insert(all.end(), block.begin(), block.end());
+  return all;
+}
+
+// What the reading ranks know between the steps. Cells are numbered globally by their index
+// in the file's sequence of cells, which the slices cut into contiguous ranges.
+class ParallelRead {
+ public:
+  ParallelRead(const RCP<const Comm>& comm, const std::string& path, MshFileSlice&& slice)
+      : comm_(comm), prefix_("Gmsh mesh file '" + path + "': "), slice_(std::move(slice)),
+        d_(slice_.dim), rank_(comm->getRank()), size_(comm->getSize()) {
+    for (int r = 0; r <= size_; ++r)
+      cellStart_.push_back(static_cast<long long>(static_cast<__int128>(slice_.numCells) * r / size_));
+  }
+
+  GmshMeshPart part() {
+    if (slice_.numCells < size_)
+      throw InputError(prefix_ + "it has " + std::to_string(slice_.numCells) + " cells, fewer than the " +
+                       std::to_string(size_) + " ranks");
+    faceDirectory();
+    partition();
+    facetsToParts();
+    migrateCells();
+    return assemble();
+  }
+
+ private:
+  int cellOwner(long long cell) const {
+    return static_cast<int>(std::upper_bound(cellStart_.begin(), cellStart_.end(), cell) - cellStart_.begin()) - 1;
+  }
+  long long numLocalCells() const { return cellStart_[rank_ + 1] - cellStart_[rank_]; }
+
+  // Every cell's faces and every boundary facet go to the directory rank of their key; the
+  // directory tells each cell its neighbours across faces and remembers the cell of each facet.
+  void faceDirectory() {
+    const long long rounds = maxOverRanks(*comm_, numLocalCells() * (d_ + 1)) / kFacesPerRound + 1;
+    std::vector<long long> adjacent;  // (cell, neighbour) pairs of the slice's cells
+    for (long long round = 0; round < rounds; ++round) {
+      const auto inRound = [&](const Key& key, int& directory) {
+        const std::uint64_t h = hashOf(key);
+        directory = static_cast<int>(h % static_cast<std::uint64_t>(size_));
+        return static_cast<long long>(h / static_cast<std::uint64_t>(size_) % static_cast<std::uint64_t>(rounds)) == round;
+      };
+      std::vector<long long> faces = joined(exchangeWithRanks(*comm_, cellFaces(inRound)));
+      std::vector<long long> facets = joined(exchangeWithRanks(*comm_, boundaryFacets(inRound)));
+      std::vector<std::vector<long long>> pairs(size_);
+      runOnEveryRank(*comm_, [&] { matchFaces(faces, facets, pairs); });
+      heldFacets_.insert(heldFacets_.end(), facets.begin(), facets.end());
+      faces = joined(exchangeWithRanks(*comm_, pairs));
+      adjacent.insert(adjacent.end(), faces.begin(), faces.end());
+    }
+    adjacencyStart_.assign(numLocalCells() + 1, 0);
+    for (std::size_t i = 0; i < adjacent.size(); i += 2) ++adjacencyStart_[adjacent[i] - cellStart_[rank_] + 1];
+    std::partial_sum(adjacencyStart_.begin(), adjacencyStart_.end(), adjacencyStart_.begin());
+    adjacency_.resize(adjacent.size() / 2);
+    std::vector<long long> next(adjacencyStart_.begin(), adjacencyStart_.end() - 1);
+    for (std::size_t i = 0; i < adjacent.size(); i += 2)
+      adjacency_[next[adjacent[i] - cellStart_[rank_]]++] = adjacent[i + 1];
+  }
+
+  // The slice cells' faces of the round, (key, cell) to their directories.
+  template <class InRound>
+  std::vector<std::vector<long long>> cellFaces(const InRound& inRound) const {
+    std::vector<std::vector<long long>> faces(size_);
+    int directory = 0;
+    for (long long c = 0; c < numLocalCells(); ++c)
+      for (int omit = 0; omit <= d_; ++omit) {
+        long long tags[3];
+        for (int i = 0, k = 0; i <= d_; ++i)
+          if (i != omit) tags[k++] = slice_.cellNodes[(d_ + 1) * c + i];
+        const Key key = sortedKey(tags, d_);
+        if (!inRound(key, directory)) continue;
+        faces[directory].insert(faces[directory].end(), key.begin(), key.end());
+        faces[directory].push_back(cellStart_[rank_] + c);
+      }
+    return faces;
+  }
+
+  // The slice's boundary facets of the round, (key, element, group, nodes) to their directories.
+  template <class InRound>
+  std::vector<std::vector<long long>> boundaryFacets(const InRound& inRound) const {
+    std::vector<std::vector<long long>> facets(size_);
+    int directory = 0;
+    for (std::size_t f = 0; f < slice_.facetTags.size(); ++f) {
+      const long long* nodes = slice_.facetNodes.data() + d_ * f;
+      const Key key = sortedKey(nodes, d_);
+      if (!inRound(key, directory)) continue;
+      std::vector<long long>& to = facets[directory];
+      to.insert(to.end(), key.begin(), key.end());
+      to.push_back(slice_.facetElements[f]);
+      to.push_back(slice_.facetTags[f]);
+      to.insert(to.end(), nodes, nodes + d_);
+    }
+    return facets;
+  }
+
+  // The directory's work on a round: the received faces (key, cell) sorted by key; a pair of
+  // cells on one face are neighbours; each received facet gets the lowest cell it is a face of.
+  void matchFaces(const std::vector<long long>& received, const std::vector<long long>& facets,
+                  std::vector<std::vector<long long>>& pairs) {
+    std::vector<std::pair<Key, long long>> faces(received.size() / 4);
+    for (std::size_t f = 0; f < faces.size(); ++f)
+      faces[f] = {{received[4 * f], received[4 * f + 1], received[4 * f + 2]}, received[4 * f + 3]};
+    std::sort(faces.begin(), faces.end());
+    for (std::size_t first = 0, end = 0; first < faces.size(); first = end) {
+      for (end = first + 1; end < faces.size() && faces[end].first == faces[first].first;) ++end;
+      if (end - first > 2) notConforming(faces[first].first);
+      if (end - first == 2)
+        for (int s = 0; s < 2; ++s) {
+          auto& to = pairs[cellOwner(faces[first + s].second)];
+          to.push_back(faces[first + s].second);
+          to.push_back(faces[first + 1 - s].second);
+        }
+    }
+    const std::size_t record = 5 + d_;
+    for (std::size_t f = 0; f < facets.size(); f += record) {
+      const Key key{facets[f], facets[f + 1], facets[f + 2]};
+      const auto it = std::lower_bound(faces.begin(), faces.end(), std::make_pair(key, LLONG_MIN));
+      if (it == faces.end() || it->first != key) notAFace(facets[f + 3], static_cast<int>(facets[f + 4]));
+      facetCells_.push_back(it->second);
+    }
+  }
+
+  [[noreturn]] void notConforming(const Key& key) const {
+    std::string nodes;
+    for (int i = 0; i < d_; ++i) nodes += (i ? ", " : "") + std::to_string(key[i]);
+    throw InputError(prefix_ + "the " + (d_ == 2 ? "edge" : "face") + " of nodes " + nodes +
+                     " is a side of more than two cells: the mesh is not conforming or repeats a cell");
+  }
+
+  [[noreturn]] void notAFace(long long element, int group) const {
+    std::string name = "physical" + std::to_string(group);
+    for (const auto& [n, tag] : slice_.boundaryTags)
+      if (tag == group) name = n;
+    throw InputError(prefix_ + "boundary element " + std::to_string(element) + " of the group \"" + name +
+                     "\" is not " + (d_ == 2 ? "an edge" : "a face") + " of any cell of the mesh");
+  }
+
+  // PT-Scotch's partition of the cells' dual graph into one part per rank.
+  void partition() {
+    part_.assign(numLocalCells(), 0);
+    if (size_ == 1) return;
+    if (slice_.numCells > INT_MAX) throw InputError(prefix_ + "more cells than PT-Scotch's 32-bit numbers can hold");
+    std::vector<SCOTCH_Num> vertices(adjacencyStart_.begin(), adjacencyStart_.end());
+    std::vector<SCOTCH_Num> edges(adjacency_.begin(), adjacency_.end());
+    std::vector<SCOTCH_Num> parts(part_.size());
+    const MPI_Comm raw = *dynamic_cast<const Teuchos::MpiComm<int>&>(*comm_).getRawMpiComm();
+    // A context that makes PT-Scotch deterministic: the same partition at every run.
+    SCOTCH_Context context;
+    SCOTCH_Dgraph graph, bound;
+    SCOTCH_Strat strategy;
+    SCOTCH_contextInit(&context);
+    SCOTCH_stratInit(&strategy);
+    SCOTCH_stratDgraphMapBuild(&strategy, SCOTCH_STRATSPEED, size_, size_, 0.03);  // parts within 3% of the mean
+    // One thread: PT-Scotch's threads call MPI, which this program initialises single-threaded.
+    bool ok = SCOTCH_contextThreadSpawn(&context, 1, nullptr) == 0 &&
+              SCOTCH_contextOptionSetNum(&context, SCOTCH_OPTIONNUMDETERMINISTIC, 1) == 0 &&
+              SCOTCH_contextOptionSetNum(&context, SCOTCH_OPTIONNUMRANDOMFIXEDSEED, 1) == 0 &&
+              SCOTCH_dgraphInit(&graph, raw) == 0;
+    ok = ok && SCOTCH_dgraphBuild(&graph, 0, static_cast<SCOTCH_Num>(numLocalCells()),
+                                  static_cast<SCOTCH_Num>(numLocalCells()), vertices.data(), vertices.data() + 1,
+                                  nullptr, nullptr, static_cast<SCOTCH_Num>(edges.size()),
+                                  static_cast<SCOTCH_Num>(edges.size()), edges.data(), nullptr, nullptr) == 0;
+    ok = ok && SCOTCH_dgraphInit(&bound, raw) == 0 && SCOTCH_contextBindDgraph(&context, &graph, &bound) == 0;
+    ok = ok && SCOTCH_dgraphPart(&bound, static_cast<SCOTCH_Num>(size_), &strategy, parts.data()) == 0;
+    SCOTCH_dgraphExit(&bound);
+    SCOTCH_dgraphExit(&graph);
+    SCOTCH_stratExit(&strategy);
+    SCOTCH_contextExit(&context);
+    if (!onEveryRank(*comm_, ok)) throw Error(prefix_ + "PT-Scotch could not partition the mesh's cells");
+    std::copy(parts.begin(), parts.end(), part_.begin());
+    adjacency_ = {};
+    adjacencyStart_ = {};
+  }
+
+  // The directory asks the slice owners of its facets' cells for their parts and sends each
+  // facet (element, group, nodes) to its cell's part.
+  void facetsToParts() {
+    std::vector<std::vector<long long>> asked(size_);
+    for (long long cell : facetCells_) asked[cellOwner(cell)].push_back(cell);
+    const std::vector<std::vector<long long>> questions = exchangeWithRanks(*comm_, asked);
+    std::vector<std::vector<long long>> answers(size_);
+    for (int r = 0; r < size_; ++r)
+      for (long long cell : questions[r]) answers[r].push_back(part_[cell - cellStart_[rank_]]);
+    const std::vector<std::vector<long long>> parts = exchangeWithRanks(*comm_, answers);
+    std::vector<std::size_t> next(size_, 0);
+    std::vector<std::vector<long long>> toPart(size_);
+    const std::size_t record = 5 + d_;
+    for (std::size_t f = 0; f < facetCells_.size(); ++f) {
+      const int owner = cellOwner(facetCells_[f]);
+      auto& to = toPart[parts[owner][next[owner]++]];
+      to.insert(to.end(), heldFacets_.begin() + record * f + 3, heldFacets_.begin() + record * (f + 1));
+    }
+    heldFacets_ = joined(exchangeWithRanks(*comm_, toPart));  // (element, group, d nodes) per facet
+    facetCells_ = {};
+  }
+
+  // Each slice cell (element, body, nodes) to its part; received in element order.
+  void migrateCells() {
+    std::vector<std::vector<long long>> toPart(size_);
+    const bool bodies = !slice_.cellBodies.empty();
+    for (long long c = 0; c < numLocalCells(); ++c) {
+      auto& to = toPart[part_[c]];
+      to.push_back(slice_.cellElements[c]);
+      to.push_back(bodies ? slice_.cellBodies[c] : 0);
+      to.insert(to.end(), slice_.cellNodes.begin() + (d_ + 1) * c, slice_.cellNodes.begin() + (d_ + 1) * (c + 1));
+    }
+    slice_.cellElements = {};
+    slice_.cellNodes = {};
+    slice_.cellBodies = {};
+    cells_ = joined(exchangeWithRanks(*comm_, toPart));
+  }
+
+  GmshMeshPart assemble();
+  void vertexData(GmshMeshPart& part);
+  void cellsAndFacets(GmshMeshPart& part) const;
+
+  RCP<const Comm> comm_;
+  std::string prefix_;
+  MshFileSlice slice_;
+  int d_, rank_, size_;
+  std::vector<long long> cellStart_;                  // global cells of rank r: [cellStart_[r], cellStart_[r + 1])
+  std::vector<long long> adjacencyStart_, adjacency_;  // the slice cells' neighbours (CSR)
+  std::vector<long long> heldFacets_;                  // at the directory, then at the part
+  std::vector<long long> facetCells_;                  // the cell of each held facet, at the directory
+  std::vector<int> part_;                              // the part of each slice cell
+  std::vector<long long> cells_;                       // the part's cells: element, body, d + 1 nodes
+};
+
+// The part's vertices (the node tags of its cells, ascending) with their coordinates and the
+// parts that share them, from the directory that holds each node tag's slice.
+void ParallelRead::vertexData(GmshMeshPart& part) {
+  const std::size_t record = d_ + 3;
+  std::vector<long long>& tags = part.vertexTags;
+  for (std::size_t c = 0; c < cells_.size(); c += record) tags.insert(tags.end(), &cells_[c + 2], &cells_[c + record]);
+  std::sort(tags.begin(), tags.end());
+  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+  std::vector<std::vector<long long>> asked(size_);
+  for (long long tag : tags) asked[MshFileSlice::sliceOfNode(tag, slice_.minNodeTag, slice_.maxNodeTag, size_)].push_back(tag);
+  const std::vector<std::vector<long long>> questions = exchangeWithRanks(*comm_, asked);
+  std::vector<std::vector<double>> coordinates(size_);
+  std::vector<std::vector<long long>> sharers(size_);
+  runOnEveryRank(*comm_, [&] {
+    std::vector<std::pair<long long, std::size_t>> held(slice_.nodeTags.size());  // (tag, index), sorted
+    for (std::size_t i = 0; i < held.size(); ++i) held[i] = {slice_.nodeTags[i], i};
+    std::sort(held.begin(), held.end());
+    std::vector<std::pair<long long, int>> users;  // (tag, asking rank), sorted
+    for (int r = 0; r < size_; ++r)
+      for (long long tag : questions[r]) users.emplace_back(tag, r);
+    std::sort(users.begin(), users.end());
+    for (int r = 0; r < size_; ++r)
+      for (long long tag : questions[r]) {
+        const auto it = std::lower_bound(held.begin(), held.end(), std::make_pair(tag, std::size_t{0}));
+        if (it == held.end() || it->first != tag)
+          throw InputError(prefix_ + "a cell uses node " + std::to_string(tag) + ", which the file does not define");
+        coordinates[r].insert(coordinates[r].end(), &slice_.nodeCoordinates[3 * it->second],
+                              &slice_.nodeCoordinates[3 * it->second + 3]);
+        const auto first = std::lower_bound(users.begin(), users.end(), std::make_pair(tag, INT_MIN));
+        const auto end = std::upper_bound(users.begin(), users.end(), std::make_pair(tag, INT_MAX));
+        sharers[r].push_back(end - first);
+        for (auto u = first; u != end; ++u) sharers[r].push_back(u->second);
+      }
+  });
+  slice_.nodeTags = {};
+  slice_.nodeCoordinates = {};
+  const std::vector<double> xyz = exchangeWithRanks(*comm_, coordinates);
+  const std::vector<std::vector<long long>> shared = exchangeWithRanks(*comm_, sharers);
+  // Answers come by directory rank, in the order of the questions: put them in tag order.
+  std::vector<std::size_t> slot;  // the vertex of each answer, in answer order
+  for (int r = 0; r < size_; ++r)
+    for (long long tag : asked[r]) slot.push_back(std::lower_bound(tags.begin(), tags.end(), tag) - tags.begin());
+  std::vector<double> z(tags.size());
+  part.mesh.vertices.resize(d_ * tags.size());
+  std::vector<std::vector<int>> by(tags.size());
+  std::size_t k = 0;
+  for (int r = 0; r < size_; ++r)
+    for (std::size_t i = 0, at = 0; i < asked[r].size(); ++i, ++k) {
+      for (int c = 0; c < d_; ++c) part.mesh.vertices[d_ * slot[k] + c] = xyz[3 * k + c];
+      z[slot[k]] = xyz[3 * k + 2];
+      const long long count = shared[r][at++];
+      for (long long s = 0; s < count; ++s) by[slot[k]].push_back(static_cast<int>(shared[r][at++]));
+    }
+  part.sharerStart.assign(1, 0);
+  for (const std::vector<int>& ranks : by) {
+    part.sharers.insert(part.sharers.end(), ranks.begin(), ranks.end());
+    part.sharerStart.push_back(static_cast<long long>(part.sharers.size()));
+  }
+  if (d_ == 2) {  // a 2D mesh lies in the plane z = 0, to round-off relative to its extent
+    double extent = 0;
+    for (int c = 0; c < 2; ++c) {
+      double lo = INFINITY, hi = -INFINITY;
+      for (std::size_t v = 0; v < tags.size(); ++v) {
+        lo = std::min(lo, part.mesh.vertices[2 * v + c]);
+        hi = std::max(hi, part.mesh.vertices[2 * v + c]);
+      }
+      extent = std::max(extent, maxOverRanks(*comm_, hi) - minOverRanks(*comm_, lo));
+    }
+    runOnEveryRank(*comm_, [&] {
+      for (std::size_t v = 0; v < tags.size(); ++v)
+        if (std::abs(z[v]) > 1e-12 * extent)
+          throw InputError(prefix_ + "it is a 2D mesh (triangles) but node " + std::to_string(tags[v]) + " has z = " +
+                           std::to_string(z[v]) + "; a 2D mesh must lie in the plane z = 0");
+    });
+  }
+}
+
+double signedDeterminant(int dim, const double* x) {
+  if (dim == 2) return (x[2] - x[0]) * (x[5] - x[1]) - (x[4] - x[0]) * (x[3] - x[1]);
+  double a[3][3];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) a[r][c] = x[3 * (r + 1) + c] - x[c];
+  return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+         a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+}
+
+double longestEdge(int dim, const double* x) {
+  double longest = 0;
+  for (int i = 0; i <= dim; ++i)
+    for (int j = i + 1; j <= dim; ++j) {
+      double squared = 0;
+      for (int c = 0; c < dim; ++c) squared += (x[dim * i + c] - x[dim * j + c]) * (x[dim * i + c] - x[dim * j + c]);
+      longest = std::max(longest, std::sqrt(squared));
+    }
+  return longest;
+}
+
+// The part's cells by element tag, as vertex ids, positively oriented, with their bodies; its
+// facets by (element, group).
+void ParallelRead::cellsAndFacets(GmshMeshPart& part) const {
+  SimplexMesh& mesh = part.mesh;
+  const std::size_t record = d_ + 3;
+  const auto vertex = [&part](long long tag) {
+    return std::lower_bound(part.vertexTags.begin(), part.vertexTags.end(), tag) - part.vertexTags.begin();
+  };
+  std::vector<std::size_t> order(cells_.size() / record);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cells_[record * a] < cells_[record * b]; });
+  std::vector<double> x(d_ * (d_ + 1));
+  for (std::size_t c : order) {
+    const long long* cell = &cells_[record * c];
+    long long ids[4];
+    for (int i = 0; i <= d_; ++i) {
+      ids[i] = vertex(cell[2 + i]);
+      std::copy(&mesh.vertices[d_ * ids[i]], &mesh.vertices[d_ * ids[i]] + d_, &x[d_ * i]);
+    }
+    const double det = signedDeterminant(d_, x.data());
+    if (!(std::abs(det) > 1e-12 * std::pow(longestEdge(d_, x.data()), d_)))
+      throw InputError(prefix_ + "element " + std::to_string(cell[0]) + " is degenerate (zero " +
+                       (d_ == 2 ? "area" : "volume") + ")");
+    if (det < 0) std::swap(ids[1], ids[2]);
+    mesh.cells.insert(mesh.cells.end(), ids, ids + d_ + 1);
+    if (!slice_.bodyTags.empty()) mesh.cellTags.push_back(static_cast<int>(cell[1]));
+  }
+  const std::size_t facetRecord = d_ + 2;
+  order.resize(heldFacets_.size() / facetRecord);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::make_pair(heldFacets_[facetRecord * a], heldFacets_[facetRecord * a + 1]) <
+           std::make_pair(heldFacets_[facetRecord * b], heldFacets_[facetRecord * b + 1]);
+  });
+  for (std::size_t f : order) {
+    for (int i = 0; i < d_; ++i) mesh.facets.push_back(vertex(heldFacets_[facetRecord * f + 2 + i]));
+    mesh.facetTags.push_back(static_cast<int>(heldFacets_[facetRecord * f + 1]));
+  }
+}
+
+GmshMeshPart ParallelRead::assemble() {
+  GmshMeshPart part;
+  part.part = rank_;
+  part.mesh.dim = d_;
+  part.mesh.boundaryTags = slice_.boundaryTags;
+  part.mesh.bodyTags = slice_.bodyTags;
+  vertexData(part);
+  runOnEveryRank(*comm_, [&] { cellsAndFacets(part); });
+  cells_ = {};
+  heldFacets_ = {};
+  return part;
+}
+
+}  // namespace
+
+GmshMeshPart readMshInParallel(const RCP<const Comm>& comm, const std::string& path, std::string& unsupported) {
+  MshFileSlice slice;
+  runOnEveryRank(*comm, [&] { slice = readMshSlice(path, comm->getRank(), comm->getSize(), unsupported); });
+  if (!onEveryRank(*comm, unsupported.empty())) {
+    if (unsupported.empty()) unsupported = "another rank found it outside what the parallel reader reads";
+    return {};
+  }
+  return ParallelRead(comm, path, std::move(slice)).part();
+}
+
+}  // namespace signorini::detail
