@@ -19,7 +19,9 @@
 #include "core/Collectives.hpp"
 #include "core/NeighbourExchange.hpp"
 #include "core/RootTask.hpp"
+#include "core/SplitMixHash.hpp"
 #include "fe/MshFileSlice.hpp"
+#include "fe/SimplexOrientation.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini::detail {
@@ -35,18 +37,6 @@ Key sortedKey(const long long* tags, int n) {
     key[j] = tags[i];
   }
   return key;
-}
-
-// SplitMix64 of a face's tags: its directory rank is the hash modulo the rank count.
-std::uint64_t hashOf(const Key& key) {
-  std::uint64_t h = 0;
-  for (long long t : key) {
-    h ^= static_cast<std::uint64_t>(t) + 0x9e3779b97f4a7c15ULL;
-    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
-    h ^= h >> 31;
-  }
-  return h;
 }
 
 // Faces a rank sends its directories in one round (four numbers each): the directory works in
@@ -95,7 +85,7 @@ class ParallelRead {
     std::vector<long long> adjacent;  // (cell, neighbour) pairs of the slice's cells
     for (long long round = 0; round < rounds; ++round) {
       const auto inRound = [&](const Key& key, int& directory) {
-        const std::uint64_t h = hashOf(key);
+        const std::uint64_t h = splitMixHash(key.begin(), key.end());  // the directory: h modulo the ranks
         directory = static_cast<int>(h % static_cast<std::uint64_t>(size_));
         return static_cast<long long>(h / static_cast<std::uint64_t>(size_) % static_cast<std::uint64_t>(rounds)) == round;
       };
@@ -362,26 +352,6 @@ void ParallelRead::vertexData(GmshMeshPart& part) {
   }
 }
 
-double signedDeterminant(int dim, const double* x) {
-  if (dim == 2) return (x[2] - x[0]) * (x[5] - x[1]) - (x[4] - x[0]) * (x[3] - x[1]);
-  double a[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) a[r][c] = x[3 * (r + 1) + c] - x[c];
-  return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-         a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-}
-
-double longestEdge(int dim, const double* x) {
-  double longest = 0;
-  for (int i = 0; i <= dim; ++i)
-    for (int j = i + 1; j <= dim; ++j) {
-      double squared = 0;
-      for (int c = 0; c < dim; ++c) squared += (x[dim * i + c] - x[dim * j + c]) * (x[dim * i + c] - x[dim * j + c]);
-      longest = std::max(longest, std::sqrt(squared));
-    }
-  return longest;
-}
-
 // The part's cells by element tag, as vertex ids, positively oriented, with their bodies; its
 // facets by (element, group).
 void ParallelRead::cellsAndFacets(GmshMeshPart& part) const {
@@ -401,11 +371,11 @@ void ParallelRead::cellsAndFacets(GmshMeshPart& part) const {
       ids[i] = vertex(cell[2 + i]);
       std::copy(&mesh.vertices[d_ * ids[i]], &mesh.vertices[d_ * ids[i]] + d_, &x[d_ * i]);
     }
-    const double det = signedDeterminant(d_, x.data());
-    if (!(std::abs(det) > 1e-12 * std::pow(longestEdge(d_, x.data()), d_)))
+    const int orientation = simplexOrientation(d_, x.data());
+    if (orientation == 0)
       throw InputError(prefix_ + "element " + std::to_string(cell[0]) + " is degenerate (zero " +
                        (d_ == 2 ? "area" : "volume") + ")");
-    if (det < 0) std::swap(ids[1], ids[2]);
+    if (orientation < 0) std::swap(ids[1], ids[2]);
     mesh.cells.insert(mesh.cells.end(), ids, ids + d_ + 1);
     if (!slice_.bodyTags.empty()) mesh.cellTags.push_back(static_cast<int>(cell[1]));
   }

@@ -23,7 +23,9 @@
 #include <utility>
 #include <vector>
 
+#include "core/SplitMixHash.hpp"
 #include "fe/GmshSandbox.hpp"
+#include "fe/SimplexOrientation.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
@@ -287,18 +289,6 @@ NodeSet nodeSet(const Tag* nodes, int nodesPerElement) {
   return set;
 }
 
-// SplitMix64's mixing over the tags.
-std::uint64_t hashOf(const NodeSet& set) {
-  std::uint64_t h = 0;
-  for (Tag t : set) {
-    h ^= static_cast<std::uint64_t>(t) + 0x9e3779b97f4a7c15ULL;
-    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    h = (h ^ (h >> 27)) * 0x94d049bb133111ebULL;
-    h ^= h >> 31;
-  }
-  return h;
-}
-
 // Elements of the blocks in increasing element tag, (tag, first node tag), each element and
 // each set of nodes once: of elements with the same nodes, the one with the smallest tag.
 // Such duplicates are how MSH 2 files store an element in several physical groups (one copy
@@ -312,7 +302,10 @@ std::vector<std::pair<Tag, const Tag*>> uniqueElements(const std::vector<Element
     for (std::size_t e = 0; e < block.elementTags.size(); ++e)
       all.push_back({block.elementTags[e], block.nodeTags.data() + e * nodesPerElement});
   std::vector<std::pair<std::uint64_t, std::size_t>> byHash(all.size());  // ties: by element tag
-  for (std::size_t i = 0; i < all.size(); ++i) byHash[i] = {hashOf(nodeSet(all[i].second, nodesPerElement)), i};
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const NodeSet set = nodeSet(all[i].second, nodesPerElement);
+    byHash[i] = {splitMixHash(set.begin(), set.end()), i};
+  }
   std::sort(byHash.begin(), byHash.end(), [&all](const auto& a, const auto& b) {
     return a.first != b.first ? a.first < b.first : all[a.second].first < all[b.second].first;
   });
@@ -347,29 +340,6 @@ Face sortedFace(const long long* ids, int n) {
     if (face[0] > face[1]) std::swap(face[0], face[1]);
   }
   return face;
-}
-
-// Signed measure times dim! of the simplex with the given vertex coordinates.
-double signedDeterminant(int dim, const double* x) {
-  if (dim == 2) return (x[2] - x[0]) * (x[5] - x[1]) - (x[4] - x[0]) * (x[3] - x[1]);
-  double a[3][3];
-  for (int r = 0; r < 3; ++r)
-    for (int c = 0; c < 3; ++c) a[r][c] = x[3 * (r + 1) + c] - x[c];
-  return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-         a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-         a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-}
-
-double longestEdge(int dim, const double* x) {
-  double longest = 0;
-  for (int i = 0; i <= dim; ++i)
-    for (int j = i + 1; j <= dim; ++j) {
-      double squared = 0;
-      for (int c = 0; c < dim; ++c)
-        squared += (x[dim * i + c] - x[dim * j + c]) * (x[dim * i + c] - x[dim * j + c]);
-      longest = std::max(longest, std::sqrt(squared));
-    }
-  return longest;
 }
 
 // The mesh's vertices: the node tags its cells use, ascending, and the vertex id of a tag.
@@ -579,11 +549,11 @@ SimplexMesh buildMesh(const RawMesh& raw, const std::string& prefix, std::vector
     for (int i = 0; i < nodesPerCell; ++i) cell[i] = vertices.id(cellElements[c].second[i]);
     for (int i = 0; i < nodesPerCell; ++i)
       for (int j = 0; j < dim; ++j) x[dim * i + j] = mesh.vertices[dim * cell[i] + j];
-    const double det = signedDeterminant(dim, x.data());
-    if (!(std::abs(det) > 1e-12 * std::pow(longestEdge(dim, x.data()), dim)))
+    const int orientation = simplexOrientation(dim, x.data());
+    if (orientation == 0)
       throw InputError(prefix + "element " + std::to_string(cellElements[c].first) +
                        " is degenerate (zero " + (dim == 2 ? "area" : "volume") + ")");
-    if (det < 0) std::swap(cell[1], cell[2]);
+    if (orientation < 0) std::swap(cell[1], cell[2]);
   }
 
   addCellTags(raw, cellElements, prefix, mesh);

@@ -44,22 +44,8 @@ std::string writeMesh(const Comm& comm, int dim, double h, double version = 4.1)
     std::filesystem::create_directories(directory);
     gmsh::initialize();
     gmsh::option::setNumber("General.Terminal", 0);
-    gmsh::model::add("unit");
-    const int body = dim == 2 ? gmsh::model::occ::addRectangle(0, 0, 0, 1, 1) : gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
-    gmsh::model::occ::synchronize();
-    gmsh::option::setNumber("Mesh.MeshSizeMax", h);
     gmsh::option::setNumber("Mesh.MshFileVersion", version);
-    gmsh::vectorpair faces;
-    gmsh::model::getBoundary({{dim, body}}, faces, false, false, false);
-    for (const auto& [faceDim, tag] : faces) {
-      double x0, y0, z0, x1, y1, z1;
-      gmsh::model::getBoundingBox(faceDim, tag, x0, y0, z0, x1, y1, z1);
-      const double low = dim == 2 ? y1 : z1, high = dim == 2 ? y0 : z0;
-      if (std::fabs(low) < 1e-6) gmsh::model::setPhysicalName(faceDim, gmsh::model::addPhysicalGroup(faceDim, {tag}), "bottom");
-      if (std::fabs(high - 1) < 1e-6) gmsh::model::setPhysicalName(faceDim, gmsh::model::addPhysicalGroup(faceDim, {tag}), "top");
-    }
-    gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, {body}), "body");
-    gmsh::model::mesh::generate(dim);
+    signorini::testing::meshUnitBox(dim, h);
     gmsh::write(directory + "/" + name);
     gmsh::finalize();
   }

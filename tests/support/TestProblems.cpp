@@ -1,5 +1,8 @@
 #include "support/TestProblems.hpp"
 
+#include <gmsh.h>
+
+#include <cmath>
 #include <cstdlib>
 
 #include <Teuchos_DefaultMpiComm.hpp>
@@ -59,6 +62,24 @@ Teuchos::ParameterList gmshPressedProblem(int dim, const std::string& file, int 
     if (dim == 3 || std::string(axis) != "z") top.set(std::string("displacement: ") + axis, "0");
   p.sublist("Contact").set("boundary", "bottom");
   return p;
+}
+
+void meshUnitBox(int dim, double h) {
+  gmsh::model::add("unit");
+  const int body = dim == 2 ? gmsh::model::occ::addRectangle(0, 0, 0, 1, 1) : gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
+  gmsh::model::occ::synchronize();
+  gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+  gmsh::vectorpair faces;
+  gmsh::model::getBoundary({{dim, body}}, faces, false, false, false);
+  for (const auto& [faceDim, tag] : faces) {
+    double x0, y0, z0, x1, y1, z1;
+    gmsh::model::getBoundingBox(faceDim, tag, x0, y0, z0, x1, y1, z1);
+    const double low = dim == 2 ? y1 : z1, high = dim == 2 ? y0 : z0;
+    if (std::fabs(low) < 1e-6) gmsh::model::setPhysicalName(faceDim, gmsh::model::addPhysicalGroup(faceDim, {tag}), "bottom");
+    if (std::fabs(high - 1) < 1e-6) gmsh::model::setPhysicalName(faceDim, gmsh::model::addPhysicalGroup(faceDim, {tag}), "top");
+  }
+  gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, {body}), "body");
+  gmsh::model::mesh::generate(dim);
 }
 
 int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol) {

@@ -31,6 +31,10 @@ Teuchos::ParameterList contactBoxProblem(int dim, int cells);
 // the rigid plane under it by a varying weight, refined `refinements` times.
 Teuchos::ParameterList gmshPressedProblem(int dim, const std::string& file, int degree, int refinements);
 
+// Into the current Gmsh model (Gmsh initialised by the caller): the unit square (2D) or cube
+// (3D) with groups "bottom" (y or z = 0), "top" and "body", meshed at size h.
+void meshUnitBox(int dim, double h);
+
 // Solves Q x = b by CG + MueLu to a relative residual of tol; returns the iterations.
 int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol);
 
