@@ -39,9 +39,11 @@ Key sortedKey(const long long* tags, int n) {
   return key;
 }
 
-// Faces a rank sends its directories in one round (four numbers each): the directory works in
-// rounds, by the faces' hashes, so that its records take a bounded memory.
+// Faces a rank matches in one round: the faces are matched in rounds, by their hashes, so that
+// their records take a bounded memory.
 constexpr long long kFacesPerRound = 1 << 21;
+
+using Face = std::pair<Key, long long>;  // a face's key and a cell it is a face of
 
 // The ranks' blocks of received records as one array.
 std::vector<long long> joined(const std::vector<std::vector<long long>>& fromRank) {
@@ -78,38 +80,50 @@ class ParallelRead {
   }
   long long numLocalCells() const { return cellStart_[rank_ + 1] - cellStart_[rank_]; }
 
-  // Every cell's faces and every boundary facet go to the directory rank of their key; the
-  // directory tells each cell its neighbours across faces and remembers the cell of each facet.
+  // The cells' neighbours across faces, and a cell for each boundary facet. Each rank first
+  // matches the faces of its own slice (most of them: Gmsh writes the cells of a region
+  // together); the faces left with one cell, and the facets not found, go to the directory
+  // rank of their key, which matches them across slices; a facet still not found is looked
+  // for by every rank (a face inside another slice: an interface facet).
   void faceDirectory() {
     const long long rounds = maxOverRanks(*comm_, numLocalCells() * (d_ + 1)) / kFacesPerRound + 1;
-    std::vector<long long> adjacent;  // (cell, neighbour) pairs of the slice's cells
+    std::vector<long long> adjacent, pending;  // (cell, neighbour) pairs of the slice's cells; facets not found
     for (long long round = 0; round < rounds; ++round) {
       const auto inRound = [&](const Key& key, int& directory) {
         const std::uint64_t h = splitMixHash(key.begin(), key.end());  // the directory: h modulo the ranks
         directory = static_cast<int>(h % static_cast<std::uint64_t>(size_));
         return static_cast<long long>(h / static_cast<std::uint64_t>(size_) % static_cast<std::uint64_t>(rounds)) == round;
       };
-      std::vector<long long> faces = joined(exchangeWithRanks(*comm_, cellFaces(inRound)));
-      std::vector<long long> facets = joined(exchangeWithRanks(*comm_, boundaryFacets(inRound)));
-      std::vector<std::vector<long long>> pairs(size_);
-      runOnEveryRank(*comm_, [&] { matchFaces(faces, facets, pairs); });
-      heldFacets_.insert(heldFacets_.end(), facets.begin(), facets.end());
-      faces = joined(exchangeWithRanks(*comm_, pairs));
-      adjacent.insert(adjacent.end(), faces.begin(), faces.end());
+      std::vector<Face> faces = sliceFaces(inRound);
+      std::vector<std::vector<long long>> single(size_), unfound(size_);
+      runOnEveryRank(*comm_, [&] {
+        matchFaces(faces, adjacent, [&](const Face& face) {
+          int directory = 0;
+          inRound(face.first, directory);
+          single[directory].insert(single[directory].end(), face.first.begin(), face.first.end());
+          single[directory].push_back(face.second);
+        });
+        matchFacets(sliceFacets(inRound), faces, [&](const long long* facet) {
+          int directory = 0;
+          inRound(Key{facet[0], facet[1], facet[2]}, directory);
+          unfound[directory].insert(unfound[directory].end(), facet, facet + 5 + d_);
+        });
+      });
+      faces = unpacked(joined(exchangeWithRanks(*comm_, single)));
+      const std::vector<long long> facets = joined(exchangeWithRanks(*comm_, unfound));
+      runOnEveryRank(*comm_, [&] {
+        matchFaces(faces, adjacent, [](const Face&) {});
+        matchFacets(facets, faces, [&](const long long* facet) { pending.insert(pending.end(), facet, facet + 5 + d_); });
+      });
     }
-    adjacencyStart_.assign(numLocalCells() + 1, 0);
-    for (std::size_t i = 0; i < adjacent.size(); i += 2) ++adjacencyStart_[adjacent[i] - cellStart_[rank_] + 1];
-    std::partial_sum(adjacencyStart_.begin(), adjacencyStart_.end(), adjacencyStart_.begin());
-    adjacency_.resize(adjacent.size() / 2);
-    std::vector<long long> next(adjacencyStart_.begin(), adjacencyStart_.end() - 1);
-    for (std::size_t i = 0; i < adjacent.size(); i += 2)
-      adjacency_[next[adjacent[i] - cellStart_[rank_]]++] = adjacent[i + 1];
+    findPendingFacets(pending);
+    adjacencyFrom(joined(exchangeWithRanks(*comm_, pairsByOwner(adjacent))));
   }
 
-  // The slice cells' faces of the round, (key, cell) to their directories.
+  // The slice cells' faces of the round.
   template <class InRound>
-  std::vector<std::vector<long long>> cellFaces(const InRound& inRound) const {
-    std::vector<std::vector<long long>> faces(size_);
+  std::vector<Face> sliceFaces(const InRound& inRound) const {
+    std::vector<Face> faces;
     int directory = 0;
     for (long long c = 0; c < numLocalCells(); ++c)
       for (int omit = 0; omit <= d_; ++omit) {
@@ -117,56 +131,102 @@ class ParallelRead {
         for (int i = 0, k = 0; i <= d_; ++i)
           if (i != omit) tags[k++] = slice_.cellNodes[(d_ + 1) * c + i];
         const Key key = sortedKey(tags, d_);
-        if (!inRound(key, directory)) continue;
-        faces[directory].insert(faces[directory].end(), key.begin(), key.end());
-        faces[directory].push_back(cellStart_[rank_] + c);
+        if (inRound(key, directory)) faces.emplace_back(key, cellStart_[rank_] + c);
       }
     return faces;
   }
 
-  // The slice's boundary facets of the round, (key, element, group, nodes) to their directories.
+  // The slice's boundary facets of the round: key, element, group, nodes.
   template <class InRound>
-  std::vector<std::vector<long long>> boundaryFacets(const InRound& inRound) const {
-    std::vector<std::vector<long long>> facets(size_);
+  std::vector<long long> sliceFacets(const InRound& inRound) const {
+    std::vector<long long> facets;
     int directory = 0;
     for (std::size_t f = 0; f < slice_.facetTags.size(); ++f) {
       const long long* nodes = slice_.facetNodes.data() + d_ * f;
       const Key key = sortedKey(nodes, d_);
       if (!inRound(key, directory)) continue;
-      std::vector<long long>& to = facets[directory];
-      to.insert(to.end(), key.begin(), key.end());
-      to.push_back(slice_.facetElements[f]);
-      to.push_back(slice_.facetTags[f]);
-      to.insert(to.end(), nodes, nodes + d_);
+      facets.insert(facets.end(), key.begin(), key.end());
+      facets.push_back(slice_.facetElements[f]);
+      facets.push_back(slice_.facetTags[f]);
+      facets.insert(facets.end(), nodes, nodes + d_);
     }
     return facets;
   }
 
-  // The directory's work on a round: the received faces (key, cell) sorted by key; a pair of
-  // cells on one face are neighbours; each received facet gets the lowest cell it is a face of.
-  void matchFaces(const std::vector<long long>& received, const std::vector<long long>& facets,
-                  std::vector<std::vector<long long>>& pairs) {
-    std::vector<std::pair<Key, long long>> faces(received.size() / 4);
+  static std::vector<Face> unpacked(const std::vector<long long>& records) {
+    std::vector<Face> faces(records.size() / 4);
     for (std::size_t f = 0; f < faces.size(); ++f)
-      faces[f] = {{received[4 * f], received[4 * f + 1], received[4 * f + 2]}, received[4 * f + 3]};
+      faces[f] = {{records[4 * f], records[4 * f + 1], records[4 * f + 2]}, records[4 * f + 3]};
+    return faces;
+  }
+
+  // Sorts `faces`; two cells on one face are neighbours (the pair and its reverse appended
+  // to `adjacent`); a face of one cell goes to `alone`; a face of more than two is an error.
+  template <class Alone>
+  void matchFaces(std::vector<Face>& faces, std::vector<long long>& adjacent, const Alone& alone) const {
     std::sort(faces.begin(), faces.end());
     for (std::size_t first = 0, end = 0; first < faces.size(); first = end) {
       for (end = first + 1; end < faces.size() && faces[end].first == faces[first].first;) ++end;
       if (end - first > 2) notConforming(faces[first].first);
+      if (end - first == 1) alone(faces[first]);
       if (end - first == 2)
-        for (int s = 0; s < 2; ++s) {
-          auto& to = pairs[cellOwner(faces[first + s].second)];
-          to.push_back(faces[first + s].second);
-          to.push_back(faces[first + 1 - s].second);
-        }
+        adjacent.insert(adjacent.end(), {faces[first].second, faces[first + 1].second, faces[first + 1].second,
+                                         faces[first].second});
     }
+  }
+
+  // Each facet (records of 5 + d) whose face is among the sorted `faces` is held here with the
+  // lowest of its cells; the others go to `unfound`.
+  template <class Unfound>
+  void matchFacets(const std::vector<long long>& facets, const std::vector<Face>& faces, const Unfound& unfound) {
     const std::size_t record = 5 + d_;
     for (std::size_t f = 0; f < facets.size(); f += record) {
       const Key key{facets[f], facets[f + 1], facets[f + 2]};
-      const auto it = std::lower_bound(faces.begin(), faces.end(), std::make_pair(key, LLONG_MIN));
-      if (it == faces.end() || it->first != key) notAFace(facets[f + 3], static_cast<int>(facets[f + 4]));
+      const auto it = std::lower_bound(faces.begin(), faces.end(), Face(key, LLONG_MIN));
+      if (it == faces.end() || it->first != key) {
+        unfound(&facets[f]);
+        continue;
+      }
+      heldFacets_.insert(heldFacets_.end(), facets.begin() + f, facets.begin() + f + record);
       facetCells_.push_back(it->second);
     }
+  }
+
+  // The facets no directory found, shown to every rank: the one whose slice has a cell with
+  // that face holds the facet; a facet no rank finds is no face of the mesh.
+  void findPendingFacets(const std::vector<long long>& pending) {
+    if (sumOverRanks(*comm_, static_cast<long long>(pending.size())) == 0) return;
+    const std::vector<long long> all = joined(exchangeWithRanks(*comm_, std::vector<std::vector<long long>>(size_, pending)));
+    const std::size_t record = 5 + d_;
+    std::vector<int> found(all.size() / record, 1), foundAnywhere(found.size(), 0);
+    std::vector<Face> faces = sliceFaces([](const Key&, int&) { return true; });
+    std::sort(faces.begin(), faces.end());
+    matchFacets(all, faces, [&](const long long* facet) { found[(facet - all.data()) / record] = 0; });
+    Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, static_cast<int>(found.size()), found.data(), foundAnywhere.data());
+    for (std::size_t f = 0; f < found.size(); ++f)
+      if (!foundAnywhere[f]) notAFace(all[record * f + 3], static_cast<int>(all[record * f + 4]));
+  }
+
+  // The (cell, neighbour) pairs by the rank whose slice holds the cell.
+  std::vector<std::vector<long long>> pairsByOwner(const std::vector<long long>& adjacent) const {
+    std::vector<std::vector<long long>> toOwner(size_);
+    for (std::size_t i = 0; i < adjacent.size(); i += 2) {
+      auto& to = toOwner[cellOwner(adjacent[i])];
+      to.push_back(adjacent[i]);
+      to.push_back(adjacent[i + 1]);
+    }
+    return toOwner;
+  }
+
+  // The slice cells' neighbours (CSR) from their (cell, neighbour) pairs.
+  void adjacencyFrom(const std::vector<long long>& adjacent) {
+    adjacencyStart_.assign(numLocalCells() + 1, 0);
+    for (std::size_t i = 0; i < adjacent.size(); i += 2) ++adjacencyStart_[adjacent[i] - cellStart_[rank_] + 1];
+    std::partial_sum(adjacencyStart_.begin(), adjacencyStart_.end(), adjacencyStart_.begin());
+    adjacency_.resize(adjacent.size() / 2);
+    std::vector<long long> next(adjacencyStart_.begin(), adjacencyStart_.end() - 1);
+    for (std::size_t i = 0; i < adjacent.size(); i += 2)
+      adjacency_[next[adjacent[i] - cellStart_[rank_]]++] = adjacent[i + 1];
   }
 
   [[noreturn]] void notConforming(const Key& key) const {
@@ -269,8 +329,8 @@ class ParallelRead {
   int d_, rank_, size_;
   std::vector<long long> cellStart_;                  // global cells of rank r: [cellStart_[r], cellStart_[r + 1])
   std::vector<long long> adjacencyStart_, adjacency_;  // the slice cells' neighbours (CSR)
-  std::vector<long long> heldFacets_;                  // at the directory, then at the part
-  std::vector<long long> facetCells_;                  // the cell of each held facet, at the directory
+  std::vector<long long> heldFacets_;                  // where found, then at the part
+  std::vector<long long> facetCells_;                  // the cell of each held facet, where found
   std::vector<int> part_;                              // the part of each slice cell
   std::vector<long long> cells_;                       // the part's cells: element, body, d + 1 nodes
 };

@@ -129,6 +129,30 @@ TEST(ParallelMshReadInput, AFileOutsideTheFormatIsReadByRank0) {
   EXPECT_EQ(all.space->numGlobalNodes(), root.space->numGlobalNodes());
 }
 
+// The unit square cut into four triangles around its centre (node 5), with the groups "bottom"
+// (edge 1-2) and "inner" (edge 2-5, between two cells). On two ranks the cells sharing edge 2-5
+// are in one slice and the facet in the other, so that no directory sees that edge.
+TEST(ParallelMshReadInput, AFacetInsideTheMeshIsFoundWhereverItsCellsAre) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string path = testDirectory(*comm) + "/inner.msh";
+  if (comm->getRank() == 0) {
+    std::filesystem::create_directories(testDirectory(*comm));
+    std::ofstream(path) << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n1 1 \"bottom\"\n1 2 \"inner\"\n"
+                           "$EndPhysicalNames\n$Entities\n0 2 1 0\n1 0 0 0 1 0 0 1 1 0\n2 0 0 0 1 1 0 1 2 0\n"
+                           "1 0 0 0 1 1 0 0 0\n$EndEntities\n$Nodes\n1 5 1 5\n2 1 0 5\n1\n2\n3\n4\n5\n"
+                           "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n$EndNodes\n$Elements\n3 6 1 6\n1 1 1 1\n1 1 2\n"
+                           "1 2 1 1\n2 2 5\n2 1 2 4\n3 1 2 5\n4 2 3 5\n5 3 4 5\n6 4 1 5\n$EndElements\n";
+  }
+  comm->barrier();
+  std::string unsupported;
+  const GmshMeshPart part = detail::readMshInParallel(comm, path, unsupported);
+  ASSERT_EQ(unsupported, "");
+  EXPECT_EQ(sumOverRanks(*comm, part.mesh.numCells()), 4);
+  EXPECT_EQ(sumOverRanks(*comm, part.mesh.numFacets()), 2);
+  EXPECT_EQ(sumOverRanks(*comm, static_cast<long long>(std::count(part.mesh.facetTags.begin(),
+                                                                  part.mesh.facetTags.end(), 2))), 1);
+}
+
 // Two triangles of the unit square and a boundary "edge" 2-4 across it: no edge of a cell.
 TEST(ParallelMshReadInput, ABoundaryFacetThatIsNoFaceIsOneInputErrorOnEveryRank) {
   auto comm = Tpetra::getDefaultComm();
