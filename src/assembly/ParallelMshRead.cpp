@@ -60,7 +60,7 @@ class ParallelRead {
       : comm_(comm), prefix_("Gmsh mesh file '" + path + "': "), slice_(std::move(slice)),
         d_(slice_.dim), rank_(comm->getRank()), size_(comm->getSize()) {
     for (int r = 0; r <= size_; ++r)
-      cellStart_.push_back(static_cast<long long>(static_cast<__int128>(slice_.numCells) * r / size_));
+      cellStart_.push_back(MshFileSlice::sliceStart(slice_.numCells, r, size_));
   }
 
   GmshMeshPart part() {

@@ -337,10 +337,6 @@ Selection select(const MshLayout& layout) {
   return s;
 }
 
-long long sliceStart(long long total, int slice, int numSlices) {
-  return static_cast<long long>(static_cast<__int128>(total) * slice / numSlices);
-}
-
 class SliceReader {
  public:
   SliceReader(const std::string& path, const MshLayout& layout, int slice, int numSlices)
@@ -401,7 +397,8 @@ class SliceReader {
   long long readSlice(const std::vector<ElementBlockHeader>& blocks, int nodes, Add add) {
     long long total = 0;
     for (const ElementBlockHeader& block : blocks) total += block.count;
-    const long long first = sliceStart(total, slice_, numSlices_), end = sliceStart(total, slice_ + 1, numSlices_);
+    const long long first = MshFileSlice::sliceStart(total, slice_, numSlices_);
+    const long long end = MshFileSlice::sliceStart(total, slice_ + 1, numSlices_);
     long long blockStart = 0;
     long long tags[5];
     for (const ElementBlockHeader& block : blocks) {
@@ -453,6 +450,10 @@ class SliceReader {
 };
 
 }  // namespace
+
+long long MshFileSlice::sliceStart(long long total, int slice, int numSlices) {
+  return static_cast<long long>(static_cast<__int128>(total) * slice / numSlices);
+}
 
 int MshFileSlice::sliceOfNode(long long tag, long long minTag, long long maxTag, int numSlices) {
   const long long chunk = (maxTag - minTag + numSlices) / numSlices;  // ceil((maxTag - minTag + 1) / numSlices)

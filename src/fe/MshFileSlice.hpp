@@ -21,7 +21,7 @@ struct MshFileSlice {
   long long numCells = 0;  // in the whole file
 
   // The slice's cells: of the file's cells in the file's order, those of index in
-  // [numCells * slice / numSlices, numCells * (slice + 1) / numSlices).
+  // [sliceStart(numCells, slice, numSlices), sliceStart(numCells, slice + 1, numSlices)).
   std::vector<long long> cellElements;  // Gmsh element tag of each
   std::vector<long long> cellNodes;     // dim + 1 Gmsh node tags per cell, Gmsh's order
   std::vector<int> cellBodies;          // body tag per cell; empty when the file has no bodies
@@ -34,6 +34,8 @@ struct MshFileSlice {
   std::vector<long long> nodeTags;
   std::vector<double> nodeCoordinates;
 
+  // The first of `total` items (cells, facets) in slice `slice` of `numSlices`.
+  static long long sliceStart(long long total, int slice, int numSlices);
   // The rank that holds node `tag` in slices of the same file cut into `numSlices`.
   static int sliceOfNode(long long tag, long long minTag, long long maxTag, int numSlices);
   long long minNodeTag = 0, maxNodeTag = 0;  // of the file
