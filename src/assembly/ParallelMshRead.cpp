@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <numeric>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -20,6 +21,7 @@
 #include "core/NeighbourExchange.hpp"
 #include "core/RootTask.hpp"
 #include "core/SplitMixHash.hpp"
+#include "fe/MortonCode.hpp"
 #include "fe/MshFileSlice.hpp"
 #include "fe/SimplexOrientation.hpp"
 #include "signorini/core/Error.hpp"
@@ -45,15 +47,9 @@ constexpr long long kFacesPerRound = 1 << 21;
 
 using Face = std::pair<Key, long long>;  // a face's key and a cell it is a face of
 
-// The ranks' blocks of received records as one array.
-std::vector<long long> joined(const std::vector<std::vector<long long>>& fromRank) {
-  std::vector<long long> all;
-  for (const auto& block : fromRank) all.insert(all.end(), block.begin(), block.end());
-  return all;
-}
-
-// What the reading ranks know between the steps. Cells are numbered globally by their index
-// in the file's sequence of cells, which the slices cut into contiguous ranges.
+// What the reading ranks know between the steps. Cells are numbered globally, rank r holding
+// the range [cellStart_[r], cellStart_[r + 1]): first by their index in the file's sequence of
+// cells, then by their place along a Morton curve.
 class ParallelRead {
  public:
   ParallelRead(const RCP<const Comm>& comm, const std::string& path, MshFileSlice&& slice)
@@ -67,6 +63,7 @@ class ParallelRead {
     if (slice_.numCells < size_)
       throw InputError(prefix_ + "it has " + std::to_string(slice_.numCells) + " cells, fewer than the " +
                        std::to_string(size_) + " ranks");
+    orderCellsAlongCurve();
     faceDirectory();
     partition();
     facetsToParts();
@@ -80,14 +77,171 @@ class ParallelRead {
   }
   long long numLocalCells() const { return cellStart_[rank_ + 1] - cellStart_[rank_]; }
 
+  // Puts the cells in the order of their centroids along a Morton curve, rank r holding the
+  // places [cellStart_[r], cellStart_[r + 1]) of it. A mesher writes cells in an order that
+  // scatters them in space; in this one most faces of a slice's cells are shared within the
+  // slice, and most edges of the dual graph join cells of one rank.
+  void orderCellsAlongCurve() {
+    const std::vector<long long> places = placesAlongCurve(centroidCodes());
+    const std::size_t width = d_ + 4;  // place, element, body, d + 1 nodes
+    const std::vector<long long> cells = sendCells(width, [&](long long c) { return cellOwner(places[c]); },
+                                                   [&](long long c, long long* to) {
+                                                     to[0] = places[c];
+                                                     cellRecord(c, to + 1);
+                                                   });
+    for (std::size_t at = 0; at < cells.size(); at += width) {
+      const long long c = cells[at] - cellStart_[rank_];
+      slice_.cellElements[c] = cells[at + 1];
+      if (!slice_.cellBodies.empty()) slice_.cellBodies[c] = static_cast<int>(cells[at + 2]);
+      std::copy(&cells[at + 3], &cells[at + width], &slice_.cellNodes[(d_ + 1) * c]);
+    }
+  }
+
+  // Slice cell c's element, body and nodes in `to`.
+  void cellRecord(long long c, long long* to) const {
+    to[0] = slice_.cellElements[c];
+    to[1] = slice_.cellBodies.empty() ? 0 : slice_.cellBodies[c];
+    std::copy(&slice_.cellNodes[(d_ + 1) * c], &slice_.cellNodes[(d_ + 1) * (c + 1)], to + 2);
+  }
+
+  // Sends each slice cell c a record of `width` numbers, write(c, record), to rank destination(c);
+  // returns the records received, by sending rank. Packed directly: the cells are the largest
+  // data the ranks exchange.
+  template <class Destination, class Write>
+  std::vector<long long> sendCells(std::size_t width, const Destination& destination, const Write& write) const {
+    std::vector<int> count(size_, 0);
+    for (long long c = 0; c < numLocalCells(); ++c) count[destination(c)] += static_cast<int>(width);
+    std::vector<std::size_t> next(size_, 0);
+    std::partial_sum(count.begin(), count.end() - 1, next.begin() + 1);
+    std::vector<long long> sent(width * numLocalCells());
+    for (long long c = 0; c < numLocalCells(); ++c) {
+      write(c, &sent[next[destination(c)]]);
+      next[destination(c)] += width;
+    }
+    return exchangePacked(*comm_, sent, count);
+  }
+
+  // The slice cells' (Morton code of the centroid, global cell) pairs, the curve through the
+  // box of the file's nodes.
+  std::vector<long long> centroidCodes() {
+    double lower[3], upper[3];
+    for (int c = 0; c < 3; ++c) {
+      lower[c] = INFINITY;
+      upper[c] = -INFINITY;
+      for (std::size_t v = 0; v < slice_.nodeTags.size(); ++v) {
+        lower[c] = std::min(lower[c], slice_.nodeCoordinates[3 * v + c]);
+        upper[c] = std::max(upper[c], slice_.nodeCoordinates[3 * v + c]);
+      }
+      lower[c] = minOverRanks(*comm_, lower[c]);
+      upper[c] = maxOverRanks(*comm_, upper[c]);
+    }
+    std::unordered_map<long long, std::size_t> slot;  // of each node tag the slice's cells use, in tag order
+    slot.reserve(numLocalCells());
+    for (long long tag : slice_.cellNodes) slot.try_emplace(tag, 0);
+    std::vector<long long> tags;
+    tags.reserve(slot.size());
+    for (const auto& entry : slot) tags.push_back(entry.first);
+    std::sort(tags.begin(), tags.end());
+    for (std::size_t i = 0; i < tags.size(); ++i) slot[tags[i]] = i;
+    const std::vector<double> xyz = exchangeWithRanks(*comm_, coordinatesFor(exchangeWithRanks(*comm_, byNodeDirectory(tags))));
+    std::vector<long long> codes;
+    codes.reserve(2 * numLocalCells());
+    for (long long c = 0; c < numLocalCells(); ++c) {
+      double x[3] = {0, 0, 0};
+      for (int i = 0; i <= d_; ++i) {
+        const std::size_t at = slot[slice_.cellNodes[(d_ + 1) * c + i]];
+        for (int k = 0; k < d_; ++k) x[k] += xyz[3 * at + k] / (d_ + 1);
+      }
+      codes.insert(codes.end(), {static_cast<long long>(mortonCode(x, lower, upper, d_)), cellStart_[rank_] + c});
+    }
+    return codes;
+  }
+
+  // The place of each slice cell in the order of the (code, global cell) pairs `codes` over
+  // all ranks: a sample sort of the pairs, which then go back to their cells' ranks.
+  std::vector<long long> placesAlongCurve(std::vector<long long> codes) const {
+    using Code = std::pair<long long, long long>;
+    std::vector<Code> sorted(codes.size() / 2);
+    for (std::size_t i = 0; i < sorted.size(); ++i) sorted[i] = {codes[2 * i], codes[2 * i + 1]};
+    std::sort(sorted.begin(), sorted.end());
+    std::vector<long long> sample;
+    const std::size_t samples = std::min<std::size_t>(sorted.size(), 64);
+    for (std::size_t s = 0; s < samples; ++s) {
+      const Code& code = sorted[s * sorted.size() / samples];
+      sample.insert(sample.end(), {code.first, code.second});
+    }
+    const std::vector<long long> all = exchangeWithRanksJoined(*comm_, std::vector<std::vector<long long>>(size_, sample));
+    std::vector<Code> splitters(all.size() / 2);
+    for (std::size_t k = 0; k < splitters.size(); ++k) splitters[k] = {all[2 * k], all[2 * k + 1]};
+    std::sort(splitters.begin(), splitters.end());
+    std::vector<std::vector<long long>> toRank(size_);
+    for (const Code& code : sorted) {  // to the rank of the range between two splitters it is in
+      const std::size_t below = std::upper_bound(splitters.begin(), splitters.end(), code) - splitters.begin();
+      auto& to = toRank[below * size_ / (splitters.size() + 1)];
+      to.insert(to.end(), {code.first, code.second});
+    }
+    codes = exchangeWithRanksJoined(*comm_, toRank);
+    sorted.resize(codes.size() / 2);
+    for (std::size_t i = 0; i < sorted.size(); ++i) sorted[i] = {codes[2 * i], codes[2 * i + 1]};
+    std::sort(sorted.begin(), sorted.end());
+    long long end = 0, count = static_cast<long long>(sorted.size());
+    Teuchos::scan(*comm_, Teuchos::REDUCE_SUM, 1, &count, &end);
+    toRank.assign(size_, {});
+    for (std::size_t i = 0; i < sorted.size(); ++i) {
+      auto& to = toRank[cellOwner(sorted[i].second)];
+      to.insert(to.end(), {sorted[i].second, end - count + static_cast<long long>(i)});
+    }
+    codes = exchangeWithRanksJoined(*comm_, toRank);
+    std::vector<long long> places(numLocalCells());
+    for (std::size_t i = 0; i < codes.size(); i += 2) places[codes[i] - cellStart_[rank_]] = codes[i + 1];
+    return places;
+  }
+
+  // Node tags by the rank whose slice of the file defines them. The slices are ascending
+  // ranges of tags, so ascending tags stay ascending when the blocks are joined in rank order.
+  std::vector<std::vector<long long>> byNodeDirectory(const std::vector<long long>& tags) const {
+    std::vector<std::vector<long long>> asked(size_);
+    for (long long tag : tags)
+      asked[MshFileSlice::sliceOfNode(tag, slice_.minNodeTag, slice_.maxNodeTag, size_)].push_back(tag);
+    return asked;
+  }
+
+  // The answers to each rank's questions (node tags this slice defines): x, y, z of each.
+  std::vector<std::vector<double>> coordinatesFor(const std::vector<std::vector<long long>>& questions) {
+    std::vector<std::vector<double>> coordinates(size_);
+    runOnEveryRank(*comm_, [&] {
+      for (int r = 0; r < size_; ++r)
+        for (long long tag : questions[r]) {
+          const double* x = &slice_.nodeCoordinates[3 * heldNode(tag)];
+          coordinates[r].insert(coordinates[r].end(), x, x + 3);
+        }
+    });
+    return coordinates;
+  }
+
+  // Where the slice holds node `tag`, which its tag range includes; a tag the file does not
+  // define is an input error.
+  std::size_t heldNode(long long tag) {
+    if (heldNodes_.empty()) {
+      heldNodes_.resize(slice_.nodeTags.size());
+      for (std::size_t i = 0; i < heldNodes_.size(); ++i) heldNodes_[i] = {slice_.nodeTags[i], i};
+      std::sort(heldNodes_.begin(), heldNodes_.end());
+    }
+    const auto it = std::lower_bound(heldNodes_.begin(), heldNodes_.end(), std::make_pair(tag, std::size_t{0}));
+    if (it == heldNodes_.end() || it->first != tag)
+      throw InputError(prefix_ + "a cell uses node " + std::to_string(tag) + ", which the file does not define");
+    return it->second;
+  }
+
   // The cells' neighbours across faces, and a cell for each boundary facet. Each rank first
-  // matches the faces of its own slice (most of them: Gmsh writes the cells of a region
-  // together); the faces left with one cell, and the facets not found, go to the directory
-  // rank of their key, which matches them across slices; a facet still not found is looked
-  // for by every rank (a face inside another slice: an interface facet).
+  // matches the faces of its own slice (most of them, the cells being in curve order); the
+  // faces left with one cell, and the facets not found, go to the directory rank of their
+  // key, which matches them across slices; a facet still not found is looked for by every
+  // rank (a face inside another slice: an interface facet).
   void faceDirectory() {
     const long long rounds = maxOverRanks(*comm_, numLocalCells() * (d_ + 1)) / kFacesPerRound + 1;
-    std::vector<long long> adjacent, pending;  // (cell, neighbour) pairs of the slice's cells; facets not found
+    std::vector<long long> adjacent, across, pending;  // (cell, neighbour) pairs within the slice, across slices; facets not found
+    adjacent.reserve(2 * (d_ + 1) * numLocalCells());
     for (long long round = 0; round < rounds; ++round) {
       const auto inRound = [&](const Key& key, int& directory) {
         const std::uint64_t h = splitMixHash(key.begin(), key.end());  // the directory: h modulo the ranks
@@ -109,15 +263,17 @@ class ParallelRead {
           unfound[directory].insert(unfound[directory].end(), facet, facet + 5 + d_);
         });
       });
-      faces = unpacked(joined(exchangeWithRanks(*comm_, single)));
-      const std::vector<long long> facets = joined(exchangeWithRanks(*comm_, unfound));
+      faces = unpacked(exchangeWithRanksJoined(*comm_, single));
+      const std::vector<long long> facets = exchangeWithRanksJoined(*comm_, unfound);
       runOnEveryRank(*comm_, [&] {
-        matchFaces(faces, adjacent, [](const Face&) {});
+        matchFaces(faces, across, [](const Face&) {});
         matchFacets(facets, faces, [&](const long long* facet) { pending.insert(pending.end(), facet, facet + 5 + d_); });
       });
     }
     findPendingFacets(pending);
-    adjacencyFrom(joined(exchangeWithRanks(*comm_, pairsByOwner(adjacent))));
+    const std::vector<long long> received = exchangeWithRanksJoined(*comm_, pairsByOwner(across));
+    adjacent.insert(adjacent.end(), received.begin(), received.end());
+    adjacencyFrom(adjacent);
   }
 
   // The slice cells' faces of the round.
@@ -196,7 +352,7 @@ class ParallelRead {
   // that face holds the facet; a facet no rank finds is no face of the mesh.
   void findPendingFacets(const std::vector<long long>& pending) {
     if (sumOverRanks(*comm_, static_cast<long long>(pending.size())) == 0) return;
-    const std::vector<long long> all = joined(exchangeWithRanks(*comm_, std::vector<std::vector<long long>>(size_, pending)));
+    const std::vector<long long> all = exchangeWithRanksJoined(*comm_, std::vector<std::vector<long long>>(size_, pending));
     const std::size_t record = 5 + d_;
     std::vector<int> found(all.size() / record, 1), foundAnywhere(found.size(), 0);
     std::vector<Face> faces = sliceFaces([](const Key&, int&) { return true; });
@@ -299,24 +455,16 @@ class ParallelRead {
       auto& to = toPart[parts[owner][next[owner]++]];
       to.insert(to.end(), heldFacets_.begin() + record * f + 3, heldFacets_.begin() + record * (f + 1));
     }
-    heldFacets_ = joined(exchangeWithRanks(*comm_, toPart));  // (element, group, d nodes) per facet
+    heldFacets_ = exchangeWithRanksJoined(*comm_, toPart);  // (element, group, d nodes) per facet
     facetCells_ = {};
   }
 
-  // Each slice cell (element, body, nodes) to its part; received in element order.
+  // Each slice cell (element, body, nodes) to its part.
   void migrateCells() {
-    std::vector<std::vector<long long>> toPart(size_);
-    const bool bodies = !slice_.cellBodies.empty();
-    for (long long c = 0; c < numLocalCells(); ++c) {
-      auto& to = toPart[part_[c]];
-      to.push_back(slice_.cellElements[c]);
-      to.push_back(bodies ? slice_.cellBodies[c] : 0);
-      to.insert(to.end(), slice_.cellNodes.begin() + (d_ + 1) * c, slice_.cellNodes.begin() + (d_ + 1) * (c + 1));
-    }
+    cells_ = sendCells(d_ + 3, [&](long long c) { return part_[c]; }, [&](long long c, long long* to) { cellRecord(c, to); });
     slice_.cellElements = {};
     slice_.cellNodes = {};
     slice_.cellBodies = {};
-    cells_ = joined(exchangeWithRanks(*comm_, toPart));
   }
 
   GmshMeshPart assemble();
@@ -332,6 +480,7 @@ class ParallelRead {
   std::vector<long long> heldFacets_;                  // where found, then at the part
   std::vector<long long> facetCells_;                  // the cell of each held facet, where found
   std::vector<int> part_;                              // the part of each slice cell
+  std::vector<std::pair<long long, std::size_t>> heldNodes_;  // (tag, index in slice_), sorted
   std::vector<long long> cells_;                       // the part's cells: element, body, d + 1 nodes
 };
 
@@ -343,51 +492,36 @@ void ParallelRead::vertexData(GmshMeshPart& part) {
   for (std::size_t c = 0; c < cells_.size(); c += record) tags.insert(tags.end(), &cells_[c + 2], &cells_[c + record]);
   std::sort(tags.begin(), tags.end());
   tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
-  std::vector<std::vector<long long>> asked(size_);
-  for (long long tag : tags) asked[MshFileSlice::sliceOfNode(tag, slice_.minNodeTag, slice_.maxNodeTag, size_)].push_back(tag);
-  const std::vector<std::vector<long long>> questions = exchangeWithRanks(*comm_, asked);
-  std::vector<std::vector<double>> coordinates(size_);
+  const std::vector<std::vector<long long>> questions = exchangeWithRanks(*comm_, byNodeDirectory(tags));
   std::vector<std::vector<long long>> sharers(size_);
   runOnEveryRank(*comm_, [&] {
-    std::vector<std::pair<long long, std::size_t>> held(slice_.nodeTags.size());  // (tag, index), sorted
-    for (std::size_t i = 0; i < held.size(); ++i) held[i] = {slice_.nodeTags[i], i};
-    std::sort(held.begin(), held.end());
     std::vector<std::pair<long long, int>> users;  // (tag, asking rank), sorted
     for (int r = 0; r < size_; ++r)
       for (long long tag : questions[r]) users.emplace_back(tag, r);
     std::sort(users.begin(), users.end());
     for (int r = 0; r < size_; ++r)
       for (long long tag : questions[r]) {
-        const auto it = std::lower_bound(held.begin(), held.end(), std::make_pair(tag, std::size_t{0}));
-        if (it == held.end() || it->first != tag)
-          throw InputError(prefix_ + "a cell uses node " + std::to_string(tag) + ", which the file does not define");
-        coordinates[r].insert(coordinates[r].end(), &slice_.nodeCoordinates[3 * it->second],
-                              &slice_.nodeCoordinates[3 * it->second + 3]);
         const auto first = std::lower_bound(users.begin(), users.end(), std::make_pair(tag, INT_MIN));
         const auto end = std::upper_bound(users.begin(), users.end(), std::make_pair(tag, INT_MAX));
         sharers[r].push_back(end - first);
         for (auto u = first; u != end; ++u) sharers[r].push_back(u->second);
       }
   });
+  const std::vector<double> xyz = exchangeWithRanks(*comm_, coordinatesFor(questions));
+  const std::vector<long long> shared = exchangeWithRanksJoined(*comm_, sharers);
   slice_.nodeTags = {};
   slice_.nodeCoordinates = {};
-  const std::vector<double> xyz = exchangeWithRanks(*comm_, coordinates);
-  const std::vector<std::vector<long long>> shared = exchangeWithRanks(*comm_, sharers);
-  // Answers come by directory rank, in the order of the questions: put them in tag order.
-  std::vector<std::size_t> slot;  // the vertex of each answer, in answer order
-  for (int r = 0; r < size_; ++r)
-    for (long long tag : asked[r]) slot.push_back(std::lower_bound(tags.begin(), tags.end(), tag) - tags.begin());
+  heldNodes_ = {};
+  // The answers come in the order asked, which is the tags' order.
   std::vector<double> z(tags.size());
   part.mesh.vertices.resize(d_ * tags.size());
   std::vector<std::vector<int>> by(tags.size());
-  std::size_t k = 0;
-  for (int r = 0; r < size_; ++r)
-    for (std::size_t i = 0, at = 0; i < asked[r].size(); ++i, ++k) {
-      for (int c = 0; c < d_; ++c) part.mesh.vertices[d_ * slot[k] + c] = xyz[3 * k + c];
-      z[slot[k]] = xyz[3 * k + 2];
-      const long long count = shared[r][at++];
-      for (long long s = 0; s < count; ++s) by[slot[k]].push_back(static_cast<int>(shared[r][at++]));
-    }
+  for (std::size_t v = 0, at = 0; v < tags.size(); ++v) {
+    for (int c = 0; c < d_; ++c) part.mesh.vertices[d_ * v + c] = xyz[3 * v + c];
+    z[v] = xyz[3 * v + 2];
+    const long long count = shared[at++];
+    for (long long s = 0; s < count; ++s) by[v].push_back(static_cast<int>(shared[at++]));
+  }
   part.sharerStart.assign(1, 0);
   for (const std::vector<int>& ranks : by) {
     part.sharers.insert(part.sharers.end(), ranks.begin(), ranks.end());

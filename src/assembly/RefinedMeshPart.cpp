@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "fe/LagrangeSpace.hpp"
+#include "fe/MortonCode.hpp"
 
 namespace signorini::detail {
 
@@ -18,20 +19,13 @@ std::vector<long long> coarseCellsAlongCurve(const SimplexMesh& mesh) {
       upper[c] = std::max(upper[c], mesh.vertices[d * v + c]);
     }
   }
-  const int bits = 63 / d;
   std::vector<std::pair<std::uint64_t, long long>> code(mesh.numCells());
   double x[3];
   for (long long cell = 0; cell < mesh.numCells(); ++cell) {
     std::fill(x, x + 3, 0.0);
     for (int v = 0; v <= d; ++v)
       for (int c = 0; c < d; ++c) x[c] += mesh.vertices[d * mesh.cells[(d + 1) * cell + v] + c] / (d + 1);
-    std::uint64_t z = 0;
-    for (int c = 0; c < d; ++c) {
-      const double t = upper[c] > lower[c] ? (x[c] - lower[c]) / (upper[c] - lower[c]) : 0.0;
-      const auto q = static_cast<std::uint64_t>(t * static_cast<double>((1ULL << bits) - 1));
-      for (int b = 0; b < bits; ++b) z |= ((q >> b) & 1ULL) << (d * b + c);
-    }
-    code[cell] = {z, cell};
+    code[cell] = {mortonCode(x, lower, upper, d), cell};
   }
   std::sort(code.begin(), code.end());
   std::vector<long long> order(code.size());

@@ -16,4 +16,12 @@ std::vector<double> exchangeWithRanks(const Comm& comm, const std::vector<std::v
 std::vector<std::vector<long long>> exchangeWithRanks(const Comm& comm,
                                                       const std::vector<std::vector<long long>>& toRank);
 
+// The same for integers, received in one array ordered by the sending rank (no copy per block).
+std::vector<long long> exchangeWithRanksJoined(const Comm& comm, const std::vector<std::vector<long long>>& toRank);
+
+// The same for integers already in one array by destination rank: sendCounts[r] of them for
+// rank r, rank 0's first. For the largest exchanges: the values are not copied into blocks.
+std::vector<long long> exchangePacked(const Comm& comm, const std::vector<long long>& sent,
+                                      const std::vector<int>& sendCounts);
+
 }  // namespace signorini

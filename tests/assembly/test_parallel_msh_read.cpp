@@ -130,8 +130,9 @@ TEST(ParallelMshReadInput, AFileOutsideTheFormatIsReadByRank0) {
 }
 
 // The unit square cut into four triangles around its centre (node 5), with the groups "bottom"
-// (edge 1-2) and "inner" (edge 2-5, between two cells). On two ranks the cells sharing edge 2-5
-// are in one slice and the facet in the other, so that no directory sees that edge.
+// (edge 1-2) and "inner" (edge 1-5, between two cells). Along the Morton curve the cells come
+// bottom, left, right, top: on two ranks the cells sharing edge 1-5 are in one slice and the
+// facet in the other, so that no directory sees that edge.
 TEST(ParallelMshReadInput, AFacetInsideTheMeshIsFoundWhereverItsCellsAre) {
   auto comm = Tpetra::getDefaultComm();
   const std::string path = testDirectory(*comm) + "/inner.msh";
@@ -141,7 +142,7 @@ TEST(ParallelMshReadInput, AFacetInsideTheMeshIsFoundWhereverItsCellsAre) {
                            "$EndPhysicalNames\n$Entities\n0 2 1 0\n1 0 0 0 1 0 0 1 1 0\n2 0 0 0 1 1 0 1 2 0\n"
                            "1 0 0 0 1 1 0 0 0\n$EndEntities\n$Nodes\n1 5 1 5\n2 1 0 5\n1\n2\n3\n4\n5\n"
                            "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n$EndNodes\n$Elements\n3 6 1 6\n1 1 1 1\n1 1 2\n"
-                           "1 2 1 1\n2 2 5\n2 1 2 4\n3 1 2 5\n4 2 3 5\n5 3 4 5\n6 4 1 5\n$EndElements\n";
+                           "1 2 1 1\n2 1 5\n2 1 2 4\n3 1 2 5\n4 2 3 5\n5 3 4 5\n6 4 1 5\n$EndElements\n";
   }
   comm->barrier();
   std::string unsupported;
