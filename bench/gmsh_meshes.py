@@ -9,18 +9,21 @@ plane (doc/benchmark-family.md). Three meshes per case:
            is refined twice;
   msh      the fine mesh written by Gmsh as a .msh file and read as is (rank 0 reads and
            partitions it; its own P1 grid, MueLu below);
+  msh all ranks  the same .msh read by all ranks together (Problem/mesh: read = all ranks:
+           each reads a slice, PT-Scotch partitions; runs on 2 ranks or more);
   parts    the same fine mesh partitioned by Gmsh and written as one file per rank
            (gmsh -part N -part_split), each rank reading its own (runs on 2 ranks or more).
 
 Each on 1 and 2 ranks (--ranks; the large case on 4 ranks too), with the contact solve and a
 linear solve of the same problem with the bottom clamped instead (no contact): setup,
 assembly and solve times, end-to-end wall time, CG iterations, multigrid setups, peak memory
-of the largest rank, the growth of rank 0's resident set during setup, and the contact solve
-over the linear one.
+of the largest rank, the growth of the resident set during setup (rank 0's and the largest
+rank's), and the contact solve over the linear one.
 
     /usr/bin/python3 bench/gmsh_meshes.py [--ranks 1,2] [--cases 3d-p1,3d-p2,2d-p1,3d-p1-large]
+                                          [--meshes box,msh,...] [--name gmsh-meshes]
 
-Writes bench/results/gmsh-meshes.{json,md}. The .msh files are made once by the gmsh program
+Writes bench/results/<name>.{json,md}. The .msh files are made once by the gmsh program
 in the work directory (their meshing time is not part of any run).
 """
 import argparse
@@ -44,6 +47,10 @@ CASES = {
     "2d-p1": (2, 1, "2d-p1-nx1000.xml", 1000, [(0.035, 5)], 0.0011, []),
     "3d-p1-large": (3, 1, "3d-p1-nx100.xml", 100, [(0.08, 3)], None, [4]),
 }
+
+
+# The meshes that need more than one rank: a mesh in parts, and a reading by all ranks.
+PARALLEL_ONLY = ("parts", "msh all ranks")
 
 
 def refined_mesh(refinements):
@@ -96,7 +103,8 @@ def mesh_settings(case, mesh, workdir, ranks):
             return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={write_geometry(workdir, dim, coarse)}",
                     f"Problem/mesh: refinements={refinements}"]
     file = fine_parts(workdir, dim, fine, ranks) if mesh == "parts" else fine_msh(workdir, dim, fine)
-    return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={file}"]
+    read = ["Problem/mesh: read=all ranks"] if mesh == "msh all ranks" else []
+    return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={file}"] + read
 
 
 def run(case, mesh, ranks, linear, workdir):
@@ -124,15 +132,17 @@ def run(case, mesh, ranks, linear, workdir):
             "cg_iterations": s["krylov_iterations"], "newton_systems": s["newton_steps"],
             "multigrid_setups": s["preconditioner_setups"], "setup_seconds": s["time"]["setup"],
             "assembly_seconds": s["time"]["assembly"], "solve_seconds": s["time"]["solve"], "wall_seconds": wall,
-            "peak_mib_max_rank": s["memory_mib"]["max_rank"], "rank0_setup_mib": s["setup_peak_rss_mib"][0]}
+            "peak_mib_max_rank": s["memory_mib"]["max_rank"], "rank0_setup_mib": s["setup_peak_rss_mib"][0],
+            "setup_mib_max_rank": max(s["setup_peak_rss_mib"])}
 
 
 def table(runs):
     linear = {(r["case"], r["mesh"], r["ranks"]): r for r in runs if r["solve"] == "linear"}
     box = {(r["case"], r["ranks"]): r for r in runs if r["solve"] == "contact" and r["mesh"] == "box"}
     lines = ["| case | mesh | ranks | n | setup [s] | assembly [s] | solve [s] | wall [s] | wall / box | CG | CG / box "
-             "| multigrid setups | peak MiB (max rank) | rank 0 setup MiB | linear CG | contact / linear solve |",
-             "|" + "---|" * 16]
+             "| multigrid setups | peak MiB (max rank) | rank 0 setup MiB | setup MiB (max rank) | linear CG "
+             "| contact / linear solve |",
+             "|" + "---|" * 17]
     for r in runs:
         if r["solve"] != "contact":
             continue
@@ -142,7 +152,7 @@ def table(runs):
             f"| {r['assembly_seconds']:.2f} | {r['solve_seconds']:.2f} | {r['wall_seconds']:.1f} "
             f"| {r['wall_seconds'] / b['wall_seconds']:.2f} | {r['cg_iterations']} "
             f"| {r['cg_iterations'] / b['cg_iterations']:.2f} | {r['multigrid_setups']} | {r['peak_mib_max_rank']:.0f} "
-            f"| {r['rank0_setup_mib']:.0f} | {lin['cg_iterations'] if lin else '-'} "
+            f"| {r['rank0_setup_mib']:.0f} | {r['setup_mib_max_rank']:.0f} | {lin['cg_iterations'] if lin else '-'} "
             f"| {r['solve_seconds'] / lin['solve_seconds'] if lin else float('nan'):.1f} |")
     return "\n".join(lines) + "\n"
 
@@ -151,6 +161,9 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--ranks", default="1,2")
     parser.add_argument("--cases", default=",".join(CASES))
+    parser.add_argument("--meshes", default=None, help="only these meshes (box, refined rK, msh, parts, "
+                        "msh all ranks); the box is the reference of the ratios")
+    parser.add_argument("--name", default="gmsh-meshes", help="the result set's name")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "gmsh-meshes"))
     args = parser.parse_args()
     ranks = [int(r) for r in args.ranks.split(",")]
@@ -161,13 +174,15 @@ def main():
     runs = []
     for case in cases:
         _, _, _, _, refined, fine_size, _ = CASES[case]
-        meshes = ["box"] + [refined_mesh(r) for _, r in refined] + (["msh", "parts"] if fine_size else [])
+        meshes = ["box"] + [refined_mesh(r) for _, r in refined] + (["msh", *PARALLEL_ONLY] if fine_size else [])
+        if args.meshes:
+            meshes = [m for m in meshes if m in args.meshes.split(",")]
         for np in rank_counts[case]:
-            for mesh in [m for m in meshes if m != "parts" or np > 1]:
+            for mesh in [m for m in meshes if m not in PARALLEL_ONLY or np > 1]:
                 for linear in (False, True):
                     runs.append(run(case, mesh, np, linear, args.workdir))
                     print(json.dumps(runs[-1]), flush=True)
-    write_results("gmsh-meshes", made, runs, table(runs))
+    write_results(args.name, made, runs, table(runs))
 
 
 if __name__ == "__main__":
