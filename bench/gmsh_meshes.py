@@ -7,10 +7,10 @@ plane (doc/benchmark-family.md). Three meshes per case:
   refined  a coarse Gmsh mesh of the .geo refined uniformly on every rank
            (Problem/mesh: refinements), each refinement a geometric level; "refined r2"
            is refined twice;
-  msh      the fine mesh written by Gmsh as a .msh file and read as is (rank 0 reads and
-           partitions it; its own P1 grid, MueLu below);
-  msh all ranks  the same .msh read by all ranks together (Problem/mesh: read = all ranks:
-           each reads a slice, PT-Scotch partitions; runs on 2 ranks or more);
+  msh      the fine mesh written by Gmsh as a .msh file and read as is by rank 0, which
+           partitions it (Problem/mesh: read = rank 0; its own P1 grid, MueLu below);
+  msh all ranks  the same .msh read by all ranks together (Problem/mesh: read = all ranks,
+           the default: each reads a slice, PT-Scotch partitions; runs on 2 ranks or more);
   parts    the same fine mesh partitioned by Gmsh and written as one file per rank
            (gmsh -part N -part_split), each rank reading its own (runs on 2 ranks or more).
 
@@ -103,7 +103,7 @@ def mesh_settings(case, mesh, workdir, ranks):
             return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={write_geometry(workdir, dim, coarse)}",
                     f"Problem/mesh: refinements={refinements}"]
     file = fine_parts(workdir, dim, fine, ranks) if mesh == "parts" else fine_msh(workdir, dim, fine)
-    read = ["Problem/mesh: read=all ranks"] if mesh == "msh all ranks" else []
+    read = [f"Problem/mesh: read={'all ranks' if mesh == 'msh all ranks' else 'rank 0'}"]
     return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={file}"] + read
 
 

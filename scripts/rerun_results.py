@@ -36,6 +36,8 @@ COMMANDS = {
     "force-control": ["bench/force_control.py"],
     "forcing": ["bench/forcing.py"],
     "gmsh-meshes": ["bench/gmsh_meshes.py"],
+    "gmsh-meshes-msh-read": ["bench/gmsh_meshes.py", "--cases", "3d-p1", "--ranks", "2,4", "--meshes",
+                             "box,msh,msh all ranks", "--name", "gmsh-meshes-msh-read"],
     "gmsh-pk": ["bench/gmsh_pk.py"],
     "hertz": ["scripts/hertz.py"],
     "incompressibility": ["bench/incompressibility.py"],

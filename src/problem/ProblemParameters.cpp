@@ -131,12 +131,12 @@ void addMeshParameters(ParameterList& p) {
         "When name.msh does not exist but name_1.msh .. name_N.msh do (a mesh Gmsh partitioned and wrote "
         "in parts: gmsh -part N -part_split), each of the N ranks reads its own part; N must be the rank "
         "count");
-  p.set("mesh: read", "rank 0",
-        "How a whole .msh file is read on more than one rank. \"rank 0\": rank 0 reads it (Gmsh) and "
-        "partitions it (METIS), then sends each rank its part. \"all ranks\": every rank reads a slice of "
-        "the file, PT-Scotch partitions the cells in parallel and each rank receives its part, so that no "
-        "rank holds the whole mesh (for MSH 4.1 ASCII files, Gmsh's default format; other files are read "
-        "by rank 0)",
+  p.set("mesh: read", "all ranks",
+        "How a whole .msh file is read on more than one rank. \"all ranks\": every rank reads a slice of "
+        "the file, the ranks put the cells along a Morton curve, PT-Scotch partitions them in parallel and "
+        "each rank receives its part, so that no rank holds the whole mesh (for MSH 4.1 ASCII files with "
+        "linear simplices, Gmsh's default output; other files are read by rank 0). \"rank 0\": rank 0 "
+        "reads it (Gmsh) and partitions it (METIS), then sends each rank its part",
         choices({"rank 0", "all ranks"}));
   p.set("mesh: size factor", 1.0, "A .geo geometry's mesh sizes are multiplied by this (Gmsh's Mesh.MeshSizeFactor)",
         range(1e-6, 1e6));

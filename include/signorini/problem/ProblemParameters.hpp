@@ -24,7 +24,7 @@ struct GmshSource {
   std::string file;
   double sizeFactor = 1.0;
   int refinements = 0;
-  bool readByAllRanks = false;  // a whole .msh file read in slices by all ranks (Problem/mesh: read)
+  bool readByAllRanks = true;  // a whole .msh file read in slices by all ranks (Problem/mesh: read)
 };
 /// The mesh file alone, checked, before the mesh and so its dimension are known.
 GmshSource readGmshSource(const Teuchos::ParameterList& problem);
