@@ -9,6 +9,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 
+#include "assembly/SortedVertexKey.hpp"
 #include "core/Collectives.hpp"
 #include "core/NeighbourExchange.hpp"
 #include "signorini/core/Error.hpp"
@@ -16,17 +17,7 @@
 namespace signorini::detail {
 namespace {
 
-using Key = std::array<long long, 3>;  // an entity's sorted global vertex ids (Gmsh node tags for a vertex), padded with -1
-
-Key sortedKey(const long long* ids, int size) {
-  Key key{-1, -1, -1};
-  for (int i = 0; i < size; ++i) {  // insertion: at most three ids
-    int j = i;
-    for (; j > 0 && key[j - 1] > ids[i]; --j) key[j] = key[j - 1];
-    key[j] = ids[i];
-  }
-  return key;
-}
+using Key = SortedVertexKey;  // of global vertex ids (Gmsh node tags for a vertex)
 
 // The part's vertices by global id, and for each the ranks that hold it (ascending, this one
 // among them).
@@ -94,7 +85,7 @@ NumberedEntities numberEntities(const Comm& comm, std::vector<Key> keys, int siz
   result.owners.assign(all.size(), rank);
   for (int r = 0; r < ranks; ++r)
     for (std::size_t i = 0; i < fromRank[r].size(); i += size) {
-      const Key key = sortedKey(&fromRank[r][i], size);
+      const Key key = sortedVertexKey(&fromRank[r][i], size);
       const std::size_t e = result.find(key);
       if (e == all.size() || all[e] != key) continue;
       heldBy[r].push_back(e);
@@ -119,7 +110,7 @@ NumberedEntities numberEntities(const Comm& comm, std::vector<Key> keys, int siz
   }
   for (const std::vector<long long>& received : exchangeWithRanks(comm, toRank))
     for (std::size_t i = 0; i < received.size(); i += size + 1)
-      result.ids[result.find(sortedKey(&received[i], size))] = received[i + size];
+      result.ids[result.find(sortedVertexKey(&received[i], size))] = received[i + size];
   if (std::find(result.ids.begin(), result.ids.end(), -1) != result.ids.end())
     throw Error("split mesh: an entity shared with another rank got no number from its owner");
   return result;
@@ -177,13 +168,13 @@ std::vector<Key> cellEntityKeys(const SimplexMesh& mesh, const VertexSharing& sh
         for (int j = i + 1; j <= d; ++j) {
           ids[0] = sharing.ids[cell[i]];
           ids[1] = sharing.ids[cell[j]];
-          keys.push_back(sortedKey(ids, 2));
+          keys.push_back(sortedVertexKey(ids, 2));
         }
     } else {
       for (int f = 0; f <= d; ++f) {
         for (int v = 0, n = 0; v <= d; ++v)
           if (v != f) ids[n++] = sharing.ids[cell[v]];
-        keys.push_back(sortedKey(ids, 3));
+        keys.push_back(sortedVertexKey(ids, 3));
       }
     }
   }
@@ -212,7 +203,7 @@ void addBoundary(const Comm& comm, const VertexSharing& sharing, MeshPart& part)
     for (int v = 0; v < d; ++v) ids[v] = sharing.ids[mesh.facets[d * f + v]];
     near.insert(near.end(), ids, ids + d);
     near.push_back(mesh.facetTags[f]);
-    for (int r : sharing.others(sortedKey(ids, d), d, comm.getRank(), true)) {
+    for (int r : sharing.others(sortedVertexKey(ids, d), d, comm.getRank(), true)) {
       toRank[r].insert(toRank[r].end(), ids, ids + d);
       toRank[r].push_back(mesh.facetTags[f]);
     }

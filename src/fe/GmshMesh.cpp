@@ -436,7 +436,7 @@ void addBoundaryFacets(const RawMesh& raw, const VertexTags& vertices, const std
   std::vector<std::pair<Tag, std::size_t>> elementAndGroup;  // of each facet, for the message
   const auto notAFace = [&](const std::pair<Tag, std::size_t>& facet) {
     throw InputError(prefix + "boundary element " + std::to_string(facet.first) + " of the group \"" +
-                     boundaryName(raw.boundaryGroups[facet.second]) + "\" is not a " + (dim == 2 ? "edge" : "face") +
+                     boundaryName(raw.boundaryGroups[facet.second]) + "\" is not " + (dim == 2 ? "an edge" : "a face") +
                      " of any cell of the mesh");
   };
   for (std::size_t g = 0; g < raw.boundaryGroups.size(); ++g) {
