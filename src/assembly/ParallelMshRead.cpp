@@ -11,12 +11,15 @@
 #include <climits>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <memory>
 #include <numeric>
 #include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "assembly/SortedVertexKey.hpp"
 #include "core/Collectives.hpp"
 #include "core/NeighbourExchange.hpp"
 #include "core/RootTask.hpp"
@@ -29,17 +32,7 @@
 namespace signorini::detail {
 namespace {
 
-using Key = std::array<long long, 3>;  // a face's sorted node tags, padded with -1
-
-Key sortedKey(const long long* tags, int n) {
-  Key key{-1, -1, -1};
-  for (int i = 0; i < n; ++i) {  // insertion: at most three tags
-    int j = i;
-    for (; j > 0 && key[j - 1] > tags[i]; --j) key[j] = key[j - 1];
-    key[j] = tags[i];
-  }
-  return key;
-}
+using Key = SortedVertexKey;  // of a face's node tags
 
 // Faces a rank matches in one round: the faces are matched in rounds, by their hashes, so that
 // their records take a bounded memory.
@@ -286,7 +279,7 @@ class ParallelRead {
         long long tags[3];
         for (int i = 0, k = 0; i <= d_; ++i)
           if (i != omit) tags[k++] = slice_.cellNodes[(d_ + 1) * c + i];
-        const Key key = sortedKey(tags, d_);
+        const Key key = sortedVertexKey(tags, d_);
         if (inRound(key, directory)) faces.emplace_back(key, cellStart_[rank_] + c);
       }
     return faces;
@@ -299,7 +292,7 @@ class ParallelRead {
     int directory = 0;
     for (std::size_t f = 0; f < slice_.facetTags.size(); ++f) {
       const long long* nodes = slice_.facetNodes.data() + d_ * f;
-      const Key key = sortedKey(nodes, d_);
+      const Key key = sortedVertexKey(nodes, d_);
       if (!inRound(key, directory)) continue;
       facets.insert(facets.end(), key.begin(), key.end());
       facets.push_back(slice_.facetElements[f]);
@@ -602,6 +595,11 @@ GmshMeshPart ParallelRead::assemble() {
 }  // namespace
 
 GmshMeshPart readMshInParallel(const RCP<const Comm>& comm, const std::string& path, std::string& unsupported) {
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!onEveryRank(*comm, file != nullptr)) {  // on a disk that only some ranks see, say
+    unsupported = "not every rank can open it";
+    return {};
+  }
   MshFileSlice slice;
   runOnEveryRank(*comm, [&] { slice = readMshSlice(path, comm->getRank(), comm->getSize(), unsupported); });
   if (!onEveryRank(*comm, unsupported.empty())) {

@@ -14,8 +14,8 @@
 namespace signorini::detail {
 
 // Rank r's part, part r, of the mesh in the .msh file at `path`, read as readGmshMesh reads
-// it, or an empty part (`part` = -1) on every rank if the file is outside what MshFileSlice
-// reads (`unsupported` says why). Collective. Throws InputError on every rank for a malformed
+// it, or an empty part (`part` = -1) on every rank if some rank cannot open the file or the
+// file is outside what MshFileSlice reads (`unsupported` says why). Collective. Throws InputError on every rank for a malformed
 // file or mesh: a cell's node the file does not define, a degenerate cell, a 2D node off the
 // plane z = 0, a face held by more than two cells, a boundary facet that is no face of a cell,
 // fewer cells than ranks. Throws Error if PT-Scotch fails.

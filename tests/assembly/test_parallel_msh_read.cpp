@@ -134,6 +134,24 @@ TEST(ParallelMshReadInput, AFileOutsideTheFormatIsReadByRank0) {
   EXPECT_EQ(all.space->numGlobalNodes(), root.space->numGlobalNodes());
 }
 
+// A file that only rank 0 can open (the other ranks are given a path that does not exist, as
+// if the file were on a disk of rank 0's own) is read by rank 0.
+TEST(ParallelMshReadInput, AFileThatNotEveryRankCanOpenIsReadByRank0) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string file = writeMesh(*comm, 2, 0.2);
+  const std::string directory = testDirectory(*comm) + (comm->getRank() == 0 ? "" : "/nowhere");
+  std::string unsupported;
+  const GmshMeshPart part = detail::readMshInParallel(comm, directory + "/" + file, unsupported);
+  if (comm->getSize() == 1) {  // one rank: it can open the file
+    EXPECT_EQ(unsupported, "");
+    return;
+  }
+  EXPECT_EQ(unsupported, "not every rank can open it");
+  EXPECT_EQ(part.part, -1);
+  const AssembledProblem read = buildProblem(readByAllRanks(gmshPressedProblem(2, file, 1, 0)), comm, directory);
+  EXPECT_GT(read.space->numGlobalNodes(), 0);
+}
+
 // The unit square cut into four triangles around its centre (node 5), with the groups "bottom"
 // (edge 1-2) and "inner" (edge 1-5, between two cells). Along the Morton curve the cells come
 // bottom, left, right, top: on two ranks the cells sharing edge 1-5 are in one slice and the
