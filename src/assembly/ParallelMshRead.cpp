@@ -97,9 +97,9 @@ class ParallelRead {
     std::copy(&slice_.cellNodes[(d_ + 1) * c], &slice_.cellNodes[(d_ + 1) * (c + 1)], to + 2);
   }
 
-  // Sends each slice cell c a record of `width` numbers, write(c, record), to rank destination(c);
-  // returns the records received, by sending rank. Packed directly: the cells are the largest
-  // data the ranks exchange.
+  // Sends rank destination(c) a record of `width` numbers, write(c, record), for each slice
+  // cell c; returns the records received, by sending rank. Packed in one array: the cells are
+  // the largest data the ranks exchange.
   template <class Destination, class Write>
   std::vector<long long> sendCells(std::size_t width, const Destination& destination, const Write& write) const {
     std::vector<int> count(size_, 0);

@@ -1,8 +1,9 @@
 #pragma once
 // Private to the library: a whole Gmsh mesh file read by all ranks together, none of them
-// holding the mesh. Each rank reads a slice of the file (MshFileSlice) and pairs its cells'
-// faces, a directory of faces pairs those left across slices, PT-Scotch partitions the cells'
-// dual graph, and each rank receives its part's cells, their nodes' coordinates from a
+// holding the mesh. Each rank reads a slice of the file (MshFileSlice); the ranks sort the
+// cells along a Morton curve of their centroids, so that each holds a compact region, and
+// each pairs its cells' faces; a directory of faces pairs those left across ranks, PT-Scotch
+// partitions the cells' dual graph, and each rank receives its part's cells, their nodes' coordinates from a
 // directory of node tags, and the boundary facets of its cells: the part that
 // readGmshMeshPart reads from a mesh Gmsh partitioned, for the same path on
 // (latticePartOfSplitMesh).
