@@ -46,17 +46,9 @@ std::string writeMeshes(const Comm& comm, int dim, double h) {
     gmsh::vectorpair points;
     gmsh::model::getBoundary({{dim, body}}, points, false, false, true);
     gmsh::model::mesh::setSize(points, h);
-    // The bounding faces y = 0 / y = 1 (2D) or z = 0 / z = 1 (3D).
-    int bottom = -1, top = -1;
+    const auto [bottom, top] = signorini::testing::unitBoxBottomAndTop(dim, body);
     gmsh::vectorpair faces;
     gmsh::model::getBoundary({{dim, body}}, faces, false, false, false);
-    for (const auto& [faceDim, tag] : faces) {
-      double x0, y0, z0, x1, y1, z1;
-      gmsh::model::getBoundingBox(faceDim, tag, x0, y0, z0, x1, y1, z1);
-      const double low = dim == 2 ? y1 : z1, high = dim == 2 ? y0 : z0;
-      if (std::fabs(low) < 1e-6) bottom = tag;
-      if (std::fabs(high - 1) < 1e-6) top = tag;
-    }
     std::vector<int> sides;
     for (const auto& [faceDim, tag] : faces)
       if (tag != bottom && tag != top) sides.push_back(tag);

@@ -69,17 +69,25 @@ void meshUnitBox(int dim, double h) {
   const int body = dim == 2 ? gmsh::model::occ::addRectangle(0, 0, 0, 1, 1) : gmsh::model::occ::addBox(0, 0, 0, 1, 1, 1);
   gmsh::model::occ::synchronize();
   gmsh::option::setNumber("Mesh.MeshSizeMax", h);
+  const auto [bottom, top] = unitBoxBottomAndTop(dim, body);
+  gmsh::model::setPhysicalName(dim - 1, gmsh::model::addPhysicalGroup(dim - 1, {bottom}), "bottom");
+  gmsh::model::setPhysicalName(dim - 1, gmsh::model::addPhysicalGroup(dim - 1, {top}), "top");
+  gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, {body}), "body");
+  gmsh::model::mesh::generate(dim);
+}
+
+std::pair<int, int> unitBoxBottomAndTop(int dim, int body) {
+  int bottom = -1, top = -1;
   gmsh::vectorpair faces;
   gmsh::model::getBoundary({{dim, body}}, faces, false, false, false);
   for (const auto& [faceDim, tag] : faces) {
     double x0, y0, z0, x1, y1, z1;
     gmsh::model::getBoundingBox(faceDim, tag, x0, y0, z0, x1, y1, z1);
     const double low = dim == 2 ? y1 : z1, high = dim == 2 ? y0 : z0;
-    if (std::fabs(low) < 1e-6) gmsh::model::setPhysicalName(faceDim, gmsh::model::addPhysicalGroup(faceDim, {tag}), "bottom");
-    if (std::fabs(high - 1) < 1e-6) gmsh::model::setPhysicalName(faceDim, gmsh::model::addPhysicalGroup(faceDim, {tag}), "top");
+    if (std::fabs(low) < 1e-6) bottom = tag;
+    if (std::fabs(high - 1) < 1e-6) top = tag;
   }
-  gmsh::model::setPhysicalName(dim, gmsh::model::addPhysicalGroup(dim, {body}), "body");
-  gmsh::model::mesh::generate(dim);
+  return {bottom, top};
 }
 
 int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol) {

@@ -2,6 +2,7 @@
 // Helpers shared by the tests: the shipped XML problems, box problems built in code, and
 // linear solves for checks that need a discrete solution.
 #include <string>
+#include <utility>
 
 #include <Teuchos_ParameterList.hpp>
 
@@ -34,6 +35,10 @@ Teuchos::ParameterList gmshPressedProblem(int dim, const std::string& file, int 
 // Into the current Gmsh model (Gmsh initialised by the caller): the unit square (2D) or cube
 // (3D) with groups "bottom" (y or z = 0), "top" and "body", meshed at size h.
 void meshUnitBox(int dim, double h);
+
+// The Gmsh tags of the bottom (y or z = 0) and top (y or z = 1) sides of the unit square or
+// cube `body` of the current model.
+std::pair<int, int> unitBoxBottomAndTop(int dim, int body);
 
 // Solves Q x = b by CG + MueLu to a relative residual of tol; returns the iterations.
 int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol);
