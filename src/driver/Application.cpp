@@ -480,6 +480,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     out << "setup peak resident on rank 0 +" << built.setupPeakMiB[0] << " MiB), n = " << n << ", m = " << m
         << ", " << comm->getSize() << " MPI rank(s); setup " << built.setupSeconds << " s, assembly "
         << built.assemblySeconds << " s\n";
+    for (const std::string& note : built.notes) out << "Signorini: " << note << "\n";
   }
 
   if (!cl.exportQp.empty()) {
@@ -515,13 +516,13 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     summary.m = m;
     summary.result = &result;
     summary.record = &record;
-  summary.record = &record;
     summary.setupSeconds = built.setupSeconds;
     summary.assemblySeconds = built.assemblySeconds;
     summary.totalSeconds = maxOverRanks(*comm, total.totalElapsedTime());
     summary.serialMeshMiB = serialMeshMiB;
     summary.serialMeshPeakMiB = built.setupPeakMiB[0];
     summary.setupPeakMiBPerRank = built.setupPeakMiB;
+    summary.notes = built.notes;
     writeRunSummary(summary, cl, output, directory, finite && output.get<bool>("write solution"), *comm, out);
   }
   Teuchos::TimeMonitor::summarize(comm.ptr(), out, false, true, false);

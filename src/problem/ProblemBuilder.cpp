@@ -142,11 +142,12 @@ std::shared_ptr<const GeometricGrid> splitGmshSpace(const Teuchos::ParameterList
 // each rank its own part. A .msh file with `mesh: read` = "all ranks", on more than one rank:
 // all ranks together, each keeping a slice and then its part (readMshInParallel), where the
 // parallel reader knows the file's format. Any other Gmsh mesh is read by rank 0 alone, once,
-// and freed once each rank has its part (CoarseMeshLattice). The mesh's dimension decides the
-// one the rest of the definition is read with.
+// and freed once each rank has its part (CoarseMeshLattice); `report` hears why where all ranks
+// were asked to read it. The mesh's dimension decides the one the rest of the definition is
+// read with.
 std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                                                const std::string& baseDirectory, AssembledProblem& result,
-                                               std::shared_ptr<const DistributedSpace>& space) {
+                                               std::shared_ptr<const DistributedSpace>& space, BuildObserver& report) {
   const GmshSource gmsh = detail::gmshSourceOf(problem);
   if (gmsh.file.empty()) {
     ProblemDefinition def = detail::definitionOf(problem, 0);
@@ -165,6 +166,7 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
     std::string unsupported;  // the file is then read whole by rank 0
     GmshMeshPart part = detail::readMshInParallel(comm, file.string(), unsupported);
     if (unsupported.empty()) return partSpace(problem, gmsh, file, std::move(part), comm, result, space);
+    report.onNote("mesh file '" + file.string() + "' read whole by rank 0, not by all ranks: " + unsupported);
   }
   detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
   int dim = mesh ? mesh->dim : 0;
@@ -222,7 +224,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     Teuchos::ParameterList validated = validatedParameters(problem, validProblemParameters(), "Problem");
     if (stiffness == StiffnessNeed::Assembled && validated.get<std::string>("stiffness: operator") == "auto")
       validated.set("stiffness: operator", "assembled");
-    refinedGrid = makeSpace(validated, comm, baseDirectory, result, space);
+    refinedGrid = makeSpace(validated, comm, baseDirectory, result, space, report);
     result.space = space;
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);

@@ -136,8 +136,7 @@ void addMeshParameters(ParameterList& p) {
         "the file, the ranks put the cells along a Morton curve, PT-Scotch partitions them in parallel and "
         "each rank receives its part, so that no rank holds the whole mesh (for MSH 4.1 ASCII files with "
         "linear simplices, Gmsh's default output, that every rank can open; other files are read by rank "
-        "0). \"rank 0\": rank 0 "
-        "reads it (Gmsh) and partitions it (METIS), then sends each rank its part",
+        "0, and the log says why). \"rank 0\": rank 0 reads it (Gmsh) and partitions it (METIS), then sends each rank its part",
         choices({"rank 0", "all ranks"}));
   p.set("mesh: size factor", 1.0, "A .geo geometry's mesh sizes are multiplied by this (Gmsh's Mesh.MeshSizeFactor)",
         range(1e-6, 1e6));

@@ -148,8 +148,17 @@ TEST(ParallelMshReadInput, AFileThatNotEveryRankCanOpenIsReadByRank0) {
   }
   EXPECT_EQ(unsupported, "not every rank can open it");
   EXPECT_EQ(part.part, -1);
-  const AssembledProblem read = buildProblem(readByAllRanks(gmshPressedProblem(2, file, 1, 0)), comm, directory);
+  BuildRecorder built;  // told why, for the run log
+  const AssembledProblem read = buildProblem(readByAllRanks(gmshPressedProblem(2, file, 1, 0)), comm, directory,
+                                             StiffnessNeed::AsConfigured, &built);
   EXPECT_GT(read.space->numGlobalNodes(), 0);
+  ASSERT_EQ(built.notes.size(), 1u);
+  EXPECT_NE(built.notes[0].find("read whole by rank 0, not by all ranks: not every rank can open it"),
+            std::string::npos) << built.notes[0];
+  BuildRecorder everyRank;  // a file that every rank opens: read as asked, nothing to say
+  buildProblem(readByAllRanks(gmshPressedProblem(2, file, 1, 0)), comm, testDirectory(*comm),
+               StiffnessNeed::AsConfigured, &everyRank);
+  EXPECT_TRUE(everyRank.notes.empty());
 }
 
 // The unit square cut into four triangles around its centre (node 5), with the groups "bottom"

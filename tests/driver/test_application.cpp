@@ -329,6 +329,7 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_TRUE(has("\"memory_mib\": {\"max_rank\": "));
   EXPECT_TRUE(has("\"serial_mesh_mib\": "));
   EXPECT_TRUE(has("\"serial_mesh_peak_rss_mib\": "));
+  EXPECT_TRUE(has("\"notes\": [],"));  // a box is made as asked
   {  // one setup peak per rank
     const std::size_t at = summary.find("\"setup_peak_rss_mib\": [");
     ASSERT_NE(at, std::string::npos);

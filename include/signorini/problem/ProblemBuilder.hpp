@@ -27,6 +27,9 @@ class BuildObserver {
   /// rank 0's includes the serial phase's transient buffers (METIS, hash tables) where the
   /// mesh is read and partitioned there.
   virtual void onSetupMemory(const std::vector<double>& peakGrowthMiBPerRank) { (void)peakGrowthMiBPerRank; }
+  /// A remark for the run log on how the problem was built where it is not what the parameters
+  /// ask for, e.g. a mesh file read by rank 0 alone and why; on rank 0 at least.
+  virtual void onNote(const std::string& note) { (void)note; }
 };
 
 /// A BuildObserver that keeps the figures.
@@ -34,8 +37,10 @@ class BuildRecorder : public BuildObserver {
  public:
   void onPhase(const std::string& phase, double seconds) override;
   void onSetupMemory(const std::vector<double>& peakGrowthMiBPerRank) override { setupPeakMiB = peakGrowthMiBPerRank; }
+  void onNote(const std::string& note) override { notes.push_back(note); }
   double setupSeconds = 0, assemblySeconds = 0;  ///< max over ranks
   std::vector<double> setupPeakMiB;              ///< per rank
+  std::vector<std::string> notes;                ///< in the order they came
 };
 
 /// A distributed problem ready to solve: the QP and what output needs (the definition and
@@ -59,8 +64,8 @@ struct AssembledProblem {
 enum class StiffnessNeed { AsConfigured, Assembled };
 
 /// Builds the problem a "Problem" list describes; `baseDirectory` resolves a relative
-/// "mesh: file"; the observer, if any, receives the phases' times and memory. Collective;
-/// throws InputError naming the parameter or file at fault.
+/// "mesh: file"; the observer, if any, receives the phases' times and memory and notes for the
+/// run log. Collective; throws InputError naming the parameter or file at fault.
 AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<const Comm>& comm,
                               const std::string& baseDirectory = ".",
                               StiffnessNeed stiffness = StiffnessNeed::AsConfigured, BuildObserver* observer = nullptr);
