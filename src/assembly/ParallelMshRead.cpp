@@ -15,7 +15,6 @@
 #include <memory>
 #include <numeric>
 #include <string>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -39,6 +38,22 @@ using Key = SortedVertexKey;  // of a face's node tags
 constexpr long long kFacesPerRound = 1 << 21;
 
 using Face = std::pair<Key, long long>;  // a face's key and a cell it is a face of
+
+// The distinct values of tagAt(0 .. count - 1), ascending, and in `place` each entry's index
+// among them: one sort of (tag, entry) pairs instead of a search or a hash lookup per entry.
+template <class TagAt>
+std::vector<long long> distinctTags(std::size_t count, TagAt&& tagAt, std::vector<std::size_t>& place) {
+  std::vector<std::pair<long long, std::size_t>> byTag(count);
+  for (std::size_t i = 0; i < count; ++i) byTag[i] = {tagAt(i), i};
+  std::sort(byTag.begin(), byTag.end());
+  std::vector<long long> tags;
+  place.resize(count);
+  for (const auto& [tag, i] : byTag) {
+    if (tags.empty() || tags.back() != tag) tags.push_back(tag);
+    place[i] = tags.size() - 1;
+  }
+  return tags;
+}
 
 // What the reading ranks know between the steps. Cells are numbered globally, rank r holding
 // the range [cellStart_[r], cellStart_[r + 1]): first by their index in the file's sequence of
@@ -128,21 +143,16 @@ class ParallelRead {
       lower[c] = minOverRanks(*comm_, lower[c]);
       upper[c] = maxOverRanks(*comm_, upper[c]);
     }
-    std::unordered_map<long long, std::size_t> slot;  // of each node tag the slice's cells use, in tag order
-    slot.reserve(numLocalCells());
-    for (long long tag : slice_.cellNodes) slot.try_emplace(tag, 0);
-    std::vector<long long> tags;
-    tags.reserve(slot.size());
-    for (const auto& entry : slot) tags.push_back(entry.first);
-    std::sort(tags.begin(), tags.end());
-    for (std::size_t i = 0; i < tags.size(); ++i) slot[tags[i]] = i;
+    std::vector<std::size_t> slot;  // of each cell node among the tags
+    const std::vector<long long> tags =
+        distinctTags(slice_.cellNodes.size(), [&](std::size_t i) { return slice_.cellNodes[i]; }, slot);
     const std::vector<double> xyz = exchangeWithRanks(*comm_, coordinatesFor(exchangeWithRanks(*comm_, byNodeDirectory(tags))));
     std::vector<long long> codes;
     codes.reserve(2 * numLocalCells());
     for (long long c = 0; c < numLocalCells(); ++c) {
       double x[3] = {0, 0, 0};
       for (int i = 0; i <= d_; ++i) {
-        const std::size_t at = slot[slice_.cellNodes[(d_ + 1) * c + i]];
+        const std::size_t at = slot[(d_ + 1) * c + i];
         for (int k = 0; k < d_; ++k) x[k] += xyz[3 * at + k] / (d_ + 1);
       }
       codes.insert(codes.end(), {static_cast<long long>(mortonCode(x, lower, upper, d_)), cellStart_[rank_] + c});
@@ -475,16 +485,16 @@ class ParallelRead {
   std::vector<int> part_;                              // the part of each slice cell
   std::vector<std::pair<long long, std::size_t>> heldNodes_;  // (tag, index in slice_), sorted
   std::vector<long long> cells_;                       // the part's cells: element, body, d + 1 nodes
+  std::vector<std::size_t> cellVertices_;              // the part's vertex of each node of cells_
 };
 
 // The part's vertices (the node tags of its cells, ascending) with their coordinates and the
 // parts that share them, from the directory that holds each node tag's slice.
 void ParallelRead::vertexData(GmshMeshPart& part) {
-  const std::size_t record = d_ + 3;
+  const std::size_t record = d_ + 3, nodes = d_ + 1;
   std::vector<long long>& tags = part.vertexTags;
-  for (std::size_t c = 0; c < cells_.size(); c += record) tags.insert(tags.end(), &cells_[c + 2], &cells_[c + record]);
-  std::sort(tags.begin(), tags.end());
-  tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+  tags = distinctTags(cells_.size() / record * nodes,
+                      [&](std::size_t i) { return cells_[record * (i / nodes) + 2 + i % nodes]; }, cellVertices_);
   const std::vector<std::vector<long long>> questions = exchangeWithRanks(*comm_, byNodeDirectory(tags));
   std::vector<std::vector<long long>> sharers(size_);
   runOnEveryRank(*comm_, [&] {
@@ -492,13 +502,16 @@ void ParallelRead::vertexData(GmshMeshPart& part) {
     for (int r = 0; r < size_; ++r)
       for (long long tag : questions[r]) users.emplace_back(tag, r);
     std::sort(users.begin(), users.end());
-    for (int r = 0; r < size_; ++r)
+    for (int r = 0; r < size_; ++r) {  // each rank's tags ascending: one walk through the users
+      auto first = users.begin();
       for (long long tag : questions[r]) {
-        const auto first = std::lower_bound(users.begin(), users.end(), std::make_pair(tag, INT_MIN));
-        const auto end = std::upper_bound(users.begin(), users.end(), std::make_pair(tag, INT_MAX));
+        while (first->first < tag) ++first;
+        auto end = first;
+        while (end != users.end() && end->first == tag) ++end;
         sharers[r].push_back(end - first);
         for (auto u = first; u != end; ++u) sharers[r].push_back(u->second);
       }
+    }
   });
   const std::vector<double> xyz = exchangeWithRanks(*comm_, coordinatesFor(questions));
   const std::vector<long long> shared = exchangeWithRanksJoined(*comm_, sharers);
@@ -555,7 +568,7 @@ void ParallelRead::cellsAndFacets(GmshMeshPart& part) const {
     const long long* cell = &cells_[record * c];
     long long ids[4];
     for (int i = 0; i <= d_; ++i) {
-      ids[i] = vertex(cell[2 + i]);
+      ids[i] = static_cast<long long>(cellVertices_[(d_ + 1) * c + i]);
       std::copy(&mesh.vertices[d_ * ids[i]], &mesh.vertices[d_ * ids[i]] + d_, &x[d_ * i]);
     }
     const int orientation = simplexOrientation(d_, x.data());
@@ -588,6 +601,7 @@ GmshMeshPart ParallelRead::assemble() {
   vertexData(part);
   runOnEveryRank(*comm_, [&] { cellsAndFacets(part); });
   cells_ = {};
+  cellVertices_ = {};
   heldFacets_ = {};
   return part;
 }
