@@ -28,6 +28,7 @@ PRECONDITIONER_COMPONENTS = ("default,without contact-corrected start,from zero,
                              "algebraic,algebraic amg of Q")
 # The command of each result set, relative to the repository's root.
 COMMANDS = {
+    "algebraic-drop-tol": ["bench/algebraic_drop_tolerance.py"],
     "amg-variants": ["bench/amg_variants.py"],
     "assembly": ["bench/assembly.py"],
     "communication": ["bench/communication.py"],

@@ -116,7 +116,8 @@ void addPreconditionerParameters(Teuchos::ParameterList& prec) {
                "the hierarchy of a matrix of the same pattern (tP and RP are refused: Trilinos 13.2 fails in "
                "them on contact problems). Where MueLu is the whole hierarchy, aggregation: min agg size "
                "defaults to the 99th percentile of the nodal row sizes (a node and its neighbours) of the first "
-               "matrix: aggregates grow from the best-connected nodes, fewer and larger than MueLu's own");
+               "matrix: aggregates grow from the best-connected nodes, fewer and larger than MueLu's own; and "
+               "aggregation: drop tol to 0.01, which keeps the weakest couplings out of the aggregates");
 }
 
 }  // namespace
@@ -183,7 +184,7 @@ NewtonSystemSolver::NewtonSystemSolver(const ContactQP& qp, const MultigridInput
   } else {
     amg_ = std::make_unique<MueLuPreconditioner>(muelu, multigrid.blockSize, multigrid.nearNullspace(qp),
                                                  multigrid.coordinates,
-                                                 MueLuPreconditioner::MinAggregateSize::HighValenceRoots);
+                                                 MueLuPreconditioner::Aggregation::WholeHierarchy);
     // A rebuild of MueLu's hierarchy is a whole setup: only when constraints switch.
     rebuildTolerance_ = autoOrNumber(prec, "amg of H: rebuild tolerance", 0.9);
   }

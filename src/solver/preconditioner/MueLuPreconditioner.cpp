@@ -46,12 +46,13 @@ Teuchos::ParameterList MueLuPreconditioner::defaultParameters(int blockSize) {
 MueLuPreconditioner::MueLuPreconditioner(const Teuchos::ParameterList& params, int blockSize,
                                          RCP<const MultiVector> nullspace,
                                          RCP<const MultiVector> coordinates,
-                                         MinAggregateSize minAggregateSize)
+                                         Aggregation aggregation)
     : params_(defaultParameters(blockSize)),
       nullspace_(std::move(nullspace)),
       coordinates_(std::move(coordinates)),
-      highValenceRoots_(minAggregateSize == MinAggregateSize::HighValenceRoots &&
+      highValenceRoots_(aggregation == Aggregation::WholeHierarchy &&
                         !params.isParameter("aggregation: min agg size")) {
+  if (aggregation == Aggregation::WholeHierarchy) params_.set("aggregation: drop tol", 0.01);
   // Our smoother parameters belong to our smoother choice: a user who picks another
   // smoother (or coarse solver) gets that package's defaults for it, plus whatever params
   // the user gives, never ours (Chebyshev's degree is an error for a relaxation).

@@ -17,19 +17,22 @@ class MueLuPreconditioner : public MultilevelPreconditioner {
   // small enough for that to be exact in practice (see tests/solver/test_muelu_parallel).
   static Teuchos::ParameterList defaultParameters(int blockSize);
 
-  // How "aggregation: min agg size" is chosen when the user's list does not set it.
-  // HighValenceRoots: the 99th percentile of the nodal row sizes (a node and its neighbours) of
-  // the first matrix, so that aggregation starts only from the best-connected nodes and grows
-  // around them: fewer, larger aggregates and a sparser coarse level where MueLu is the whole
-  // hierarchy of a fine unstructured mesh, whose first coarse level is otherwise a tenth of
-  // the fine one and dense.
-  enum class MinAggregateSize { MueLuDefault, HighValenceRoots };
+  // The aggregation's defaults, where the user's list does not set them. WholeHierarchy, for
+  // MueLu as the whole hierarchy of a fine unstructured mesh:
+  // - "aggregation: min agg size" at the 99th percentile of the nodal row sizes (a node and
+  //   its neighbours) of the first matrix, so that aggregation starts only from the
+  //   best-connected nodes and grows around them: fewer, larger aggregates and a sparser
+  //   coarse level, which is otherwise a tenth of the fine one and dense;
+  // - "aggregation: drop tol" 0.01: the weakest couplings of the mesher's cells, and those
+  //   across a contact between bodies, stay out of the aggregates (fewer CG iterations on
+  //   Gmsh meshes, bench/results/algebraic-drop-tol; 0.02 is already too many in 2D).
+  enum class Aggregation { MueLuDefaults, WholeHierarchy };
 
   // `params` is the user's "MueLu" list; entries it lacks are taken from defaultParameters.
   // `nullspace` lives on the DOF map, `coordinates` on the node map (either may be null).
   MueLuPreconditioner(const Teuchos::ParameterList& params, int blockSize,
                       RCP<const MultiVector> nullspace, RCP<const MultiVector> coordinates,
-                      MinAggregateSize minAggregateSize = MinAggregateSize::MueLuDefault);
+                      Aggregation aggregation = Aggregation::MueLuDefaults);
 
   // Builds the hierarchy for A. With `reuse`, a hierarchy built before for a matrix of the
   // same pattern is refreshed according to the list's "reuse: type" instead of rebuilt; for a

@@ -95,22 +95,29 @@ TEST(MueLuParallel, Elasticity3DDefaultsConvergeFast) {
   EXPECT_LE(r.iterations, 40);
 }
 
-// With high-valence roots, aggregation starts only at nodes whose row in the nodal graph is
+// As the whole hierarchy, aggregation starts only at nodes whose row in the nodal graph is
 // at least the 99th percentile of the row sizes: on a brick mesh of 16^3 cells two thirds of
-// the nodes are interior with all 26 neighbours (27 nodes in the row), the rest have fewer.
-// A user's own min agg size wins; either way CG converges fast.
-TEST(MueLuParallel, HighValenceRootsTakeThe99thPercentileOfTheNodalRowSizes) {
+// the nodes are interior with all 26 neighbours (27 nodes in the row), the rest have fewer;
+// and it drops couplings below 0.01. A user's own min agg size and drop tol win; MueLu's own
+// defaults elsewhere; either way CG converges fast.
+TEST(MueLuParallel, WholeHierarchyAggregationTakesThe99thPercentileOfTheNodalRowSizes) {
   const ElasticityProblem p = galeriElasticity(3, 16);
-  using Choice = MueLuPreconditioner::MinAggregateSize;
-  MueLuPreconditioner chosen(Teuchos::ParameterList(), 3, p.nullspace, Teuchos::null, Choice::HighValenceRoots);
+  using Choice = MueLuPreconditioner::Aggregation;
+  MueLuPreconditioner chosen(Teuchos::ParameterList(), 3, p.nullspace, Teuchos::null, Choice::WholeHierarchy);
   chosen.compute(p.A);
   EXPECT_EQ(chosen.parameters().get<int>("aggregation: min agg size"), 27);
+  EXPECT_EQ(chosen.parameters().get<double>("aggregation: drop tol"), 0.01);
 
   Teuchos::ParameterList user;
   user.set("aggregation: min agg size", 4);
-  MueLuPreconditioner users(user, 3, p.nullspace, Teuchos::null, Choice::HighValenceRoots);
+  user.set("aggregation: drop tol", 0.0);
+  MueLuPreconditioner users(user, 3, p.nullspace, Teuchos::null, Choice::WholeHierarchy);
   users.compute(p.A);
   EXPECT_EQ(users.parameters().get<int>("aggregation: min agg size"), 4);
+  EXPECT_EQ(users.parameters().get<double>("aggregation: drop tol"), 0.0);
+  const MueLuPreconditioner below(Teuchos::ParameterList(), 3, p.nullspace, Teuchos::null, Choice::MueLuDefaults);
+  EXPECT_FALSE(below.parameters().isParameter("aggregation: drop tol"));
+  EXPECT_FALSE(below.parameters().isParameter("aggregation: min agg size"));
 
   auto b = rcp(new MultiVector(p.A->getRangeMap(), 1));
   b->randomize();
