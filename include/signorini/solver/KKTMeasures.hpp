@@ -40,6 +40,12 @@ class ActiveSetCriterion {
     const double r = rowNorm_[i];
     return std::abs(lambda * r) * displacementScale_ > std::abs(slack / r) * forceScale_;
   }
+  /// Whether constraint i is nearly degenerate: its multiplier and its slack both at most
+  /// `fraction` of their scales, so that which side of isActive() it falls on hardly matters.
+  bool isNearlyDegenerate(LocalOrdinal i, double lambda, double slack, double fraction) const {
+    const double r = rowNorm_[i];
+    return std::abs(lambda * r) <= fraction * forceScale_ && std::abs(slack / r) <= fraction * displacementScale_;
+  }
   /// The weight (force per displacement, in constraint i's units) at which a force of the
   /// force scale makes a displacement of `fraction` times the displacement scale.
   double weight(LocalOrdinal i, double fraction) const {

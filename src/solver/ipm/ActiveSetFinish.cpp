@@ -14,6 +14,11 @@ namespace {
 // The steps' length and the estimate's age from which the set counts as settled.
 constexpr double kLongStep = 0.9;
 constexpr int kUnchangedSteps = 2;
+// A constraint whose multiplier and slack are both below this fraction of their scales may
+// change sides of the estimate without unsettling it: at the edge of the contact zone such
+// nearly degenerate constraints cross one or two per main iteration long after the rest has
+// settled, and the finish's correction step (correctSet) decides them as well.
+constexpr double kNearlyDegenerate = 1e-2;
 // The held constraints' violation, as a fraction of the displacement scale per unit of the
 // tolerance: far below what the primal feasibility measure allows.
 constexpr double kViolation = 1e-2;
@@ -43,6 +48,17 @@ bool ActiveSetFinish::differs(const Vector& a, const Vector& b) const {
          0;
 }
 
+bool ActiveSetFinish::changedBeyondDegenerate(const PrimalDualIterate& x) const {
+  auto a = active_.getData();
+  auto before = previous_.getData();
+  auto l = x.lambda.getData();
+  auto s = x.s.getData();
+  return sumOverEntries(*active_.getMap()->getComm(), active_.getLocalLength(), [&](std::size_t i) {
+           const auto k = static_cast<LocalOrdinal>(i);
+           return a[i] != before[i] && !criterion_->isNearlyDegenerate(k, l[i], s[i], kNearlyDegenerate) ? 1.0 : 0.0;
+         }) > 0;
+}
+
 bool ActiveSetFinish::settled(const PrimalDualIterate& x, const KKTMeasures& kkt, double lastStep) {
   criterion_.emplace(qp_, x.v, x.lambda);
   {
@@ -52,7 +68,7 @@ bool ActiveSetFinish::settled(const PrimalDualIterate& x, const KKTMeasures& kkt
     for (std::size_t i = 0; i < active_.getLocalLength(); ++i)
       a[i] = criterion_->isActive(static_cast<LocalOrdinal>(i), l[i], s[i]) ? 1.0 : 0.0;
   }
-  const bool unchanged = unchangedSteps_ >= 0 && lastStep >= kLongStep && !differs(active_, previous_);
+  const bool unchanged = unchangedSteps_ >= 0 && lastStep >= kLongStep && !changedBeyondDegenerate(x);
   unchangedSteps_ = unchanged ? unchangedSteps_ + 1 : 0;
   previous_.assign(active_);
   return unchangedSteps_ >= kUnchangedSteps && kkt.worst() <= std::sqrt(tolerance_) &&

@@ -39,7 +39,9 @@ class ActiveSetFinish {
 
   // Estimates the active set of the iterate (ActiveSetCriterion). True when a finish is worth
   // trying: every KKT measure is within the square root of the tolerance, the last two steps
-  // were long (at least 0.9) and left the estimate unchanged, and it was not tried before.
+  // were long (at least 0.9) and left the estimate unchanged but at nearly degenerate
+  // constraints (multiplier and slack both within 1% of their scales), and it was not tried
+  // before.
   // Collective; call once per main iteration.
   bool settled(const PrimalDualIterate& x, const KKTMeasures& kkt, double lastStep);
 
@@ -72,6 +74,9 @@ class ActiveSetFinish {
   KKTMeasures trial(const PrimalDualIterate& x);
   bool correctSet();
   bool differs(const Vector& a, const Vector& b) const;
+  // Whether the estimate changed from the last main iteration's at a constraint that is not
+  // nearly degenerate (ActiveSetCriterion::isNearlyDegenerate). Collective.
+  bool changedBeyondDegenerate(const PrimalDualIterate& x) const;
 };
 
 }  // namespace signorini::detail

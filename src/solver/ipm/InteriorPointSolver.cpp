@@ -74,7 +74,8 @@ void addPrimalDualParameters(Teuchos::ParameterList& p) {
         "right-hand sides differ by the centering and second-order terms only)", expert());
   p.set("primal-dual: fraction to boundary", 0.995, "Step kept this fraction inside s > 0, y > 0", range(0.5, 0.99999));
   p.set("primal-dual: active-set finish", true,
-        "Once the active-set estimate has stayed the same over two long steps and every KKT measure is "
+        "Once the active-set estimate has stayed the same over two long steps (but at nearly degenerate "
+        "constraints, multiplier and gap both within 1% of their scales) and every KKT measure is "
         "within the square root of the tolerance, try one Newton step of the equality-constrained problem "
         "on that set (its constraints held with a penalty far below the tolerance, the others released) and "
         "stop there if it meets every KKT tolerance (see doc/algorithms.md)");

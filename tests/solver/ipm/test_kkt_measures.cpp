@@ -4,6 +4,8 @@
 // as node-wise rows are.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -57,6 +59,31 @@ TEST(ActiveSetCriterion, DoesNotDependOnTheScaleOfAConstraintRow) {
   Vector difference(active->getMap());
   difference.update(1.0, *active, -1.0, *scaledActive, 0.0);
   EXPECT_EQ(difference.normInf(), 0.0);
+}
+
+// Nearly degenerate: the multiplier and the slack both within a fraction of their scales (the
+// force scale is at least every |lambda_i r_i|, so a multiplier of the solution is within 1 of
+// it); one large value of either is enough to be clear.
+TEST(ActiveSetCriterion, NearlyDegenerateNeedsBothMultiplierAndSlackSmall) {
+  const AssembledProblem p = buildProblem(signorini::testing::shippedProblem("paper/K"), Tpetra::getDefaultComm());
+  const SolveResult r = InteriorPointSolver().solve(p.qp, p.multigrid);
+  ASSERT_TRUE(r.converged()) << r.message;
+  const ActiveSetCriterion criterion(p.qp, *r.v, *r.lambda);
+  auto lambda = r.lambda->getData();
+  int pressed = 0;
+  for (LocalOrdinal i = 0; i < static_cast<LocalOrdinal>(lambda.size()); ++i) {
+    EXPECT_TRUE(criterion.isNearlyDegenerate(i, 0.0, 0.0, 0.0)) << i;
+    EXPECT_FALSE(criterion.isNearlyDegenerate(i, 1e30, 0.0, 1.0)) << i;
+    EXPECT_FALSE(criterion.isNearlyDegenerate(i, 0.0, 1e30, 1.0)) << i;
+    if (lambda[i] == 0) continue;
+    ++pressed;
+    EXPECT_TRUE(criterion.isNearlyDegenerate(i, lambda[i], 0.0, 1.0)) << i;
+    EXPECT_FALSE(criterion.isNearlyDegenerate(i, lambda[i], 1e30, 1.0)) << i;
+    EXPECT_FALSE(criterion.isNearlyDegenerate(i, lambda[i], 0.0, 0.0)) << i;
+  }
+  int total = pressed;
+  Teuchos::reduceAll(*p.qp.A->getRangeMap()->getComm(), Teuchos::REDUCE_SUM, 1, &pressed, &total);
+  EXPECT_GT(total, 0);
 }
 
 }  // namespace
