@@ -33,9 +33,11 @@ Recorded solve(const AssembledProblem& problem, bool finish) {
   return r;
 }
 
-// A 2D and a 3D problem whose last iterations are the barrier's linear tail.
+// A 2D and a 3D problem whose last iterations are the barrier's linear tail (K, L), and two
+// where nearly degenerate constraints still cross the estimate then (F, I): the finish must
+// not wait for them.
 TEST(ActiveSetFinish, EndsTheSolveAtTheOptimumOfTheBarrierIterations) {
-  for (const char* name : {"K", "L"}) {
+  for (const char* name : {"K", "L", "F", "I"}) {
     const AssembledProblem problem = buildProblem(shippedProblem(std::string("paper/") + name), Tpetra::getDefaultComm());
     const Recorded withFinish = solve(problem, true), withoutFinish = solve(problem, false);
     const SolveResult &with = withFinish.result, &without = withoutFinish.result;
