@@ -3,7 +3,8 @@
 // unit cubes meshed at different sizes). The rows
 // of A move with the bodies (a common rigid translation leaves every weighted gap unchanged),
 // an initial gap is weighted as it should, and the contact patch test passes: pressed
-// uniformly, the multipliers, nodal pressures of the dual basis, equal the exact pressure.
+// uniformly, the multipliers, nodal pressures of the dual basis, equal the exact pressure;
+// a P2 node whose multiplier function has no positive weight on the covered part is refused.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -110,6 +111,53 @@ std::string writeCubes(const Comm& comm, double gap, double h, double H, bool su
                     : "Physical Surface(\"lower top\") = {6};\n"
                       "Physical Surface(\"sides\") = {1, 2, 7, 8}; Physical Surface(\"y sides\") = {3, 4, 9, 10};\n")
         << "Physical Volume(\"lower\") = {1}; Physical Volume(\"upper\") = {2};\n";
+  }
+  comm.barrier();
+  return file.str();
+}
+
+// Two triangular prisms meshed apart: "lower", under the triangle (0,0,0), (1,0,0), (0,1,0)
+// ("lower top", one facet) down to z = -1 ("lower base" its other faces), and "upper", 0.1 high
+// on the sliver (0,0,0), (s,0,0), (0,t,0) ("upper bottom"; "top" its top, "upper sides").
+// Written by rank 0.
+std::string writeSliverOnPrism(const Comm& comm, double s, double t) {
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  std::ostringstream name, file;
+  name << std::string(binary ? binary : "/tmp") << "/mortar-np" << comm.getSize();
+  file << name.str() << "/sliver-" << s << "-" << t << ".geo";
+  if (comm.getRank() == 0) {
+    std::filesystem::create_directories(name.str());
+    std::ofstream geo(file.str());
+    geo << "Geometry.AutoCoherence = 0;\n";
+    // Prism `first`: points first+1..first+6, lines first+1..first+9, surfaces first+1 (at
+    // z = high), first+2 (at z = low) and first+3..first+5 (the sides).
+    const auto prism = [&](int first, double a, double b, double low, double high, double size) {
+      const double x[3][2] = {{0, 0}, {a, 0}, {0, b}};
+      for (int level = 0; level < 2; ++level)
+        for (int i = 0; i < 3; ++i)
+          geo << "Point(" << first + 1 + 3 * level + i << ") = {" << x[i][0] << ", " << x[i][1] << ", "
+              << (level == 0 ? high : low) << ", " << size << "};\n";
+      for (int level = 0; level < 2; ++level)
+        for (int i = 0; i < 3; ++i)
+          geo << "Line(" << first + 1 + 3 * level + i << ") = {" << first + 1 + 3 * level + i << ", "
+              << first + 1 + 3 * level + (i + 1) % 3 << "};\n";
+      for (int i = 0; i < 3; ++i) geo << "Line(" << first + 7 + i << ") = {" << first + 1 + i << ", " << first + 4 + i << "};\n";
+      geo << "Curve Loop(" << first + 1 << ") = {" << first + 1 << ", " << first + 2 << ", " << first + 3 << "};\n"
+          << "Curve Loop(" << first + 2 << ") = {" << first + 4 << ", " << first + 5 << ", " << first + 6 << "};\n";
+      for (int i = 0; i < 3; ++i)
+        geo << "Curve Loop(" << first + 3 + i << ") = {" << first + 1 + i << ", " << first + 7 + (i + 1) % 3 << ", -"
+            << first + 4 + i << ", -" << first + 7 + i << "};\n";
+      for (int i = 1; i <= 5; ++i) geo << "Plane Surface(" << first + i << ") = {" << first + i << "};\n";
+      geo << "Surface Loop(" << first + 1 << ") = {" << first + 1 << ":" << first + 5 << "};\n"
+          << "Volume(" << first + 1 << ") = {" << first + 1 << "};\n";
+    };
+    prism(0, 1.0, 1.0, -1.0, 0.0, 2.0);
+    prism(100, s, t, 0.0, 0.1, 0.1);
+    geo << "Transfinite Curve{1, 2, 3} = 2;\n"  // the lower top stays one triangle
+        << "Physical Surface(\"lower top\") = {1}; Physical Surface(\"lower base\") = {2:5};\n"
+        << "Physical Surface(\"upper bottom\") = {102}; Physical Surface(\"top\") = {101};\n"
+        << "Physical Surface(\"upper sides\") = {103:105};\n"
+        << "Physical Volume(\"lower\") = {1}; Physical Volume(\"upper\") = {101};\n";
   }
   comm.barrier();
   return file.str();
@@ -531,6 +579,37 @@ TEST(MortarConstraints, BadPairsAreInputErrors) {
   EXPECT_THROW(build(pressedBlocks(writeBlocks(comm, -0.05, 0.0), 0.0)), InputError);
   EXPECT_THROW(build(pressedBlocks(writeCubes(comm, -0.1, 0.3, 0.22), 0.0, 1, 3)), InputError);
   EXPECT_LT(build(pressedBlocks(writeBlocks(comm, -0.001, 0.0), 0.0)).qp.d->normInf(), 0.001);
+}
+
+// A master boundary that covers of a P2 slave facet only the sliver from a vertex to just past
+// the middle of one edge and a twentieth along the next: the multiplier function of that
+// edge's middle node is negative over most of the sliver, its weight negative, and the node
+// would carry no pressure. Refused in one line that names the node; with P1 multipliers, whose
+// one covered node then takes the whole sliver, the same pair is posed.
+TEST(MortarConstraints, ANodeWithoutPositiveWeightIsAnInputError) {
+  const std::string file = writeSliverOnPrism(*Tpetra::getDefaultComm(), 0.525, 0.05);
+  for (int degree : {1, 2}) {
+    Teuchos::ParameterList problem("Problem");
+    problem.set("mesh: type", "gmsh");
+    problem.set("mesh: file", file);
+    problem.set("element: degree", degree);
+    for (const char* clamped : {"lower base", "top"})
+      for (const char* c : {"displacement: x", "displacement: y", "displacement: z"})
+        problem.sublist("Dirichlet").sublist(clamped).set(c, "0");
+    problem.sublist("Contact").set("boundary", "lower top");
+    problem.sublist("Contact").set("master boundary", "upper bottom");
+    if (degree == 1) {
+      EXPECT_EQ(build(problem).qp.A->getGlobalNumRows(), 1u);
+      continue;
+    }
+    try {
+      build(problem);
+      ADD_FAILURE() << "a node whose multiplier function has a negative weight was posed";
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find("node at (0.5, 0, 0) has no positive integral"), std::string::npos) << message;
+    }
+  }
 }
 
 // Several pairs are sublists of Problem/Contact, each with a contact boundary of its own, and
