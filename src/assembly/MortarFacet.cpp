@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
@@ -215,6 +216,19 @@ std::vector<MortarFacet> unpackFacets(const std::vector<double>& in) {
     facets.push_back(f);
   }
   return facets;
+}
+
+std::array<double, 3> meanOutwardNormal(const DistributedSpace& space, int tag) {
+  std::array<double, 4> sums{{0, 0, 0, 0}};  // measure times normal, measure
+  for (const MortarFacet& f : boundaryFacets(space, tag).facets) {
+    const double measure = f.measure();
+    for (int c = 0; c < 3; ++c) sums[c] += measure * f.normal[c];
+    sums[3] += measure;
+  }
+  std::array<double, 4> global{};
+  Teuchos::reduceAll(*space.comm(), Teuchos::REDUCE_SUM, 4, sums.data(), global.data());
+  if (!(global[3] > 0)) return {{0, 0, 0}};
+  return {{global[0] / global[3], global[1] / global[3], global[2] / global[3]}};
 }
 
 }  // namespace signorini

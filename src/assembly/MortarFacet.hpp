@@ -45,6 +45,11 @@ struct LocalFacets {
 };
 LocalFacets boundaryFacets(const DistributedSpace& space, int tag);
 
+// The mean outward normal of the boundary with the given tag over every rank: its facets'
+// unit normals weighted by their measures, over their total measure (length 1 for a flat
+// boundary, near 0 for one that faces every way). Collective.
+std::array<double, 3> meanOutwardNormal(const DistributedSpace& space, int tag);
+
 // The pieces of `slave` that `master` covers when projected onto it along the slave's normal:
 // simplices of the slave facet (segments in 2D, the triangles of the clipped polygon in 3D),
 // each given by the barycentric coordinates over the slave's vertices of its dim vertices.

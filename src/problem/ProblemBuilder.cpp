@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -15,6 +16,7 @@
 #include "assembly/CoarseMeshLattice.hpp"
 #include "assembly/ElasticityAssembler.hpp"
 #include "assembly/MeshVertexGrid.hpp"
+#include "assembly/MortarFacet.hpp"
 #include "assembly/ParallelMshRead.hpp"
 #include "assembly/RefinedMeshGrid.hpp"
 #include "core/Collectives.hpp"
@@ -176,11 +178,26 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
   return latticeSpace(problem, gmsh, file, lattice, result, space);
 }
 
+// A pair between two bodies without an obstacle: direction gets the one from the master into
+// the slave body: against the slave boundary's mean outward normal, or the last axis where
+// that boundary faces every way (its mean normal shorter than a tenth).
+void orientMortarPairs(ProblemDefinition& def, const DistributedSpace& space) {
+  for (ContactPair& pair : def.contacts) {
+    const auto& d = pair.obstacleDirection;
+    if (pair.masterBoundary.empty() || d[0] != 0.0 || d[1] != 0.0 || d[2] != 0.0) continue;
+    const std::array<double, 3> n = meanOutwardNormal(space, space.mesh().tag(pair.boundary));
+    const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int c = 0; c < 3; ++c)
+      pair.obstacleDirection[c] = length >= 0.1 ? -n[c] / length : c == def.dim - 1 ? 1.0 : 0.0;
+  }
+}
+
 // The QP on `space`, and the grids of the geometric multigrid: a box's or a refined
 // mesh's nested ones, a P_k space's own mesh, or that mesh refined at the nodes, whose
 // stiffness is no Galerkin product of Q's.
 void assembleQP(AssembledProblem& result, const std::shared_ptr<const DistributedSpace>& space,
                 std::shared_ptr<const GeometricGrid> refinedGrid) {
+  orientMortarPairs(result.definition, *space);
   const ProblemDefinition& def = result.definition;
   const bool onlyGridStiffness = storesNoStiffness(def);
   result.qp = assembleContactQP(*space, def, !onlyGridStiffness);

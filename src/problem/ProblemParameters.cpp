@@ -77,8 +77,7 @@ void addContactParameters(ParameterList& contact) {
               "constraints between the two bodies, normals and gaps from the slave side (doc/algorithms.md; "
               "2D and 3D, P1 to P3, with mesh: refinements too). The master may cover the slave in part: slave "
               "nodes that no master facet faces have no constraint. Make the slave the finer and the softer "
-              "side (a slave much stiffer than its master shows an oscillating pressure); obstacle: direction then points from the master into the "
-              "slave body (the sign of the normal force reported). Empty: the rigid obstacle of the gap and "
+              "side (a slave much stiffer than its master shows an oscillating pressure). Empty: the rigid obstacle of the gap and "
               "obstacle parameters");
   contact.set("initial overlap: tolerance", 0.1,
               "With a master boundary: how far the bodies may overlap at the start (a slave node's weighted "
@@ -86,8 +85,10 @@ void addContactParameters(ParameterList& contact) {
               "input error",
               range(0.0, 1e300));
   contact.set("obstacle: direction", Array<double>(),
-              "Vector from the obstacle into the body (normalised); empty: the last axis, "
-              "(0,1) in 2D and (0,0,1) in 3D");
+              "Vector from the obstacle into the body (normalised), along which the normal force is reported; "
+              "empty: the last axis, (0,1) in 2D and (0,0,1) in 3D, and with a master boundary the direction "
+              "from the master into the slave body, against the mean outward normal of the contact boundary "
+              "(the last axis where that boundary faces every way)");
   contact.set("gap: type", "constant",
               "\"constant\": gap: value; \"paraboloid\": gap: value + |x - center|^2 / (2 radius) "
               "(rigid cylinder or sphere); \"expression\": gap: expression",
@@ -239,19 +240,21 @@ void readBoxSize(const ParameterList& p, ProblemDefinition& def) {
 ContactPair readContactPair(const ParameterList& contact, const std::string& path, const ProblemDefinition& def) {
   const int dim = def.dim;
   const std::string boundary = contact.get<std::string>("boundary");
+  const std::string master = contact.get<std::string>("master boundary");
   auto direction = contact.get<Array<double>>("obstacle: direction");
+  const bool fromMesh = direction.empty() && !master.empty();  // zero here, set with the mesh (orientMortarPairs)
   if (direction.empty()) {
     direction.assign(dim, 0.0);
-    direction[dim - 1] = 1.0;
+    direction[dim - 1] = fromMesh ? 0.0 : 1.0;
   }
   if (static_cast<int>(direction.size()) != dim)
     throw InputError(path + "obstacle: direction: give " + std::to_string(dim) + " values");
   double norm = 0;
   for (double c : direction) norm += c * c;
   norm = std::sqrt(norm);
-  if (!(norm > 0)) throw InputError(path + "obstacle: direction: must not be zero");
+  if (!(norm > 0) && !fromMesh) throw InputError(path + "obstacle: direction: must not be zero");
   std::array<double, 3> unit{{0.0, 0.0, 0.0}};
-  for (int i = 0; i < dim; ++i) unit[i] = direction[i] / norm;
+  for (int i = 0; i < dim && norm > 0; ++i) unit[i] = direction[i] / norm;
 
   const std::string type = contact.get<std::string>("gap: type");
   const double g0 = contact.get<double>("gap: value");
@@ -270,7 +273,6 @@ ContactPair readContactPair(const ParameterList& contact, const std::string& pat
     text = contact.get<std::string>("gap: expression");
   }
   const std::string formulation = contact.get<std::string>("formulation");
-  const std::string master = contact.get<std::string>("master boundary");
   const bool dual = formulation == "dual mortar" || (formulation == "auto" && (def.degree > 1 || !master.empty()));
   return ContactPair{contact.name(), boundary, master, unit, Expression(text, path + "gap"),
                      formulation == "weighted gap" ? ContactFormulation::weightedGap

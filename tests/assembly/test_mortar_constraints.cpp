@@ -7,6 +7,7 @@
 // a P2 node whose multiplier function has no positive weight on the covered part is refused.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -322,10 +323,11 @@ TEST(MortarConstraints, SeveralPairsPassThePatchTestTogether) {
     Teuchos::ParameterList& interface = problem.sublist("Contact").sublist("interface");
     interface.set("boundary", "lower top");
     interface.set("master boundary", "upper bottom");
-    interface.set("obstacle: direction", Teuchos::Array<double>(Teuchos::tuple(0.0, -1.0)));  // master into slave
     const AssembledProblem p = build(problem);
     ASSERT_EQ(p.definition.contacts.size(), 2u);
     EXPECT_EQ(p.definition.contacts[1].name, "interface");
+    // Not given, the interface's obstacle direction points from the master into the slave body.
+    EXPECT_EQ(p.definition.contacts[1].obstacleDirection, (std::array<double, 3>{{0.0, -1.0, 0.0}}));
     EXPECT_LT(largestPressureDeviation(p, pressure), 1e-8) << "P" << degree;
 
     Teuchos::ParameterList solver;
@@ -443,9 +445,7 @@ TEST(MortarConstraints, AMasterEndingInsideASlaveFacetCoversItsCoveredPart) {
     EXPECT_NEAR(sumOverRanks(comm, onSides[0]), covered, 1e-12) << "P" << degree;
     EXPECT_NEAR(sumOverRanks(comm, onSides[1]), -covered, 1e-12) << "P" << degree;
   }
-  Teuchos::ParameterList pressed = pressedBlocks(writeBlocks(comm, 0.0, 0.0, covered), 0.01);
-  pressed.sublist("Contact").set("obstacle: direction", Teuchos::Array<double>(Teuchos::tuple(0.0, -1.0)));
-  const AssembledProblem p = build(pressed);
+  const AssembledProblem p = build(pressedBlocks(writeBlocks(comm, 0.0, 0.0, covered), 0.01));
   const SolveResult r = solvedTightly(p);
   const RCP<Vector> active = activeIndicator(p.qp, *r.v, *r.lambda);
   const ContactPressure recovery(*p.space, p.definition, p.qp.A->getRangeMap(), 0);

@@ -51,7 +51,9 @@ struct ContactPair {
   std::string name;  ///< its sublist of Problem/Contact; empty for the pair given in Problem/Contact itself
   std::string boundary;  ///< the body's contact boundary Gamma_c (a boundary name)
   std::string masterBoundary;  ///< the other body's surface; empty: the rigid obstacle below
-  std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};  ///< unit, from obstacle into body
+  /// Unit, from the obstacle (the master body) into the body; between bodies, zero until
+  /// buildProblem() sets it from the mesh, where Problem/Contact does not give it
+  std::array<double, 3> obstacleDirection{{0.0, 0.0, 0.0}};
   Expression gap;  ///< g(x), the distance to the obstacle along obstacleDirection
   ContactFormulation formulation = ContactFormulation::nodal;
   /// Between two bodies: the overlap at the start that is refused, relative to the size of
