@@ -66,9 +66,10 @@ class CoarseMeshLattice {
   // Places the points of resolution 2^refinement.levels() (and so those of every coarser
   // one) that lie inside a coarse facet or edge on the boundary of the .geo geometry at
   // `path` onto it: the closest point of its surface, or of its curve for an edge on one
-  // (Gmsh's projection; the mesh read must carry SimplexMesh::geometryFacets). A point on
-  // an edge between two surfaces that is no geometry curve stays where it is. Rank 0 loads
-  // the geometry and places every rank's points. Collective.
+  // (Gmsh's projection; the mesh read must carry SimplexMesh::geometryFacets, which leave
+  // out planes and straight lines: points there stay where they are, as do those on an edge
+  // between two surfaces that is no geometry curve). Rank 0 loads the geometry and places
+  // every rank's points, if any rank has some. Collective.
   void placeOnGeometry(const std::string& path, const SimplexRefinement& refinement);
 
  private:

@@ -168,12 +168,21 @@ std::vector<BodyGroup> bodyGroups(int dim) {
   return bodies;
 }
 
-// The elements of `type` on every entity of dimension `dim`, each block with its entity.
-std::vector<std::pair<int, ElementBlock>> entityElements(int dim, int type) {
+// Whether the geometry entity is a plane or a straight line, on which the midpoints of mesh
+// edges already lie.
+bool isFlat(int dim, int entity) {
+  std::string type;
+  gmsh::model::getType(dim, entity, type);
+  return type == "Plane" || type == "Line";
+}
+
+// The elements of `type` on every curved entity of dimension `dim`, each block with its entity.
+std::vector<std::pair<int, ElementBlock>> curvedEntityElements(int dim, int type) {
   gmsh::vectorpair entities;
   gmsh::model::getEntities(entities, dim);
   std::vector<std::pair<int, ElementBlock>> result;
   for (const auto& entity : entities) {
+    if (isFlat(dim, entity.second)) continue;
     std::vector<ElementBlock> blocks;
     appendElements(dim, entity.second, blocks);
     for (ElementBlock& block : blocks)
@@ -246,8 +255,8 @@ RawMesh extractMesh(bool withGeometry) {
     raw.boundaryGroups.push_back(std::move(boundary));
   }
   if (withGeometry) {
-    raw.geometryFacetBlocks = entityElements(raw.dim - 1, simplexType(raw.dim - 1));
-    if (raw.dim == 3) raw.geometryEdgeBlocks = entityElements(1, kLineType);
+    raw.geometryFacetBlocks = curvedEntityElements(raw.dim - 1, simplexType(raw.dim - 1));
+    if (raw.dim == 3) raw.geometryEdgeBlocks = curvedEntityElements(1, kLineType);
   }
   return raw;
 }

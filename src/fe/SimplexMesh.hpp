@@ -19,10 +19,11 @@ struct SimplexMesh {
   // (every cell then has tag 0). A Gmsh mesh's bodies are its physical groups of dimension dim.
   std::vector<int> cellTags;
   std::map<std::string, int> bodyTags;  // body name -> tag
-  // Of a mesh Gmsh made from a .geo geometry (else empty): the geometry entity each facet on
-  // the geometry's boundary lies on (a surface in 3D, a curve in 2D; dim vertex ids per
-  // facet) and, in 3D, each edge on a geometry curve (2 vertex ids per edge), so that a
-  // refinement can place new vertices on the geometry.
+  // Of a mesh Gmsh made from a .geo geometry (else empty): the curved geometry entity each
+  // facet on the geometry's boundary lies on (a surface in 3D, a curve in 2D; dim vertex ids
+  // per facet) and, in 3D, each edge on a curved geometry curve (2 vertex ids per edge), so
+  // that a refinement can place new vertices on the geometry. Planes and straight lines are
+  // left out: the new vertices already lie on them.
   std::vector<long long> geometryFacets, geometryEdges;
   std::vector<int> geometryFacetEntities, geometryEdgeEntities;
 

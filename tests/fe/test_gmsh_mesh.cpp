@@ -744,6 +744,23 @@ TEST(GmshGeometry, IsMeshedWhenReadAndRefinedByTheSizeFactor) {
   EXPECT_NEAR(area, M_PI / 4, 2e-3);
 }
 
+// The geometry facets that a refinement places new vertices on are those on curved entities:
+// the quarter disk's arc (its facets' vertices at distance 1 from the centre), not its two
+// straight sides, on which edge midpoints already lie.
+TEST(GmshGeometry, GeometryFacetsAreThoseOnCurvedEntities) {
+  TempDir dir;
+  const std::string path = dir.file("quarter-disk.geo");
+  writeQuarterDisk(path);
+  const SimplexMesh mesh = readGmshMesh(path, 1.0);
+  const int arc = mesh.boundaryTags.at("arc");
+  const auto arcFacets = std::count(mesh.facetTags.begin(), mesh.facetTags.end(), arc);
+  ASSERT_GT(arcFacets, 0);
+  EXPECT_EQ(static_cast<long long>(mesh.geometryFacets.size()), 2 * arcFacets);
+  EXPECT_EQ(mesh.geometryFacetEntities.size(), static_cast<std::size_t>(arcFacets));
+  for (long long vertex : mesh.geometryFacets)
+    EXPECT_NEAR(std::hypot(mesh.vertices[2 * vertex], mesh.vertices[2 * vertex + 1]), 1.0, 1e-12);
+}
+
 // A reader that does not answer within the time limit is stopped: an InputError naming the
 // file and the limit, and the next file is read as usual. (Meshing this geometry 200 times
 // finer than its sizes takes seconds; the limit is a tenth of one.)
