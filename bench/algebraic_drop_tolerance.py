@@ -49,9 +49,11 @@ def problem_of(case, workdir):
         xml = os.path.join(FAMILY, "2d-p1-nx800.xml" if dim == 2 else "3d-p1-nx64.xml")
         return xml, ["Problem/mesh: type=gmsh", f"Problem/mesh: file={fine_msh(workdir, dim, size)}"]
     base, block = blocks[case]
+    # The block's bottom the slave side whatever the moduli: one pair for every case.
     return TWO_BLOCKS + ".xml", [f"Problem/mesh: file={two_blocks_msh(workdir)}",
                                  f"Problem/material: young's modulus={base}",
-                                 f"Problem/Bodies/block/material: young's modulus={block}"]
+                                 f"Problem/Bodies/block/material: young's modulus={block}",
+                                 "Problem/Contact/boundary=block bottom", "Problem/Contact/master boundary=base top"]
 
 
 def run(case, tolerance, ranks, workdir):
