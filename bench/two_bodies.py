@@ -6,9 +6,8 @@ a soft base under a block 1000 times stiffer (the example) and with a stiff base
 block; and, of about as many unknowns, one box [0,1]^2 x [0,2] meshed by Gmsh, on rollers,
 pressed alike onto the rigid plane z = 0. The slave side is the softer body's surface, for
 equal moduli the finer one's (the block's), as the docs advise. For each: the CG iterations
-per Newton system and
-the contact solve's time over that of a linear solve of the same problem (the contact
-boundary clamped normally instead: for two bodies, each body then on its own), on 2 ranks
+per Newton system and the contact solve's time over that of a linear solve of the same
+problem (the block's bottom clamped normally instead: each body then on its own), on 2 ranks
 (--ranks), the default parameters; and the contact force, to compare with the load (0.01 on
 the unit area), the largest pressure (0.01 everywhere) and the master body's force.
 
@@ -36,6 +35,8 @@ def slave_and_master(moduli):
     moduli the finer one's (the block's, meshed at 0.22 against the base's 0.3)."""
     base, block = moduli
     return ("base top", "block bottom") if base < block else ("block bottom", "base top")
+
+
 ONE_BLOCK_GEO = """// The two blocks of two-blocks-3d.geo as one body: [0,1]^2 x [0,2], meshed at the size
 // that gives about as many nodes as their two sizes.
 SetFactory("OpenCASCADE");

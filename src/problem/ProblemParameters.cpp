@@ -242,19 +242,22 @@ ContactPair readContactPair(const ParameterList& contact, const std::string& pat
   const std::string boundary = contact.get<std::string>("boundary");
   const std::string master = contact.get<std::string>("master boundary");
   auto direction = contact.get<Array<double>>("obstacle: direction");
-  const bool fromMesh = direction.empty() && !master.empty();  // zero here, set with the mesh (orientMortarPairs)
-  if (direction.empty()) {
+  // Between bodies, an empty direction stays zero here: buildProblem sets it from the mesh.
+  const bool fromMesh = direction.empty() && !master.empty();
+  if (direction.empty() && !fromMesh) {
     direction.assign(dim, 0.0);
-    direction[dim - 1] = fromMesh ? 0.0 : 1.0;
+    direction[dim - 1] = 1.0;
   }
-  if (static_cast<int>(direction.size()) != dim)
-    throw InputError(path + "obstacle: direction: give " + std::to_string(dim) + " values");
-  double norm = 0;
-  for (double c : direction) norm += c * c;
-  norm = std::sqrt(norm);
-  if (!(norm > 0) && !fromMesh) throw InputError(path + "obstacle: direction: must not be zero");
   std::array<double, 3> unit{{0.0, 0.0, 0.0}};
-  for (int i = 0; i < dim && norm > 0; ++i) unit[i] = direction[i] / norm;
+  if (!fromMesh) {
+    if (static_cast<int>(direction.size()) != dim)
+      throw InputError(path + "obstacle: direction: give " + std::to_string(dim) + " values");
+    double norm = 0;
+    for (double c : direction) norm += c * c;
+    norm = std::sqrt(norm);
+    if (!(norm > 0)) throw InputError(path + "obstacle: direction: must not be zero");
+    for (int i = 0; i < dim; ++i) unit[i] = direction[i] / norm;
+  }
 
   const std::string type = contact.get<std::string>("gap: type");
   const double g0 = contact.get<double>("gap: value");
