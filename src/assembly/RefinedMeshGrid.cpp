@@ -41,7 +41,7 @@ std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
       if (coarse >= static_cast<long long>(coarseCellBody.size())) coarseCellBody.resize(coarse + 1, -1);
       coarseCellBody[coarse] = apart.ofSpaceNode[node];
     });
-  top->answerForSpace(refinement, space, apart.count > 1 ? apart.ofSpaceNode : std::vector<int>());
+  top->answerForSpace(refinement, space, finest.partVertexIds, apart.count > 1 ? apart.ofSpaceNode : std::vector<int>());
   RefinedMeshGrid* above = top.get();
   const detail::RefinedLevel* finer = &finest;
   detail::RefinedLevel previous;
@@ -86,8 +86,7 @@ void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, c
 }
 
 void RefinedMeshGrid::answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space,
-                                     const std::vector<int>& nodeBody) {
-  // The space's mesh is the finest level's, its vertices in this grid's order.
+                                     const std::vector<long long>& vertexIds, const std::vector<int>& nodeBody) {
   const LagrangeSpace& pk = space.space();
   const int k = pk.degree();
   points_.resize(pk.numNodes());
@@ -100,7 +99,7 @@ void RefinedMeshGrid::answerForSpace(const SimplexRefinement& refinement, const 
     std::copy_n(&pk.nodeCoordinates()[dim_ * node], dim_, point.x);
     if (!nodeBody.empty()) point.body = nodeBody[node];
     for (int v = 0; v <= dim_; ++v) {
-      point.vertices[v] = vertexIds_[space.mesh().cells[(dim_ + 1) * cell + v]];
+      point.vertices[v] = vertexIds[space.mesh().cells[(dim_ + 1) * cell + v]];
       point.weights[v] = static_cast<double>(index[v]) / k;
       if (index[v] == k) point.vertex = point.vertices[v];
     }

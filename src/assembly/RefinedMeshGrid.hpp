@@ -48,12 +48,13 @@ class RefinedMeshGrid : public GeometricGrid {
 
   // Level `level` of `levels`, whose vertices `own` holds.
   RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, int level, int levels, const detail::RefinedLevel& own);
-  // The points to answer for: the vertices of the next finer level, or the P_k space's nodes,
-  // with their bodies (of each local coarse cell, or of each space node; empty: one body).
+  // The points to answer for: the vertices of the next finer level, or the P_k space's nodes
+  // (the global id of each of its mesh's vertices given), with their bodies (of each local
+  // coarse cell, or of each space node; empty: one body).
   void answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
                       const detail::RefinedLevel& finer, const std::vector<int>& coarseCellBody);
   void answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space,
-                      const std::vector<int>& nodeBody);
+                      const std::vector<long long>& vertexIds, const std::vector<int>& nodeBody);
   void sortPoints();
   // The point at x (of `body`, -1: any), or null.
   const Point* findPoint(const double* x, int body) const;

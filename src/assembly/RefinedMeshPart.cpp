@@ -49,6 +49,10 @@ void orderCellsAlongCurve(SimplexMesh& mesh) {
 
 void orderAlongCurve(SimplexMesh& mesh) {
   orderCellsAlongCurve(mesh);
+  numberVerticesByCells(mesh);
+}
+
+std::vector<long long> numberVerticesByCells(SimplexMesh& mesh) {
   std::vector<long long> newVertex(mesh.numVertices(), -1);
   long long next = 0;
   for (long long& v : mesh.cells) {
@@ -64,6 +68,7 @@ void orderAlongCurve(SimplexMesh& mesh) {
   mesh.vertices.swap(vertices);
   for (auto* ids : {&mesh.facets, &mesh.geometryFacets, &mesh.geometryEdges})
     for (long long& id : *ids) id = newVertex[id];
+  return newVertex;
 }
 
 std::vector<long long> nodesByLocality(const LagrangeSpace& space, const std::vector<long long>& coarseOrder,
@@ -166,6 +171,11 @@ DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, con
   part.mesh.vertices = finest.mesh.vertices;
   part.mesh.cells = std::move(finest.mesh.cells);
   part.mesh.facets = std::move(finest.mesh.facets);
+  // The lattice numbering puts a cell's vertices in the distant ranges of the coarse vertices,
+  // edges, faces and cells; the loops over cells (assembly) read the data of their nodes.
+  const std::vector<long long> partVertex = numberVerticesByCells(part.mesh);
+  finest.partVertexIds.resize(partVertex.size());
+  for (std::size_t v = 0; v < partVertex.size(); ++v) finest.partVertexIds[partVertex[v]] = finest.vertexIds[v];
   part.mesh.facetTags = std::move(finest.mesh.facetTags);
   part.mesh.boundaryTags = finest.mesh.boundaryTags;
   part.mesh.cellTags = std::move(finest.mesh.cellTags);

@@ -22,6 +22,9 @@ struct RefinedLevel {
   std::vector<long long> vertexIds;  // global id (CoarseMeshLattice::pointId, resolution 2^level) per vertex
   std::vector<LatticePoint> vertexPoints;  // a lattice point of each vertex ...
   std::vector<long long> vertexCells;      // ... in this coarse cell
+  // Once makeRefinedMeshPart() made the part of this level: the global id of each of the
+  // part's vertices, which come in another order.
+  std::vector<long long> partVertexIds;
 };
 
 // `withFacets`: refine this rank's boundary facets of the coarse mesh too, with their tags.
@@ -34,8 +37,9 @@ struct DistributedRefinedPart {
 };
 
 // The part of the P_k space on level refinement.levels(), whose refinement `finest` is (made
-// with its facets): the part takes its cells and facets, `finest` keeps its vertex data for
-// the multigrid's grids. Collective.
+// with its facets): the part takes its cells and facets, its vertices in order of first
+// appearance over the cells, `finest` keeps its vertex data for the multigrid's grids and
+// learns the part's vertex ids. Collective.
 DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
                                            int degree, RefinedLevel& finest);
 
@@ -52,6 +56,11 @@ void orderCellsAlongCurve(SimplexMesh& mesh);
 // and so each part's arrays and matrix rows, inherit this order: a mesher's would scatter a
 // cell's neighbours in memory.
 void orderAlongCurve(SimplexMesh& mesh);
+
+// The vertices in order of first appearance in the cells (those in none last), the cells,
+// facets and geometry entities renumbered to match, in place. Returns the new number of
+// each old vertex.
+std::vector<long long> numberVerticesByCells(SimplexMesh& mesh);
 
 // The space's nodes in order of first appearance over its cells, coarse cell by coarse cell
 // in `coarseOrder` (each coarse cell's `perCoarse` fine cells are consecutive): a global
