@@ -4,7 +4,8 @@
 // of A move with the bodies (a common rigid translation leaves every weighted gap unchanged),
 // an initial gap is weighted as it should, and the contact patch test passes: pressed
 // uniformly, the multipliers, nodal pressures of the dual basis, equal the exact pressure;
-// a P2 node whose multiplier function has no positive weight on the covered part is refused.
+// a P2 node whose multiplier function has no positive weight on the covered part is refused;
+// a pair whose slave boundary faces every way reports its force along the last axis.
 #include <gtest/gtest.h>
 
 #include <array>
@@ -112,6 +113,34 @@ std::string writeCubes(const Comm& comm, double gap, double h, double H, bool su
                     : "Physical Surface(\"lower top\") = {6};\n"
                       "Physical Surface(\"sides\") = {1, 2, 7, 8}; Physical Surface(\"y sides\") = {3, 4, 9, 10};\n")
         << "Physical Volume(\"lower\") = {1}; Physical Volume(\"upper\") = {2};\n";
+  }
+  comm.barrier();
+  return file.str();
+}
+
+// A unit square turned by 30 degrees about the origin, its boundary "square boundary" but for
+// the fifth of one side next to the origin ("square rest"), under a block "upper" whose bottom
+// "upper bottom" touches the square's top corner; meshed apart. Written by rank 0.
+std::string writeTurnedSquareUnderBlock(const Comm& comm) {
+  const char* binary = std::getenv("SIGNORINI_BINARY_DIR");
+  std::ostringstream name, file;
+  name << std::string(binary ? binary : "/tmp") << "/mortar-np" << comm.getSize();
+  file << name.str() << "/turned-square.geo";
+  if (comm.getRank() == 0) {
+    std::filesystem::create_directories(name.str());
+    std::ofstream geo(file.str());
+    geo << "Geometry.AutoCoherence = 0;\nh = 0.1;\nc = Cos(Pi / 6); s = Sin(Pi / 6);\n"
+        << "Point(1) = {0, 0, 0, h}; Point(2) = {c, s, 0, h}; Point(3) = {c - s, s + c, 0, h};\n"
+        << "Point(4) = {-s, c, 0, h}; Point(9) = {-0.2 * s, 0.2 * c, 0, h};\n"
+        << "Point(5) = {-1, s + c, 0, h}; Point(6) = {1.5, s + c, 0, h}; Point(7) = {1.5, s + c + 1, 0, h};\n"
+        << "Point(8) = {-1, s + c + 1, 0, h};\n"
+        << "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 9}; Line(9) = {9, 1};\n"
+        << "Line(5) = {5, 6}; Line(6) = {6, 7}; Line(7) = {7, 8}; Line(8) = {8, 5};\n"
+        << "Curve Loop(1) = {1:4, 9}; Plane Surface(1) = {1};\nCurve Loop(2) = {5:8}; Plane Surface(2) = {2};\n"
+        << "Physical Curve(\"square boundary\") = {1:4}; Physical Curve(\"square rest\") = {9};\n"
+        << "Physical Curve(\"upper bottom\") = {5};\n"
+        << "Physical Curve(\"upper rest\") = {6:8};\n"
+        << "Physical Surface(\"square\") = {1}; Physical Surface(\"upper\") = {2};\n";
   }
   comm.barrier();
   return file.str();
@@ -347,6 +376,19 @@ TEST(MortarConstraints, SeveralPairsPassThePatchTestTogether) {
       for (int c = 0; s.masterForce && c < 2; ++c) EXPECT_NEAR((*s.masterForce)[c], -s.force[c], 1e-10 * pressure);
     }
   }
+}
+
+// A slave boundary that faces every way (a turned square's boundary but a fifth of one side:
+// its mean outward normal is 0.05 long, along that side's normal) gives no direction from the master into the slave body: without an
+// obstacle: direction, the pair reports its normal force along the last axis.
+TEST(MortarConstraints, ASlaveBoundaryFacingEveryWayReportsAlongTheLastAxis) {
+  Teuchos::ParameterList problem("Problem");
+  problem.set("mesh: type", "gmsh");
+  problem.set("mesh: file", writeTurnedSquareUnderBlock(*Tpetra::getDefaultComm()));
+  problem.sublist("Contact").set("boundary", "square boundary");
+  problem.sublist("Contact").set("master boundary", "upper bottom");
+  const AssembledProblem p = build(problem);
+  EXPECT_EQ(p.definition.contacts.front().obstacleDirection, (std::array<double, 3>{{0.0, 1.0, 0.0}}));
 }
 
 // The solution of a problem solved to KKT measures far below the differences asked of it.
