@@ -192,13 +192,12 @@ def main():
         if args.meshes:
             meshes = [m for m in meshes if m in args.meshes.split(",")]
         for np in rank_counts[case]:
-            chosen = [(m, linear) for m in meshes if m not in PARALLEL_ONLY or np > 1 for linear in (False, True)]
-            repeats = {key: [] for key in chosen}
+            repeats = {(m, linear): [] for m in meshes if m not in PARALLEL_ONLY or np > 1 for linear in (False, True)}
             for _ in range(args.repeat):
-                for mesh, linear in chosen:
-                    repeats[(mesh, linear)].append(run(case, mesh, np, linear, args.workdir))
-                    print(json.dumps(repeats[(mesh, linear)][-1]), flush=True)
-            runs += [fastest(repeats[key]) for key in chosen]
+                for (mesh, linear), done in repeats.items():
+                    done.append(run(case, mesh, np, linear, args.workdir))
+                    print(json.dumps(done[-1]), flush=True)
+            runs += [fastest(done) for done in repeats.values()]
     write_results(args.name, made, runs, table(runs))
 
 

@@ -379,8 +379,9 @@ TEST(MortarConstraints, SeveralPairsPassThePatchTestTogether) {
 }
 
 // A slave boundary that faces every way (a turned square's boundary but a fifth of one side:
-// its mean outward normal is 0.05 long, along that side's normal) gives no direction from the master into the slave body: without an
-// obstacle: direction, the pair reports its normal force along the last axis.
+// its mean outward normal is 0.05 long, along that side's normal) gives no direction from the
+// master into the slave body: without an obstacle: direction, the pair reports its normal
+// force along the last axis.
 TEST(MortarConstraints, ASlaveBoundaryFacingEveryWayReportsAlongTheLastAxis) {
   Teuchos::ParameterList problem("Problem");
   problem.set("mesh: type", "gmsh");
