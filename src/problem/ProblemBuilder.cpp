@@ -52,6 +52,11 @@ double peakResidentMiB() {
 // multigrid's Galerkin products, MueLu).
 bool storesNoStiffness(const ProblemDefinition& def) { return def.matrixFreeStiffness && def.degree > 1; }
 
+// The timer of one step of the mesh and space setup, listed in the log's timer table.
+RCP<Teuchos::Time> setupTimer(const std::string& step) {
+  return Teuchos::TimeMonitor::getNewTimer("Signorini: mesh and space: " + step);
+}
+
 }  // namespace
 
 AssembledProblem::AssembledProblem() = default;
@@ -76,10 +81,21 @@ std::shared_ptr<const GeometricGrid> latticeSpace(const Teuchos::ParameterList& 
   checkMemoryFits(static_cast<double>(def.dim) * lattice->numPoints(def.degree << gmsh.refinements), def.dim,
                   def.degree, !storesNoStiffness(def), def.gridRefinedAtNodes, *lattice->comm());
   const SimplexRefinement refinement(def.dim, gmsh.refinements);
-  if (file.extension() == ".geo") lattice->placeOnGeometry(file.string(), refinement);
-  detail::RefinedLevel finest = detail::refineLocally(*lattice, refinement, gmsh.refinements, true);
-  space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree, finest);
+  if (file.extension() == ".geo") {
+    const Teuchos::TimeMonitor timer(*setupTimer("placement on the geometry"));
+    lattice->placeOnGeometry(file.string(), refinement);
+  }
+  detail::RefinedLevel finest;
+  {
+    const Teuchos::TimeMonitor timer(*setupTimer("refinement"));
+    finest = detail::refineLocally(*lattice, refinement, gmsh.refinements, true);
+  }
+  {
+    const Teuchos::TimeMonitor timer(*setupTimer("space"));
+    space = std::make_shared<const DistributedSpace>(*lattice, refinement, def.degree, finest);
+  }
   if (gmsh.refinements == 0) return nullptr;
+  const Teuchos::TimeMonitor timer(*setupTimer("levels"));
   return RefinedMeshGrid::hierarchy(lattice, refinement, *space, finest);
 }
 
@@ -111,7 +127,11 @@ std::shared_ptr<const GeometricGrid> partSpace(const Teuchos::ParameterList& pro
                                                const RCP<const Comm>& comm, AssembledProblem& result,
                                                std::shared_ptr<const DistributedSpace>& space) {
   const long long resolution = finestResolution(problem, part.mesh.dim, gmsh);
-  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(part), resolution);
+  std::shared_ptr<detail::CoarseMeshLattice> lattice;
+  {
+    const Teuchos::TimeMonitor timer(*setupTimer("lattice"));
+    lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(part), resolution);
+  }
   return latticeSpace(problem, gmsh, file, lattice, result, space);
 }
 
@@ -129,13 +149,16 @@ std::shared_ptr<const GeometricGrid> splitGmshSpace(const Teuchos::ParameterList
                      "run on " + std::to_string(numParts) + " ranks, or partition the mesh again into " +
                      std::to_string(ranks) + " (gmsh -part " + std::to_string(ranks) + " -part_split)");
   GmshMeshPart part;
-  detail::runOnEveryRank(*comm, [&] {
-    const std::string path = partFile(file, comm->getRank() + 1).string();
-    part = readGmshMeshPart(path);
-    if (part.part != comm->getRank())
-      throw InputError("Gmsh mesh file '" + path + "': it holds part " + std::to_string(part.part + 1) + ", not part " +
-                       std::to_string(comm->getRank() + 1));
-  });
+  {
+    const Teuchos::TimeMonitor timer(*setupTimer("mesh read"));
+    detail::runOnEveryRank(*comm, [&] {
+      const std::string path = partFile(file, comm->getRank() + 1).string();
+      part = readGmshMeshPart(path);
+      if (part.part != comm->getRank())
+        throw InputError("Gmsh mesh file '" + path + "': it holds part " + std::to_string(part.part + 1) + ", not part " +
+                         std::to_string(comm->getRank() + 1));
+    });
+  }
   return partSpace(problem, gmsh, file, std::move(part), comm, result, space);
 }
 
@@ -155,7 +178,10 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
     ProblemDefinition def = detail::definitionOf(problem, 0);
     checkMemoryFits(boxMeshUnknowns(def.dim, def.cells, def.degree), def.dim, def.degree, !storesNoStiffness(def),
                     def.gridRefinedAtNodes, *comm);
-    space = std::make_shared<const DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
+    {
+      const Teuchos::TimeMonitor timer(*setupTimer("space"));
+      space = std::make_shared<const DistributedSpace>(comm, BoxGrid(def.dim, def.cells, def.lengths), def.degree);
+    }
     result.definition = std::move(def);
     return nullptr;
   }
@@ -166,15 +192,25 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
     return splitGmshSpace(problem, gmsh, file, numParts, comm, result, space);
   if (gmsh.readByAllRanks && comm->getSize() > 1 && file.extension() == ".msh") {
     std::string unsupported;  // the file is then read whole by rank 0
-    GmshMeshPart part = detail::readMshInParallel(comm, file.string(), unsupported);
+    GmshMeshPart part;
+    {
+      const Teuchos::TimeMonitor timer(*setupTimer("mesh read"));
+      part = detail::readMshInParallel(comm, file.string(), unsupported);
+    }
     if (unsupported.empty()) return partSpace(problem, gmsh, file, std::move(part), comm, result, space);
     report.onNote("mesh file '" + file.string() + "' read whole by rank 0, not by all ranks: " + unsupported);
   }
-  detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
+  {
+    const Teuchos::TimeMonitor timer(*setupTimer("mesh read"));
+    detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
+  }
   int dim = mesh ? mesh->dim : 0;
   Teuchos::broadcast(*comm, 0, 1, &dim);
-  const auto lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh),
-                                                                   finestResolution(problem, dim, gmsh));
+  std::shared_ptr<detail::CoarseMeshLattice> lattice;
+  {
+    const Teuchos::TimeMonitor timer(*setupTimer("partition and lattice"));
+    lattice = std::make_shared<detail::CoarseMeshLattice>(comm, std::move(mesh), finestResolution(problem, dim, gmsh));
+  }
   return latticeSpace(problem, gmsh, file, lattice, result, space);
 }
 
