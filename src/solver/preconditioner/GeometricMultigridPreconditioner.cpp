@@ -276,7 +276,9 @@ Teuchos::ParameterList GeometricMultigridPreconditioner::defaultSmootherParamete
   // power iterations reach 98.4% and 98.6%; an underestimate makes the CG count per Newton
   // system grow with the mesh (doc/algorithms.md).
   p.set("chebyshev: eigenvalue max iterations", 15);
-  p.set("chebyshev: boost factor", 1.1);  // Ifpack2's, applied here to our estimate
+  // Ifpack2's: the smoothers (Ifpack2's and ChebyshevSmoother) take our estimate as the max
+  // eigenvalue and smooth on [estimate / ratio, boost * estimate].
+  p.set("chebyshev: boost factor", 1.1);
   return p;
 }
 
@@ -556,7 +558,7 @@ double GeometricMultigridPreconditioner::maxEigenvalue(Level& level, const RCP<c
   } else {
     level.eigenvalue.startFresh();
   }
-  return smoother_.get<double>("chebyshev: boost factor") * level.eigenvalue.estimate(*level.op, steps);
+  return level.eigenvalue.estimate(*level.op, steps);
 }
 
 void GeometricMultigridPreconditioner::setFineStiffnessOperator(const RCP<const Operator>& Q,
@@ -598,7 +600,7 @@ double GeometricMultigridPreconditioner::maxEigenvalueOfSum(Level& fine, const C
     fineOperatorEigenvalue_ = ofQ.estimate(*fineOperator_, smoother_.get<int>("chebyshev: eigenvalue max iterations"));
   }
   if (jacobiGershgorinBound(C) > fineOperatorEigenvalue_) return maxEigenvalue(fine, change);
-  return smoother_.get<double>("chebyshev: boost factor") * fineOperatorEigenvalue_;
+  return fineOperatorEigenvalue_;
 }
 
 void GeometricMultigridPreconditioner::buildFrom(std::size_t top, RCP<const CrsMatrix> change, bool reuse) {

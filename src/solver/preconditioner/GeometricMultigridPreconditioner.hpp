@@ -127,7 +127,8 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // the smoothers and operators above it.
   void buildFrom(std::size_t top, RCP<const CrsMatrix> change, bool reuse);
   // The smoother's max eigenvalue for the level's operator: the smoother list's, or the
-  // boosted Lanczos estimate, updated from the last Ritz vector after a `change`.
+  // Lanczos estimate, updated from the last Ritz vector after a `change` (the smoother
+  // applies the boost factor to it).
   double maxEigenvalue(Level& level, const RCP<const CrsMatrix>& change);
   // The fine smoother's max eigenvalue for H = Q + C (see setFineStiffnessOperator()).
   double maxEigenvalueOfSum(Level& fine, const CrsMatrix& C, const RCP<const CrsMatrix>& change);

@@ -20,6 +20,7 @@
 #include "solver/linear/KrylovSolver.hpp"
 #include "solver/linear/StiffnessParts.hpp"
 #include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
+#include "solver/preconditioner/JacobiEigenvalueEstimate.hpp"
 #include "solver/preconditioner/MueLuPreconditioner.hpp"
 #include "support/TestProblems.hpp"
 
@@ -370,8 +371,11 @@ TEST(GeometricMultigrid, UpdatedEigenvalueEstimatesKeepTheCgCounts) {
 
 // Given Q as an operator, the fine smoother of every H = Q + C takes Q's eigenvalue bound,
 // estimated once (C = A^T D A is diagonal here, nodal constraints), instead of Lanczos steps
-// on H: CG needs no more iterations than with H's own fresh estimate at each build, along
-// the weights of UpdatedEigenvalueEstimatesKeepTheCgCounts.
+// on H: CG needs at most one iteration more than with H's own fresh estimate at each build,
+// along the weights of UpdatedEigenvalueEstimatesKeepTheCgCounts. The bound is above H's
+// largest eigenvalue, by 12% in 3D once the contact face (an eighth of this box's nodes)
+// carries large weights, so the bounded smoother damps a slightly narrower range: 11 against
+// 10 iterations at one or two of the 13 steps in 3D, depending on the right-hand side.
 TEST(GeometricMultigrid, StiffnessEigenvalueBoundsEverySum) {
   for (int dim : {2, 3}) {
     ContactBox box(dim, dim == 2 ? 32 : 8);
@@ -397,8 +401,62 @@ TEST(GeometricMultigrid, StiffnessEigenvalueBoundsEverySum) {
         ASSERT_TRUE(r.converged) << label;
         iterations[k] = r.iterations;
       }
-      EXPECT_LE(iterations[0], iterations[1]) << label << ": bounded, fresh";
+      EXPECT_LE(iterations[0], iterations[1] + 1) << label << ": bounded, fresh";
     }
+  }
+}
+
+// The smoothers apply the boost factor once, as Ifpack2 does to a max eigenvalue it is given:
+// smoothing with the Lanczos estimate lambda of D^-1 Q (15 steps, the default) is smoothing
+// with "chebyshev: max eigenvalue" = lambda, on the interval [lambda / 7, 1.1 lambda]. Two grids
+// (the coarse one factored), so that only the fine level is smoothed: assembled (Ifpack2's
+// Chebyshev) and as the operator Q + C with C = 0 (ChebyshevSmoother, whose estimate is Q's).
+TEST(GeometricMultigrid, SmoothersBoostTheEstimateOnce) {
+  const AssembledProblem problem = box(2, 16, 1);
+  const ContactQP& qp = problem.qp;
+  const MultigridInput& mg = problem.multigrid;
+  const RCP<CrsMatrix> Q = Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(qp, mg));
+  Vector diagonalOfQ(Q->getRangeMap());
+  Q->getLocalDiagCopy(diagonalOfQ);
+  JacobiEigenvalueEstimate estimate;
+  estimate.setMatrix(*Q);
+  const double lambda = estimate.estimate(*Q, 15);
+  const auto twoGrid = [&](const Teuchos::ParameterList& smoother) {
+    return GeometricMultigridPreconditioner(*mg.grid, Q->getRowMap(), prescribedRows(*Q), *mg.coordinates,
+                                            mg.blockSize, 50, 162, smoother, Teuchos::ParameterList(), 3);
+  };
+  const Teuchos::ParameterList defaults;
+  Teuchos::ParameterList given, overBoosted;
+  given.set("chebyshev: max eigenvalue", lambda);
+  overBoosted.set("chebyshev: max eigenvalue", 1.1 * lambda);
+  auto C = rcp(new CrsMatrix(Q->getCrsGraph()));  // zero on Q's graph
+  C->fillComplete(Q->getDomainMap(), Q->getRangeMap());
+  Vector x(Q->getDomainMap());
+  x.randomize();
+  for (const bool asOperator : {false, true}) {
+    const std::string label = asOperator ? "operator" : "assembled";
+    // The cycle applied to x with each smoother list: the defaults, lambda given, 1.1 lambda given.
+    std::vector<Vector> applied;
+    for (const Teuchos::ParameterList& list : {defaults, given, overBoosted}) {
+      GeometricMultigridPreconditioner m = twoGrid(list);
+      ASSERT_EQ(m.levelSizes(), (std::vector<long long>{578, 162})) << label;
+      if (asOperator) {
+        m.setFineStiffness(Q);
+        m.setFineStiffnessOperator(qp.Q, diagonalOfQ);
+        m.computeForSum(qp.Q, diagonalOfQ, C);
+      } else {
+        m.compute(Q);
+      }
+      applied.emplace_back(x.getMap());
+      m.getOperator()->apply(x, applied.back());
+    }
+    const auto distance = [](const Vector& a, const Vector& b) {
+      Vector d(a, Teuchos::Copy);
+      d.update(-1.0, b, 1.0);
+      return d.norm2() / b.norm2();
+    };
+    EXPECT_LT(distance(applied[0], applied[1]), 1e-12) << label;
+    EXPECT_GT(distance(applied[2], applied[1]), 1e-6) << label << ": the test cannot tell one boost from two";
   }
 }
 
