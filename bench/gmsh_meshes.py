@@ -22,7 +22,7 @@ rank's), and the contact solve over the linear one.
 
 Timings on a shared machine swing between periods, so every run is made --repeat times, in
 rounds over all meshes of a case and rank count (the box and the Gmsh meshes alternate), and
-the fastest (by wall time) is kept whole; the record lists the wall times of all of them.
+the fastest (by wall time) is kept whole; the record lists the wall and phase times of all of them.
 
     /usr/bin/python3 bench/gmsh_meshes.py [--ranks 1,2] [--cases 3d-p1,3d-p2,2d-p1,3d-p1-large]
                                           [--meshes box,msh,...] [--repeat 2] [--name gmsh-meshes]
@@ -140,10 +140,14 @@ def run(case, mesh, ranks, linear, workdir):
             "setup_mib_max_rank": max(s["setup_peak_rss_mib"])}
 
 
+PHASES = ("setup_seconds", "assembly_seconds", "solve_seconds")
+
+
 def fastest(repeats, by="wall_seconds"):
-    """The fastest of the repeats of one run (by `by`), with the times `by` of all."""
+    """The fastest of the repeats of one run (by `by`), with the times `by` and the phases' times of all."""
     best = dict(min(repeats, key=lambda r: r[by]))
-    best[by + "_repeats"] = [r[by] for r in repeats]
+    for key in (by, *PHASES):
+        best[key + "_repeats"] = [r[key] for r in repeats]
     return best
 
 
