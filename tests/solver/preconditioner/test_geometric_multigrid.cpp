@@ -418,24 +418,24 @@ TEST(GeometricMultigrid, SmoothersBoostTheEstimateOnce) {
   const RCP<CrsMatrix> Q = Teuchos::rcp_const_cast<CrsMatrix>(assembledStiffness(qp, mg));
   Vector diagonalOfQ(Q->getRangeMap());
   Q->getLocalDiagCopy(diagonalOfQ);
+  const Teuchos::ParameterList defaults = GeometricMultigridPreconditioner::defaultSmootherParameters();
   JacobiEigenvalueEstimate estimate;
   estimate.setMatrix(*Q);
-  const double lambda = estimate.estimate(*Q, 15);
+  const double lambda = estimate.estimate(*Q, defaults.get<int>("chebyshev: eigenvalue max iterations"));
   const auto twoGrid = [&](const Teuchos::ParameterList& smoother) {
     return GeometricMultigridPreconditioner(*mg.grid, Q->getRowMap(), prescribedRows(*Q), *mg.coordinates,
                                             mg.blockSize, 50, 162, smoother, Teuchos::ParameterList(), 3);
   };
-  const Teuchos::ParameterList defaults;
   Teuchos::ParameterList given, overBoosted;
   given.set("chebyshev: max eigenvalue", lambda);
-  overBoosted.set("chebyshev: max eigenvalue", 1.1 * lambda);
+  overBoosted.set("chebyshev: max eigenvalue", defaults.get<double>("chebyshev: boost factor") * lambda);
   auto C = rcp(new CrsMatrix(Q->getCrsGraph()));  // zero on Q's graph
   C->fillComplete(Q->getDomainMap(), Q->getRangeMap());
   Vector x(Q->getDomainMap());
   x.randomize();
   for (const bool asOperator : {false, true}) {
     const std::string label = asOperator ? "operator" : "assembled";
-    // The cycle applied to x with each smoother list: the defaults, lambda given, 1.1 lambda given.
+    // The cycle applied to x with each smoother list: the defaults, lambda given, boost x lambda given.
     std::vector<Vector> applied;
     for (const Teuchos::ParameterList& list : {defaults, given, overBoosted}) {
       GeometricMultigridPreconditioner m = twoGrid(list);
