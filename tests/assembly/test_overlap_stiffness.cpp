@@ -127,6 +127,15 @@ TEST_P(OverlapStiffnessTest, RefusesAnEntryOutsideTheGraph) {
   ASSERT_GT(std::sqrt(farthest), 0.6);  // a box cell is under 0.45 across
   EXPECT_NO_THROW(K.add(K.row(dim * first), K.column(dim * first + 1), 1.0));
   EXPECT_THROW(K.add(K.row(dim * first), K.column(dim * far), 1.0), Error);
+
+  // The same through an element matrix: cell 0 with its last node's columns those of the far node.
+  const int npc = ds.space().nodesPerCell();
+  std::vector<LocalOrdinal> rows, cols;
+  cellDofs(ds, K, 0, rows, cols);
+  const std::vector<double> ones(dim * npc * dim * npc, 1.0);
+  EXPECT_NO_THROW(K.addElementMatrix(dim, npc, rows.data(), cols.data(), ones.data()));
+  for (int c = 0; c < dim; ++c) cols[dim * (npc - 1) + c] = K.column(dim * far + c);
+  EXPECT_THROW(K.addElementMatrix(dim, npc, rows.data(), cols.data(), ones.data()), Error);
 }
 
 INSTANTIATE_TEST_SUITE_P(Spaces, OverlapStiffnessTest,
