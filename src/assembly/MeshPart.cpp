@@ -6,10 +6,9 @@
 #include <type_traits>
 
 #include <Teuchos_CommHelpers.hpp>
-#include <Tpetra_Import.hpp>
-#include <Tpetra_Map.hpp>
-#include <Tpetra_Vector.hpp>
 
+#include "core/Collectives.hpp"
+#include "core/NeighbourExchange.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini::detail {
@@ -98,31 +97,48 @@ void forEachArray(Part& part, Visit&& visit) {
 
 }  // namespace
 
+// Each rank asks the owners of its other nodes for their ids, by key: only the shared nodes'
+// keys travel, where maps over all keys would need Tpetra's distributed directory, an
+// all-to-all exchange of every key.
 std::vector<GlobalOrdinal> ownerOrderedIds(const RCP<const Comm>& comm, const std::vector<GlobalOrdinal>& keys,
                                            const std::vector<int>& owners, long long& numGlobalNodes,
                                            const std::vector<long long>& order) {
   const int rank = comm->getRank();
-  std::vector<GlobalOrdinal> ownedKeys;
+  std::vector<GlobalOrdinal> result(keys.size(), -1);
+  long long numOwned = 0;
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const std::size_t n = order.empty() ? i : static_cast<std::size_t>(order[i]);
-    if (owners[n] == rank) ownedKeys.push_back(keys[n]);
+    if (owners[n] == rank) result[n] = numOwned++;
   }
-  const long long numOwned = static_cast<long long>(ownedKeys.size());
   long long upTo = 0;
   Teuchos::scan(*comm, Teuchos::REDUCE_SUM, 1, &numOwned, &upTo);
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &numOwned, &numGlobalNodes);
-  const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-  auto ownedMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ownedKeys), 0, comm));
-  auto allMap = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(keys), 0, comm));
-  Vector ownedIds(ownedMap), ids(allMap);  // ids below 2^53 are exact in a double
-  {
-    auto data = ownedIds.getDataNonConst();
-    for (long long i = 0; i < numOwned; ++i) data[i] = static_cast<double>(upTo - numOwned + i);
+  std::vector<std::pair<GlobalOrdinal, GlobalOrdinal>> idOfOwnedKey;  // (key, id), by key
+  idOfOwnedKey.reserve(numOwned);
+  std::vector<std::vector<long long>> asked(comm->getSize());
+  for (std::size_t n = 0; n < keys.size(); ++n) {
+    if (owners[n] == rank) {
+      result[n] += upTo - numOwned;
+      idOfOwnedKey.emplace_back(keys[n], result[n]);
+    } else {
+      asked[owners[n]].push_back(keys[n]);
+    }
   }
-  ids.doImport(ownedIds, Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>(ownedMap, allMap), Tpetra::INSERT);
-  auto data = ids.getData();
-  std::vector<GlobalOrdinal> result(keys.size());
-  for (std::size_t n = 0; n < keys.size(); ++n) result[n] = static_cast<GlobalOrdinal>(data[n]);
+  std::sort(idOfOwnedKey.begin(), idOfOwnedKey.end());
+
+  std::vector<std::vector<long long>> answers = exchangeWithRanks(*comm, asked);
+  bool known = true;
+  for (std::vector<long long>& block : answers)
+    for (long long& key : block) {
+      const auto it = std::lower_bound(idOfOwnedKey.begin(), idOfOwnedKey.end(), std::make_pair(key, GlobalOrdinal(-1)));
+      known = known && it != idOfOwnedKey.end() && it->first == key;
+      key = known ? it->second : -1;
+    }
+  if (!onEveryRank(*comm, known)) throw Error("mesh part: a rank asked for a node its owner does not hold");
+  answers = exchangeWithRanks(*comm, answers);
+  std::vector<std::size_t> next(comm->getSize(), 0);
+  for (std::size_t n = 0; n < keys.size(); ++n)
+    if (owners[n] != rank) result[n] = answers[owners[n]][next[owners[n]]++];
   return result;
 }
 

@@ -45,8 +45,9 @@ struct MeshPart {
 // The renumbered ids of a part's nodes, each named by a global `key` (the same on every rank
 // that holds the node) and given its owner: owners number their nodes in the order of
 // `order` (a permutation of the part's nodes; empty: the part's order), after those of the
-// ranks before them, and the other ranks learn the ids through a Tpetra Import over the
-// keys. Returns the ids; `numGlobalNodes` is the sum of the owned counts. Collective.
+// ranks before them, and the other ranks ask the owners for the ids of their keys (Error if
+// an owner does not hold one). Returns the ids; `numGlobalNodes` is the sum of the owned
+// counts. Collective.
 std::vector<GlobalOrdinal> ownerOrderedIds(const RCP<const Comm>& comm, const std::vector<GlobalOrdinal>& keys,
                                            const std::vector<int>& owners, long long& numGlobalNodes,
                                            const std::vector<long long>& order = {});
