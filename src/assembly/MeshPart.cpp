@@ -131,8 +131,9 @@ std::vector<GlobalOrdinal> ownerOrderedIds(const RCP<const Comm>& comm, const st
   for (std::vector<long long>& block : answers)
     for (long long& key : block) {
       const auto it = std::lower_bound(idOfOwnedKey.begin(), idOfOwnedKey.end(), std::make_pair(key, GlobalOrdinal(-1)));
-      known = known && it != idOfOwnedKey.end() && it->first == key;
-      key = known ? it->second : -1;
+      const bool found = it != idOfOwnedKey.end() && it->first == key;
+      known = known && found;
+      key = found ? it->second : -1;
     }
   if (!onEveryRank(*comm, known)) throw Error("mesh part: a rank asked for a node its owner does not hold");
   answers = exchangeWithRanks(*comm, answers);

@@ -42,12 +42,11 @@ TEST(MeshPart, OwnersNumberTheirNodesInTheGivenOrder) {
 
   const long long ownedBefore = 10LL * rank;  // every rank but the last owns 10 nodes
   EXPECT_EQ(numGlobal, 10LL * size + 1);
-  // Owned nodes, numbered backwards from the last owned one: key 100 r + k has id before + 9 - k
-  // (the last rank owns its 11th node too, numbered first).
+  // Owned nodes, numbered backwards from the last owned one: node k has id before + owned - 1 - k
+  // (the last rank owns its 11th node too).
   const int owned = rank + 1 < size ? 10 : 11;
   for (int k = 0; k < owned; ++k) EXPECT_EQ(ids[k], ownedBefore + owned - 1 - k) << "key " << part.keys[k];
-  // The shared node: the next rank owns it and numbers it first among its own but one (its key
-  // 100 (r + 1) is its node 0, numbered after its nodes 1 .. 9 in reverse order).
+  // The shared node is the next rank's node 0, the last one it numbers in reverse order.
   if (rank + 1 < size) {
     const int nextOwned = rank + 2 < size ? 10 : 11;
     EXPECT_EQ(ids[10], ownedBefore + 10 + nextOwned - 1);
