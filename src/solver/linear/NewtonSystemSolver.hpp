@@ -94,6 +94,8 @@ class NewtonSystemSolver {
   double rebuildTolerance_ = 0.0;
   double weightCap_ = 0.0;  // "amg of H: weight cap" with a contact correction, else 0 (none)
   RCP<Vector> constraintStiffness_, builtWeights_;  // q_i, and w_i of the last AMG build
+  RCP<Vector> algebraicWeights_;  // w_i when the algebraic levels below the grids were set up
+  double algebraicRebuildTolerance_ = 0.0;
   RCP<CrsMatrix> assembledH_;                       // the matrix of the last AMG build
   // On the geometric levels H is not assembled: the hierarchy gets Q + A^T D' A as an
   // operator, its diagonal and A^T D' A (GeometricMultigridPreconditioner::computeForSum).
@@ -105,6 +107,9 @@ class NewtonSystemSolver {
 
   // The geometric hierarchy for Q + A^T D' A, D' = `filtered`, without assembling it.
   void buildGeometricForSum(const Vector& filtered);
+  // Has the geometric hierarchy set up its algebraic levels anew at its next build when the
+  // relative weights moved by more than algebraicRebuildTolerance_ since they were set up.
+  void refreshAlgebraicLevelsIfMoved(const RCP<Vector>& weights);
   // amg_ on the geometric levels of multigrid.grid (Preconditioner/hierarchy geometric or auto).
   void makeGeometric(const ContactQP& qp, const MultigridInput& multigrid, const Teuchos::ParameterList& prec,
                      const StiffnessParts& stiffness);

@@ -334,6 +334,7 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
     levels_.push_back(coarse);
   }
 
+  geometricLevels_ = static_cast<int>(levels_.size()) - 1;
   const Level& coarsest = *levels_.back();
   directCoarsest_ = static_cast<long long>(coarsest.dofMap->getGlobalNumElements()) <= directSolveSize;
   if (directCoarsest_) {
@@ -361,6 +362,11 @@ GeometricMultigridPreconditioner::GeometricMultigridPreconditioner(
   coarse_ = std::make_unique<MueLuPreconditioner>(muelu, blockSize, nullspace, coarseCoordinates);
 }
 
+void GeometricMultigridPreconditioner::keepAlgebraicLevels() {
+  if (directCoarsest_ || !cycle_.is_null()) return;
+  algebraicBelow_.reset(static_cast<MueLuPreconditioner*>(coarse_.release()));
+}
+
 GeometricMultigridPreconditioner::~GeometricMultigridPreconditioner() = default;
 
 std::vector<long long> GeometricMultigridPreconditioner::levelSizes() const {
@@ -370,7 +376,7 @@ std::vector<long long> GeometricMultigridPreconditioner::levelSizes() const {
 }
 
 RCP<const CrsMatrix> GeometricMultigridPreconditioner::prolongator(int level) const {
-  if (level < 0 || level >= geometricLevels())
+  if (level < 0 || level + 1 >= static_cast<int>(levels_.size()))
     throw Error("GeometricMultigridPreconditioner::prolongator: no level " + std::to_string(level));
   return levels_[level]->P;
 }
@@ -604,62 +610,98 @@ double GeometricMultigridPreconditioner::maxEigenvalueOfSum(Level& fine, const C
 }
 
 void GeometricMultigridPreconditioner::buildFrom(std::size_t top, RCP<const CrsMatrix> change, bool reuse) {
-  std::vector<RCP<const Operator>> operators, smoothers;
-  std::vector<RCP<CrsMatrix>> prolongators, restrictions;
-  for (std::size_t l = 0; l < top; ++l) {
-    operators.push_back(levels_[l]->op);
-    smoothers.push_back(levels_[l]->smoother);
-    prolongators.push_back(levels_[l]->P);
-    restrictions.push_back(levels_[l]->R);
-  }
-  operators.push_back(levels_[top]->op = levels_[top]->A);
-  for (std::size_t l = top; l + 1 < levels_.size(); ++l) {
-    Level& level = *levels_[l];
-    RCP<CrsMatrix> coarseA;
-    const RCP<const CrsMatrix> levelChange = change;
-    {
-      Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: Galerkin products"));
-      if (!change.is_null() && !change->getRowMap()->isSameAs(*level.P->getRowMap())) change = Teuchos::null;
-      if (!change.is_null()) {
-        const RCP<CrsMatrix> coarseChange = galerkinProductOfChange(level.P, change);
-        change = addInPattern(*levels_[l + 1]->A, *coarseChange) ? coarseChange : Teuchos::null;
-        if (!change.is_null()) coarseA = levels_[l + 1]->A;
-      }
-      if (coarseA.is_null()) {
-        coarseA = rcp(new CrsMatrix(level.P->getDomainMap(), 0));
-        Tpetra::TripleMatrixMultiply::MultiplyRAP(*level.P, true, *level.A, false, *level.P, false, *coarseA);
-      }
-    }
-    levels_[l + 1]->A = coarseA;
-    levels_[l + 1]->op = coarseA;
-    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: smoothers"));
-    const auto chebyshev = rcp(new Chebyshev(level.A));
-    Teuchos::ParameterList smoother = smoother_;
-    level.eigenvalue.setMatrix(*level.A);
-    smoother.set("chebyshev: max eigenvalue", maxEigenvalue(level, levelChange));
-    // Each build makes a new smoother, whose matrix never changes. Told so, Ifpack2 13.2 skips
-    // its own power method, which it otherwise runs in every compute() even when given the
-    // max eigenvalue, and then ignores: a third of the setup time at 2D nx = 800. Given the
-    // inverse diagonal, it does not extract the diagonal a second time; it reads that vector
-    // by reference, which the level's next setMatrix() overwrites, so this smoother is valid
-    // until the next build (as the cycle holding it is).
-    if (!smoother.isParameter("chebyshev: assume matrix does not change"))
-      smoother.set("chebyshev: assume matrix does not change", true);
-    smoother.set("chebyshev: operator inv diagonal", level.eigenvalue.inverseDiagonal());
-    chebyshev->setParameters(smoother);
-    chebyshev->initialize();
-    chebyshev->compute();
-    level.smoother = chebyshev;
-    operators.push_back(coarseA);
-    prolongators.push_back(level.P);
-    restrictions.push_back(level.R);
-    smoothers.push_back(level.smoother);
+  levels_[top]->op = levels_[top]->A;
+  for (std::size_t l = top; l + 1 < levels_.size(); ++l) change = buildLevel(l, change);
+  if (algebraicBelow_ && algebraicLevels_ == 0) {
+    const std::size_t last = levels_.size() - 1;
+    appendAlgebraicLevels();
+    for (std::size_t l = last; l + 1 < levels_.size(); ++l) buildSmoother(l, Teuchos::null);
   }
   {
     Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: coarsest level"));
     coarse_->compute(levels_.back()->A, reuse && !cycle_.is_null());
   }
+  std::vector<RCP<const Operator>> operators, smoothers;
+  std::vector<RCP<CrsMatrix>> prolongators, restrictions;
+  for (std::size_t l = 0; l < levels_.size(); ++l) {
+    operators.push_back(levels_[l]->op);
+    if (l + 1 == levels_.size()) break;
+    smoothers.push_back(levels_[l]->smoother);
+    prolongators.push_back(levels_[l]->P);
+    restrictions.push_back(levels_[l]->R);
+  }
   cycle_ = rcp(new VCycle(operators, smoothers, prolongators, restrictions, coarse_->getOperator()));
+}
+
+RCP<const CrsMatrix> GeometricMultigridPreconditioner::buildLevel(std::size_t l, RCP<const CrsMatrix> change) {
+  Level& level = *levels_[l];
+  RCP<CrsMatrix> coarseA;
+  const RCP<const CrsMatrix> levelChange = change;
+  {
+    Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: Galerkin products"));
+    if (!change.is_null() && !change->getRowMap()->isSameAs(*level.P->getRowMap())) change = Teuchos::null;
+    if (!change.is_null()) {
+      const RCP<CrsMatrix> coarseChange = galerkinProductOfChange(level.P, change);
+      change = addInPattern(*levels_[l + 1]->A, *coarseChange) ? coarseChange : Teuchos::null;
+      if (!change.is_null()) coarseA = levels_[l + 1]->A;
+    }
+    if (coarseA.is_null()) {
+      coarseA = rcp(new CrsMatrix(level.P->getDomainMap(), 0));
+      Tpetra::TripleMatrixMultiply::MultiplyRAP(*level.P, true, *level.A, false, *level.P, false, *coarseA);
+    }
+  }
+  levels_[l + 1]->A = coarseA;
+  levels_[l + 1]->op = coarseA;
+  buildSmoother(l, levelChange);
+  return change;
+}
+
+void GeometricMultigridPreconditioner::buildSmoother(std::size_t l, const RCP<const CrsMatrix>& levelChange) {
+  Level& level = *levels_[l];
+  Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: smoothers"));
+  const auto chebyshev = rcp(new Chebyshev(level.A));
+  Teuchos::ParameterList smoother = smoother_;
+  level.eigenvalue.setMatrix(*level.A);
+  smoother.set("chebyshev: max eigenvalue", maxEigenvalue(level, levelChange));
+  // Each build makes a new smoother, whose matrix never changes. Told so, Ifpack2 13.2 skips
+  // its own power method, which it otherwise runs in every compute() even when given the
+  // max eigenvalue, and then ignores: a third of the setup time at 2D nx = 800. Given the
+  // inverse diagonal, it does not extract the diagonal a second time; it reads that vector
+  // by reference, which the level's next setMatrix() overwrites, so this smoother is valid
+  // until the next build (as the cycle holding it is).
+  if (!smoother.isParameter("chebyshev: assume matrix does not change"))
+    smoother.set("chebyshev: assume matrix does not change", true);
+  smoother.set("chebyshev: operator inv diagonal", level.eigenvalue.inverseDiagonal());
+  chebyshev->setParameters(smoother);
+  chebyshev->initialize();
+  chebyshev->compute();
+  level.smoother = chebyshev;
+}
+
+void GeometricMultigridPreconditioner::appendAlgebraicLevels() {
+  Teuchos::TimeMonitor t(*Teuchos::TimeMonitor::getNewTimer("Signorini: solve: AMG setup: algebraic levels"));
+  algebraicBelow_->compute(levels_.back()->A);
+  for (const MueLuPreconditioner::CoarseLevel& level : algebraicBelow_->coarseLevels()) {
+    levels_.back()->P = level.P;
+    Tpetra::RowMatrixTransposer<Scalar, LocalOrdinal, GlobalOrdinal, Node> transposer(level.P);
+    levels_.back()->R = transposer.createTranspose();
+    auto coarse = std::make_shared<Level>();
+    coarse->dofMap = level.P->getDomainMap();
+    coarse->A = level.A;
+    coarse->op = level.A;
+    levels_.push_back(coarse);
+  }
+  algebraicLevels_ = static_cast<int>(levels_.size()) - 1 - geometricLevels_;
+  coarse_ = std::make_unique<GatheredDirectSolver>();
+}
+
+void GeometricMultigridPreconditioner::refreshAlgebraicLevels() {
+  if (algebraicLevels_ == 0) return;
+  levels_.resize(geometricLevels_ + 1);
+  Level& coarsest = *levels_.back();
+  coarsest.P = coarsest.R = Teuchos::null;
+  coarsest.smoother = Teuchos::null;
+  algebraicLevels_ = 0;
 }
 
 RCP<const CrsMatrix> GeometricMultigridPreconditioner::levelMatrix(int level) const {

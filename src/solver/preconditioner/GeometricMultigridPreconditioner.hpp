@@ -31,6 +31,7 @@
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/core/GeometricGrid.hpp"
 #include "solver/preconditioner/MultilevelPreconditioner.hpp"
+#include "solver/preconditioner/MueLuPreconditioner.hpp"
 
 namespace signorini {
 
@@ -87,9 +88,24 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   void computeForSum(const RCP<const Operator>& H, const Vector& diagonal, const RCP<const CrsMatrix>& C,
                      bool reuse = false);
   RCP<Operator> getOperator() const override;
+  // Below a coarsest grid too large to factor, MueLu is by default the coarse solver, its
+  // hierarchy set up again at every build. After keepAlgebraicLevels() (before the first
+  // build) MueLu's levels join the cycle instead: its hierarchy of the coarsest grid's matrix
+  // is set up at the first build, its prolongators are kept, their matrices updated with the
+  // Galerkin products of what changed, as the grids' are, each with a Chebyshev smoother,
+  // and its coarsest level is solved exactly. refreshAlgebraicLevels() makes the next build
+  // set them up anew for its matrix. Why: on a P_k mesh's own P1 grid, MueLu's setup costs
+  // as much as the rest of a build many times over, while few contact rows change.
+  void keepAlgebraicLevels();
+  void refreshAlgebraicLevels();
+  bool keepsAlgebraicLevels() const { return static_cast<bool>(algebraicBelow_); }
+  // Whether the fine space is P1 on the grid's vertices (else P_k goes to P1 first).
+  bool fineIsP1() const { return isP1_; }
 
   // Grids below the fine level (0: MueLu alone), and their global unknowns, finest first.
-  int geometricLevels() const { return static_cast<int>(levels_.size()) - 1; }
+  int geometricLevels() const { return geometricLevels_; }
+  // Levels below the coarsest grid made of MueLu's prolongators (after the first build).
+  int algebraicLevels() const { return algebraicLevels_; }
   std::vector<long long> levelSizes() const;
   // Whether the coarsest level is solved exactly (else by MueLu).
   bool directCoarsestSolve() const { return directCoarsest_; }
@@ -109,6 +125,9 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   int eigenvalueUpdateSteps_;
   bool directCoarsest_ = false;
   std::unique_ptr<MultilevelPreconditioner> coarse_;
+  // MueLu, once, for the levels below the coarsest grid (appendAlgebraicLevels()).
+  std::unique_ptr<MueLuPreconditioner> algebraicBelow_;
+  int geometricLevels_ = 0, algebraicLevels_ = 0;
   RCP<Operator> cycle_;
   bool isP1_ = false;  // the fine space is P1 on the grid's vertices
   RCP<const CrsMatrix> fineStiffness_, firstCoarseStiffness_;  // see setFineStiffness()
@@ -126,6 +145,13 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // The same below level `top`, whose matrix is set (`change`: what changed in it), keeping
   // the smoothers and operators above it.
   void buildFrom(std::size_t top, RCP<const CrsMatrix> change, bool reuse);
+  // Level l's smoother and level l + 1's matrix, from `change` in level l's matrix (null:
+  // the whole product); returns the change in level l + 1's (null if it was rebuilt whole).
+  RCP<const CrsMatrix> buildLevel(std::size_t l, RCP<const CrsMatrix> change);
+  // Level l's smoother for its matrix, which had `levelChange` added (null: new).
+  void buildSmoother(std::size_t l, const RCP<const CrsMatrix>& levelChange);
+  // Below the coarsest grid, levels with the prolongators of MueLu's hierarchy of its matrix.
+  void appendAlgebraicLevels();
   // The smoother's max eigenvalue for the level's operator: the smoother list's, or the
   // Lanczos estimate, updated from the last Ritz vector after a `change` (the smoother
   // applies the boost factor to it).

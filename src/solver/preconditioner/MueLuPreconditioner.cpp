@@ -7,6 +7,7 @@
 #include <MueLu_CreateTpetraPreconditioner.hpp>
 #include <MueLu_Hierarchy.hpp>
 #include <MueLu_ParameterListInterpreter.hpp>
+#include <MueLu_Utilities.hpp>
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_MultiVector.hpp>
@@ -147,6 +148,22 @@ void MueLuPreconditioner::compute(const RCP<CrsMatrix>& A, bool reuse) {
   } catch (const Teuchos::Exceptions::InvalidParameter& e) {
     throw InputError(std::string("MueLu rejected its parameter list: ") + e.what());
   }
+}
+
+std::vector<MueLuPreconditioner::CoarseLevel> MueLuPreconditioner::coarseLevels() const {
+  using XpetraMatrix = Xpetra::Matrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
+  using Utilities = MueLu::Utilities<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
+  if (op_.is_null()) throw Error("MueLuPreconditioner::coarseLevels called before compute()");
+  const RCP<Hierarchy> hierarchy = Teuchos::rcp_dynamic_cast<MueLuOperator>(op_, true)->GetHierarchy();
+  std::vector<CoarseLevel> levels;
+  for (int l = 1; l < hierarchy->GetNumLevels(); ++l) {
+    const RCP<MueLu::Level> level = hierarchy->GetLevel(l);
+    if (!level->IsAvailable("P") || !level->IsAvailable("A"))
+      throw Error("MueLuPreconditioner::coarseLevels: MueLu kept no P or A on level " + std::to_string(l));
+    levels.push_back({Utilities::Op2NonConstTpetraCrs(level->Get<RCP<XpetraMatrix>>("P")),
+                      Utilities::Op2NonConstTpetraCrs(level->Get<RCP<XpetraMatrix>>("A"))});
+  }
+  return levels;
 }
 
 RCP<Operator> MueLuPreconditioner::getOperator() const {

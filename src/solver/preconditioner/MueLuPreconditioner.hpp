@@ -1,6 +1,8 @@
 #pragma once
 // Algebraic multigrid for elasticity-type matrices through MueLu, built from a "MueLu"
 // parameter list that is passed through unchanged, with the rigid body modes as nullspace.
+#include <vector>
+
 #include <MueLu_HierarchyManager_fwd.hpp>
 #include <Teuchos_ParameterList.hpp>
 
@@ -41,6 +43,13 @@ class MueLuPreconditioner : public MultilevelPreconditioner {
 
   RCP<Operator> getOperator() const override;
   const Teuchos::ParameterList& parameters() const { return params_; }
+  // The coarse levels of the last hierarchy built, finest first: each one's matrix and the
+  // prolongator from it to the level above (the first: to the matrix given to compute()).
+  // Empty for a hierarchy of one level.
+  struct CoarseLevel {
+    RCP<CrsMatrix> P, A;
+  };
+  std::vector<CoarseLevel> coarseLevels() const;
 
  private:
   Teuchos::ParameterList params_;

@@ -8,6 +8,7 @@
 #include <string>
 
 #include <TpetraExt_MatrixMatrix.hpp>
+#include <TpetraExt_TripleMatrixMultiply.hpp>
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
@@ -294,6 +295,56 @@ TEST(GeometricMultigrid, UpdatedCoarseMatricesEqualFreshProducts) {
     // A fine matrix on another graph is not an update: the levels are computed afresh.
     updated.compute(Tpetra::MatrixMatrix::add(1.0, false, *H2, 0.0, false, *assembledStiffness(qp, mg)));
     EXPECT_NE(updated.levelMatrix(1).get(), firstCoarse.get()) << dim << "D";
+  }
+}
+
+// Below a coarsest grid too large to factor, MueLu's levels kept in the cycle
+// (keepAlgebraicLevels): set up at the first build, then updated in place with the
+// Galerkin products of the changed rows, so that every level's matrix is P^T A P of the one
+// above for the new H; the cycle stays symmetric and CG with it converges on H. After
+// refreshAlgebraicLevels() the next build sets them up anew.
+TEST(GeometricMultigrid, KeptAlgebraicLevelsFollowTheChangedRows) {
+  for (int dim : {2, 3}) {
+    const std::string label = std::to_string(dim) + "D";
+    // Coarsest grids of 162 (2D) and 375 (3D) unknowns, which MueLu coarsens below its 100.
+    ContactBox box(dim, dim == 2 ? 32 : 8);
+    GeometricMultigridPreconditioner gmg = multigrid(box.problem.qp, box.problem.multigrid, dim == 2 ? 150 : 300, 3, 0);
+    ASSERT_FALSE(gmg.directCoarsestSolve()) << label;
+    gmg.keepAlgebraicLevels();
+    ASSERT_TRUE(gmg.keepsAlgebraicLevels());
+    gmg.compute(box.hessian(0));
+    const int grids = gmg.geometricLevels(), algebraic = gmg.algebraicLevels();
+    ASSERT_GE(algebraic, 1) << label;
+    const RCP<const CrsMatrix> firstAlgebraic = gmg.levelMatrix(grids + 1);
+    const RCP<CrsMatrix> H = box.hessian(4);
+    gmg.compute(H);
+    EXPECT_EQ(gmg.algebraicLevels(), algebraic) << label;
+    EXPECT_EQ(gmg.levelMatrix(grids + 1).get(), firstAlgebraic.get()) << label << ": not updated in place";
+    for (int l = grids; l < grids + algebraic; ++l) {
+      CrsMatrix product(gmg.prolongator(l)->getDomainMap(), 0);
+      Tpetra::TripleMatrixMultiply::MultiplyRAP(*gmg.prolongator(l), true, *gmg.levelMatrix(l), false,
+                                                *gmg.prolongator(l), false, product);
+      Vector x(product.getDomainMap()), a(x.getMap()), b(x.getMap());
+      x.randomize();
+      gmg.levelMatrix(l + 1)->apply(x, a);
+      product.apply(x, b);
+      a.update(-1.0, b, 1.0);
+      EXPECT_LT(a.norm2(), 1e-12 * b.norm2()) << label << ", level " << l + 1;
+    }
+    Vector x(H->getDomainMap()), y(x.getMap()), Mx(x.getMap()), My(x.getMap());
+    x.randomize();
+    y.randomize();
+    gmg.getOperator()->apply(x, Mx);
+    gmg.getOperator()->apply(y, My);
+    EXPECT_NEAR(y.dot(Mx), x.dot(My), 1e-11 * std::abs(y.dot(Mx))) << label;
+    auto b = rcp(new Vector(H->getRangeMap())), v = rcp(new Vector(H->getDomainMap()));
+    b->randomize();
+    EXPECT_TRUE(KrylovSolver().solve(H, gmg.getOperator(), b, v, 1e-8, 200).converged) << label;
+
+    gmg.refreshAlgebraicLevels();
+    gmg.compute(box.hessian(6));
+    EXPECT_GE(gmg.algebraicLevels(), 1) << label;
+    EXPECT_NE(gmg.levelMatrix(grids + 1).get(), firstAlgebraic.get()) << label << ": not set up anew";
   }
 }
 
