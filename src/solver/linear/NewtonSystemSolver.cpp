@@ -41,6 +41,13 @@ RCP<Vector> constraintStiffness(const Vector& diagonalOfQ, const CrsMatrix& A) {
 
 namespace {
 
+// Whether some entry of `weights` differs from the one in `built` by more than `tolerance`. Collective.
+bool movedMoreThan(const Vector& weights, const Vector& built, double tolerance) {
+  Vector moved(weights.getMap());
+  moved.update(1.0, weights, -1.0, built, 0.0);
+  return moved.normInf() > tolerance;
+}
+
 void addGeometricParameters(Teuchos::ParameterList& prec) {
   prec.set("geometric: coarsest size", 200,
            "The geometric levels stop before a grid with fewer unknowns than this, or after one with a "
@@ -292,11 +299,7 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
         wd[i] = fd[i] + qd[i] > 0 ? fd[i] / (fd[i] + qd[i]) : 0.0;
       }
     }
-    if (amgReady_ && rebuildTolerance_ > 0) {
-      Vector change(D.getMap());
-      change.update(1.0, *weights, -1.0, *builtWeights_, 0.0);
-      if (change.normInf() <= rebuildTolerance_) return;
-    }
+    if (amgReady_ && rebuildTolerance_ > 0 && !movedMoreThan(*weights, *builtWeights_, rebuildTolerance_)) return;
     builtWeights_ = weights;
     ++amgBuilds_;
     if (geometric_) {
@@ -325,11 +328,7 @@ void NewtonSystemSolver::setWeights(const Vector& D) {
 }
 
 void NewtonSystemSolver::refreshAlgebraicLevelsIfMoved(const RCP<Vector>& weights) {
-  if (!algebraicWeights_.is_null()) {
-    Vector moved(weights->getMap());
-    moved.update(1.0, *weights, -1.0, *algebraicWeights_, 0.0);
-    if (moved.normInf() <= algebraicRebuildTolerance_) return;
-  }
+  if (!algebraicWeights_.is_null() && !movedMoreThan(*weights, *algebraicWeights_, algebraicRebuildTolerance_)) return;
   geometric_->refreshAlgebraicLevels();
   algebraicWeights_ = weights;
 }

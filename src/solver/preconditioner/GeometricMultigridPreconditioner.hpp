@@ -102,15 +102,18 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   // Whether the fine space is P1 on the grid's vertices (else P_k goes to P1 first).
   bool fineIsP1() const { return isP1_; }
 
-  // Grids below the fine level (0: MueLu alone), and their global unknowns, finest first.
+  // Grids below the fine level (0: MueLu alone), and the global unknowns of every level,
+  // finest first (kept algebraic levels included once built).
   int geometricLevels() const { return geometricLevels_; }
   // Levels below the coarsest grid made of MueLu's prolongators (after the first build).
   int algebraicLevels() const { return algebraicLevels_; }
   std::vector<long long> levelSizes() const;
-  // Whether the coarsest level is solved exactly (else by MueLu).
+  // Whether the coarsest grid is solved exactly (else MueLu is below it, as the coarse
+  // solver or, kept, as levels whose last is factored).
   bool directCoarsestSolve() const { return directCoarsest_; }
-  // The interpolation from level l + 1 to level l (l = 0: to the fine space). Coarse DOF
-  // blockSize * v + c is component c at vertex v of that level's grid (GeometricGrid numbering).
+  // The interpolation from level l + 1 to level l (l = 0: to the fine space), kept algebraic
+  // levels included. On a grid level, coarse DOF blockSize * v + c is component c at vertex v
+  // of that level's grid (GeometricGrid numbering).
   RCP<const CrsMatrix> prolongator(int level) const;
   // The matrix of level l (0: the fine one given to compute(), none after computeForSum();
   // then the Galerkin products).

@@ -594,6 +594,23 @@ TEST(GeometricMultigrid, InteriorPointSolutionAgreesWithTheAlgebraicHierarchy) {
   EXPECT_LT(std::abs(objective[1] - objective[0]), 1e-8 * std::abs(objective[0]));
 }
 
+// MueLu's levels kept below the coarsest grid (the rebuild tolerance above 0) lead the
+// interior point solve to the solution MueLu as coarse solver gives.
+TEST(GeometricMultigrid, InteriorPointSolutionAgreesWithKeptAlgebraicLevels) {
+  const AssembledProblem problem = buildProblem(shippedProblem("paper/K"), Tpetra::getDefaultComm());
+  double objective[2];
+  int i = 0;
+  for (const char* tolerance : {"0", "0.9"}) {
+    Teuchos::ParameterList params;
+    params.sublist("Preconditioner").set("geometric: direct solve size", 0);
+    params.sublist("Preconditioner").set("geometric: algebraic levels rebuild tolerance", std::string(tolerance));
+    const SolveResult r = InteriorPointSolver(params).solve(problem.qp, problem.multigrid);
+    ASSERT_TRUE(r.converged()) << "tolerance " << tolerance << ": " << r.message;
+    objective[i++] = r.objective;
+  }
+  EXPECT_LT(std::abs(objective[1] - objective[0]), 1e-8 * std::abs(objective[0]));
+}
+
 TEST(GeometricMultigrid, NeedsABoxMesh) {
   AssembledProblem problem = buildProblem(shippedProblem("paper/M"), Tpetra::getDefaultComm());
   problem.multigrid.grid.reset();
