@@ -574,28 +574,6 @@ void GeometricMultigridPreconditioner::setFineStiffnessOperator(const RCP<const 
   fineOperatorEigenvalue_ = 0.0;
 }
 
-namespace {
-
-// max over rows of sum_j |C_ij| / C_ii: a bound on the eigenvalues of diag(C)^-1 C for a
-// positive semidefinite C (Gershgorin's, for the matrix similar to it), rows of zeros skipped.
-double jacobiGershgorinBound(const CrsMatrix& C) {
-  const auto local = C.getLocalMatrixHost();
-  const auto& rowMap = *C.getRowMap();
-  const auto& colMap = *C.getColMap();
-  double bound = 0.0;
-  for (LocalOrdinal row = 0; row < static_cast<LocalOrdinal>(local.numRows()); ++row) {
-    double diagonal = 0.0, sum = 0.0;
-    for (auto e = local.graph.row_map(row); e < local.graph.row_map(row + 1); ++e) {
-      sum += std::fabs(local.values(e));
-      if (colMap.getGlobalElement(local.graph.entries(e)) == rowMap.getGlobalElement(row)) diagonal = local.values(e);
-    }
-    if (diagonal > 0.0) bound = std::max(bound, sum / diagonal);
-  }
-  return maxOverRanks(*C.getComm(), bound);
-}
-
-}  // namespace
-
 double GeometricMultigridPreconditioner::maxEigenvalueOfSum(Level& fine, const CrsMatrix& C,
                                                             const RCP<const CrsMatrix>& change) {
   if (fineOperator_.is_null() || smoother_.isParameter("chebyshev: max eigenvalue"))
@@ -605,7 +583,10 @@ double GeometricMultigridPreconditioner::maxEigenvalueOfSum(Level& fine, const C
     ofQ.setDiagonal(*fineOperatorDiagonal_);
     fineOperatorEigenvalue_ = ofQ.estimate(*fineOperator_, smoother_.get<int>("chebyshev: eigenvalue max iterations"));
   }
-  if (jacobiGershgorinBound(C) > fineOperatorEigenvalue_) return maxEigenvalue(fine, change);
+  // The smoother damps up to boost x lambda_Q: where that covers the bound max(lambda_Q,
+  // gamma_C) on H's eigenvalues, H needs no estimate of its own.
+  if (jacobiGershgorinBound(C) > smoother_.get<double>("chebyshev: boost factor") * fineOperatorEigenvalue_)
+    return maxEigenvalue(fine, change);
   return fineOperatorEigenvalue_;
 }
 

@@ -72,10 +72,11 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   void setGridStiffness(const CrsMatrix& gridStiffness);
   // Q as an operator with its diagonal (positive; copied), for the fine smoother of
   // computeForSum(): the largest eigenvalue lambda_Q of D_Q^-1 Q is estimated once, and
-  // every H = Q + C then has max(lambda_Q, gamma_C) as a bound on its own, gamma_C the
-  // Gershgorin bound of diag(C)^-1 C (1 for a diagonal C): no Lanczos steps on H at each
-  // build. (The Rayleigh quotient of H over its diagonal is a mediant of Q's and C's.) When
-  // gamma_C exceeds lambda_Q, H's own estimate is taken. Q must stay valid.
+  // every H = Q + C then has max(lambda_Q, gamma_C) as a bound on its own, gamma_C =
+  // jacobiGershgorinBound(C) (1 for a diagonal C). (The Rayleigh quotient of H over its
+  // diagonal is a mediant of Q's and C's.) Where gamma_C is at most the boost factor times
+  // lambda_Q, the interval the smoother damps with lambda_Q already reaches that bound, and
+  // H needs no Lanczos steps of its own; above, H's own estimate is taken. Q must stay valid.
   void setFineStiffnessOperator(const RCP<const Operator>& Q, const Vector& diagonalOfQ);
 
   // The hierarchy for H = Q + C with the fine level left an operator: `H` applies it and

@@ -6,6 +6,7 @@
 
 #include <Teuchos_LAPACK.hpp>
 #include <Tpetra_CrsMatrix.hpp>
+#include <Tpetra_Import.hpp>
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
@@ -125,6 +126,30 @@ double JacobiEigenvalueEstimate::estimate(const Operator& A, int steps) {
   }
   for (std::size_t i = 0; i < n; ++i) r[i] *= std::sqrt(d[i]);
   return alpha.back();
+}
+
+double jacobiGershgorinBound(const CrsMatrix& C) {
+  Vector rowDiagonal(C.getRowMap()), columnDiagonal(C.getColMap());
+  C.getLocalDiagCopy(rowDiagonal);
+  const RCP<const Import> importer = C.getCrsGraph()->getImporter();
+  if (importer.is_null())
+    columnDiagonal.assign(rowDiagonal);
+  else
+    columnDiagonal.doImport(rowDiagonal, *importer, Tpetra::INSERT);
+  const auto local = C.getLocalMatrixHost();
+  const auto ofRow = rowDiagonal.getData(), ofColumn = columnDiagonal.getData();
+  double bound = 0.0;
+  for (LocalOrdinal row = 0; row < static_cast<LocalOrdinal>(local.numRows()); ++row) {
+    if (!(ofRow[row] > 0.0)) continue;
+    double rowSum = 0.0, scaledSum = 0.0;
+    for (auto e = local.graph.row_map(row); e < local.graph.row_map(row + 1); ++e) {
+      const double entry = std::fabs(local.values(e)), other = ofColumn[local.graph.entries(e)];
+      rowSum += entry;
+      if (other > 0.0) scaledSum += entry / std::sqrt(ofRow[row] * other);
+    }
+    bound = std::max(bound, std::min(rowSum / ofRow[row], scaledSum));
+  }
+  return maxOverRanks(*C.getComm(), bound);
 }
 
 }  // namespace signorini

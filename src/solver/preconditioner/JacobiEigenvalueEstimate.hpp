@@ -50,4 +50,10 @@ class JacobiEigenvalueEstimate {
   RCP<Vector> diagonal_, inverseDiagonal_, ritz_, product_;
 };
 
+// A bound on the eigenvalues of diag(C)^-1 C for a symmetric positive semidefinite C, its
+// rows of zeros left out: the smaller of Gershgorin's bounds for that matrix and for the
+// similar diag(C)^-1/2 C diag(C)^-1/2. The second is exact for the block a a^T of a
+// constraint on one node (the count of a's nonzero components). Collective.
+double jacobiGershgorinBound(const CrsMatrix& C);
+
 }  // namespace signorini

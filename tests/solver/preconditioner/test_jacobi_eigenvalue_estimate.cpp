@@ -1,6 +1,7 @@
 // The Lanczos estimate of the largest eigenvalue of D^-1 A: exact once the Krylov space is
 // the whole space, the same on every rank count, and a few update steps after a change of
-// some rows as good as a fresh estimate.
+// some rows as good as a fresh estimate. Gershgorin's bound for diag(C)^-1 C: exact for
+// constraints on one node, above the largest eigenvalue for coupled ones.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <Tpetra_Core.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
+#include <TpetraExt_MatrixMatrix.hpp>
 
 #include "solver/preconditioner/JacobiEigenvalueEstimate.hpp"
 
@@ -98,6 +100,50 @@ TEST(JacobiEigenvalueEstimate, UpdateStepsAfterAChangeMatchAFreshEstimate) {
   JacobiEigenvalueEstimate short_;
   short_.setMatrix(*B);
   EXPECT_LT(short_.estimate(*B, 5), updated);
+}
+
+// C = sum of w_k a_k a_k^T over nodes k of three DOFs, a_k on node k's DOFs with components
+// of ratio up to 20, every fourth node without a constraint (rows of zeros): each block's
+// diag^-1 (a a^T) has the eigenvalue 3 (a's nonzero count), where Gershgorin's bound for
+// diag(C)^-1 C alone would be the ratio's sum, about 25.
+TEST(JacobiGershgorinBound, ExactForConstraintsOnOneNode) {
+  const long long nodes = 60;
+  auto map = rcp(new Map(3 * nodes, 0, Tpetra::getDefaultComm()));
+  auto C = rcp(new CrsMatrix(map, 3));
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(i), node = g / 3;
+    if (node % 4 == 0) continue;
+    const double a[3] = {1.0, 0.2 + 0.1 * static_cast<double>(node % 3), 0.05};
+    const double weight = scale(node);
+    for (int j = 0; j < 3; ++j)
+      C->insertGlobalValues(g, Teuchos::tuple<GlobalOrdinal>(3 * node + j), Teuchos::tuple(weight * a[g % 3] * a[j]));
+  }
+  C->fillComplete();
+  EXPECT_NEAR(jacobiGershgorinBound(*C), 3.0, 1e-12);
+}
+
+// C = B^T B with B the rows (1/6, 2/3, 1/6) of a weighted gap on a line of n nodes (a P1
+// mass matrix's), rows scaled by S: coupled constraints. The bound is at or above the
+// largest eigenvalue of diag(C)^-1 C (the Lanczos estimate on the whole Krylov space), and
+// within 1% of it.
+TEST(JacobiGershgorinBound, BoundsTheLargestEigenvalueOfCoupledConstraints) {
+  const long long n = 40;
+  auto map = rcp(new Map(n, 0, Tpetra::getDefaultComm()));
+  auto B = rcp(new CrsMatrix(map, 3));
+  for (std::size_t i = 0; i < map->getNodeNumElements(); ++i) {
+    const GlobalOrdinal g = map->getGlobalElement(i);
+    for (GlobalOrdinal j : {g - 1, g, g + 1})
+      if (j >= 0 && j < n)
+        B->insertGlobalValues(g, Teuchos::tuple(j), Teuchos::tuple(scale(g) * (j == g ? 2.0 / 3.0 : 1.0 / 6.0)));
+  }
+  B->fillComplete();
+  auto C = rcp(new CrsMatrix(map, 5));
+  Tpetra::MatrixMatrix::Multiply(*B, true, *B, false, *C);
+  JacobiEigenvalueEstimate estimate;
+  estimate.setMatrix(*C);
+  const double largest = estimate.estimate(*C, n), bound = jacobiGershgorinBound(*C);
+  EXPECT_GE(bound, largest * (1 - 1e-12));
+  EXPECT_LE(bound, 1.01 * largest);
 }
 
 }  // namespace
