@@ -24,6 +24,7 @@ namespace detail {
 class CoarseMeshLattice;
 struct RefinedLevel;
 }
+struct MeshPieces;
 
 class DistributedSpace final : public FiniteElementSpace {
  public:
@@ -103,6 +104,9 @@ class DistributedSpace final : public FiniteElementSpace {
   std::vector<int> boundaryTags_;  // boundary nodes per tag, CSR
   std::vector<long long> boundaryStart_, boundaryNodes_;
   RCP<const Map> ownedNodeMap_, overlapNodeMap_, ownedDofMap_, overlapDofMap_;
+  // meshPieces(*this), found at its first call: the setup, the assembly and the grids ask.
+  mutable std::shared_ptr<const MeshPieces> pieces_;
+  friend const MeshPieces& meshPieces(const DistributedSpace& space);
 };
 
 // The DistributedSpace behind a space the library made (every FiniteElementSpace of

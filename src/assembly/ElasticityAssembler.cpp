@@ -422,7 +422,7 @@ RCP<CrsMatrix> assembleGridStiffness(const DistributedSpace& ds, const ProblemDe
       grid.refinesFineCells() ? space.basis().subSimplices() : linear.subSimplices();
   const long long numVertexNodes = grid.refinesFineCells() ? space.numNodes() : ds.mesh().numVertices();
   std::vector<long long> gridVertex(numVertexNodes);
-  const MeshPieces apart = meshPieces(ds);  // bodies meshed apart may have nodes at one place
+  const MeshPieces& apart = meshPieces(ds);  // bodies meshed apart may have nodes at one place
   for (long long v = 0; v < numVertexNodes; ++v) {
     const double* x = &space.nodeCoordinates()[dim * v];
     gridVertex[v] = apart.count > 1 ? grid.vertexOfBodyAt(x, apart.ofSpaceNode[v]) : grid.vertexAt(x);
@@ -670,8 +670,8 @@ MultigridInput meshMultigridInput(const DistributedSpace& ds) {
   MultigridInput multigrid;
   multigrid.blockSize = ds.dim();
   multigrid.coordinates = ownedNodeCoordinates(ds);
-  MeshPieces pieces = meshPieces(ds);  // bodies meshed apart: the rigid body check takes each
-  if (pieces.count > 1) multigrid.nodeBodies = std::move(pieces.ofOwnedNode);
+  const MeshPieces& pieces = meshPieces(ds);  // bodies meshed apart: the rigid body check takes each
+  if (pieces.count > 1) multigrid.nodeBodies = pieces.ofOwnedNode;
   return multigrid;
 }
 

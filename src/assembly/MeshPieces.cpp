@@ -1,6 +1,7 @@
 #include "assembly/MeshPieces.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <numeric>
 
 #include <Tpetra_Export.hpp>
@@ -37,9 +38,7 @@ class LocalPieces {
   std::vector<long long> parent_;
 };
 
-}  // namespace
-
-MeshPieces meshPieces(const DistributedSpace& ds) {
+MeshPieces findPieces(const DistributedSpace& ds) {
   LocalPieces local(ds.space());
   const auto& overlap = ds.overlapSpaceNodes();
   const long long numNodes = ds.space().numNodes();
@@ -87,6 +86,13 @@ MeshPieces meshPieces(const DistributedSpace& ds) {
   pieces.ofSpaceNode.assign(numNodes, -1);
   for (long long n : overlap) pieces.ofSpaceNode[n] = pieceOf(label[n]);
   return pieces;
+}
+
+}  // namespace
+
+const MeshPieces& meshPieces(const DistributedSpace& ds) {
+  if (!ds.pieces_) ds.pieces_ = std::make_shared<const MeshPieces>(findPieces(ds));
+  return *ds.pieces_;
 }
 
 }  // namespace signorini

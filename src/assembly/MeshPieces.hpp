@@ -14,8 +14,9 @@ struct MeshPieces {
   std::vector<int> ofSpaceNode;  // the piece of each local node of the space, by space node
 };
 
-// Pieces numbered in the order of their smallest global node id. Collective; a few Tpetra
-// exchanges of one value per node (as many as the pieces cross rank boundaries in a chain).
-MeshPieces meshPieces(const DistributedSpace& space);
+// Pieces numbered in the order of their smallest global node id, found at the first call on
+// a space and kept with it. Collective at that call: a few Tpetra exchanges of one value per
+// node (as many as the pieces cross rank boundaries in a chain).
+const MeshPieces& meshPieces(const DistributedSpace& space);
 
 }  // namespace signorini

@@ -276,7 +276,7 @@ void checkInitialOverlap(const MultiVector& rowSums, const ContactPair& pair) {
 // the mesh that hold their facets' nodes do not meet.
 void checkDifferentBodies(const DistributedSpace& ds, const LocalFacets& slave, const LocalFacets& master,
                           const ContactPair& pair) {
-  const MeshPieces pieces = meshPieces(ds);
+  const MeshPieces& pieces = meshPieces(ds);
   std::vector<int> onSide[2] = {std::vector<int>(pieces.count, 0), std::vector<int>(pieces.count, 0)};
   for (int side = 0; side < 2; ++side)
     for (const auto& [cell, facet] : (side == 0 ? slave : master).cellFacets)

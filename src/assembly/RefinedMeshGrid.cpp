@@ -33,7 +33,7 @@ std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
   std::shared_ptr<RefinedMeshGrid> top(new RefinedMeshGrid(*lattice, levels, levels, finest));
   // Bodies meshed apart may have points at one place: each point carries its body, that of
   // its coarse cell's nodes.
-  const MeshPieces apart = meshPieces(space);
+  const MeshPieces& apart = meshPieces(space);
   std::vector<int> coarseCellBody;
   if (apart.count > 1)
     detail::forEachCellNode(space.space(), refinement, [&](long long node, long long, long long coarse,

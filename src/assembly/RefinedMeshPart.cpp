@@ -135,9 +135,11 @@ RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefine
   for (long long c = 0; c < coarse.numCells(); ++c)
     for (const std::array<int, 4>& cell : refinement.cellPoints(level))
       for (int v = 0; v <= d; ++v) mesh.cells.push_back(pointIds[c * perCell + cell[v]]);
-  if (!coarse.cellTags.empty())  // children are in their parent's body
+  if (!coarse.cellTags.empty()) {  // children are in their parent's body
+    mesh.cellTags.resize(coarse.numCells() * templateCells.size());
     for (long long c = 0; c < coarse.numCells(); ++c)
-      mesh.cellTags.insert(mesh.cellTags.end(), templateCells.size(), coarse.cellTags[c]);
+      std::fill_n(mesh.cellTags.begin() + c * templateCells.size(), templateCells.size(), coarse.cellTags[c]);
+  }
   const auto localVertex = [&](long long id) { return std::lower_bound(ids.begin(), ids.end(), id) - ids.begin(); };
   if (!withFacets) return result;
 
@@ -181,8 +183,9 @@ DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, con
   part.mesh.cellTags = std::move(finest.mesh.cellTags);
   part.mesh.bodyTags = finest.mesh.bodyTags;
   const long long perCoarse = static_cast<long long>(refinement.cells(levels).size());
+  part.globalCells.resize(lattice.mesh().numCells() * perCoarse);
   for (long long c = 0; c < lattice.mesh().numCells(); ++c)
-    for (long long t = 0; t < perCoarse; ++t) part.globalCells.push_back(lattice.globalCell(c) * perCoarse + t);
+    for (long long t = 0; t < perCoarse; ++t) part.globalCells[c * perCoarse + t] = lattice.globalCell(c) * perCoarse + t;
   result.numGlobalCells = lattice.numGlobalCells() * perCoarse;
 
   const LagrangeSpace space(part.mesh, degree);

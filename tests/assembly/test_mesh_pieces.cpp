@@ -50,8 +50,9 @@ TEST(MeshPieces, SquaresMeshedApartAreTwoPieces) {
   problem.set("mesh: file", writeTwoSquares(*Tpetra::getDefaultComm()));
   const AssembledProblem p = buildProblem(problem, Tpetra::getDefaultComm());
   const DistributedSpace& ds = distributedSpace(*p.space);
-  const MeshPieces pieces = meshPieces(ds);
+  const MeshPieces& pieces = meshPieces(ds);
   EXPECT_EQ(pieces.count, 2);
+  EXPECT_EQ(&meshPieces(ds), &pieces);  // found once per space, then kept
   // Each square's nodes all in one piece, the two pieces different.
   const MultiVector& x = *p.multigrid.coordinates;
   int lowest[2] = {2, 2}, highest[2] = {-1, -1};
