@@ -73,6 +73,12 @@ MueLuPreconditioner::MueLuPreconditioner(const Teuchos::ParameterList& params, i
         throw InputError(std::string("Solver/Preconditioner/MueLu/reuse: type: \"") + broken +
                          "\" fails inside Trilinos 13.2's matrix products on the Hessians of contact problems; use "
                          "\"none\" (the default), \"S\", \"RAP\" or \"emin\"");
+  // "full" keeps the first hierarchy for every later Hessian, whose barrier weights grow by
+  // orders of magnitude: three to four times the CG iterations on Gmsh cubes.
+  if (params_.isType<std::string>("reuse: type") && params_.get<std::string>("reuse: type") == "full")
+    throw InputError("Solver/Preconditioner/MueLu/reuse: type: \"full\" keeps the hierarchy of the first Hessian "
+                     "for all later ones, whose contact weights grow by orders of magnitude; to rebuild less often, "
+                     "raise Solver/Preconditioner/amg of H: rebuild tolerance, or use \"RAP\"");
 }
 
 namespace {

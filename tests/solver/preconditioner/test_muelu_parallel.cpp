@@ -149,9 +149,9 @@ TEST(MueLuParallel, UserSmootherTypeDropsOurSmootherParams) {
 }
 
 // Reuse types whose matrix products fail inside Trilinos 13.2 on contact Hessians are input
-// errors, named with the ones that work.
+// errors, named with the ones that work, and so is "full", which never refreshes the hierarchy.
 TEST(MueLuParallel, BrokenReuseTypesAreInputErrors) {
-  for (const char* type : {"tP", "RP"}) {
+  for (const char* type : {"tP", "RP", "full"}) {
     Teuchos::ParameterList user;
     user.set("reuse: type", type);
     EXPECT_THROW(MueLuPreconditioner(user, 2, Teuchos::null, Teuchos::null), InputError) << type;
