@@ -185,7 +185,8 @@ DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, con
   const long long perCoarse = static_cast<long long>(refinement.cells(levels).size());
   part.globalCells.resize(lattice.mesh().numCells() * perCoarse);
   for (long long c = 0; c < lattice.mesh().numCells(); ++c)
-    for (long long t = 0; t < perCoarse; ++t) part.globalCells[c * perCoarse + t] = lattice.globalCell(c) * perCoarse + t;
+    for (long long t = 0; t < perCoarse; ++t)
+      part.globalCells[c * perCoarse + t] = lattice.globalCell(c) * perCoarse + t;
   result.numGlobalCells = lattice.numGlobalCells() * perCoarse;
 
   const LagrangeSpace space(part.mesh, degree);

@@ -133,10 +133,11 @@ void addPreconditionerParameters(Teuchos::ParameterList& prec) {
   prec.sublist("MueLu", false,
                "Passed to MueLu unchanged, over Signorini's defaults; a reuse: type other than none refreshes "
                "the hierarchy of a matrix of the same pattern (tP and RP are refused: Trilinos 13.2 fails in "
-               "them on contact problems; so is full, which keeps the first Hessian's hierarchy). Where MueLu is the whole hierarchy, aggregation: min agg size "
-               "defaults to the 99th percentile of the nodal row sizes (a node and its neighbours) of the first "
-               "matrix: aggregates grow from the best-connected nodes, fewer and larger than MueLu's own; and "
-               "aggregation: drop tol to 0.01, which keeps the weakest couplings out of the aggregates");
+               "them on contact problems; so is full, which keeps the first Hessian's hierarchy). Where MueLu "
+               "is the whole hierarchy, aggregation: min agg size defaults to the 99th percentile of the nodal "
+               "row sizes (a node and its neighbours) of the first matrix: aggregates grow from the "
+               "best-connected nodes, fewer and larger than MueLu's own; and aggregation: drop tol to 0.01, "
+               "which keeps the weakest couplings out of the aggregates");
 }
 
 }  // namespace
