@@ -596,8 +596,7 @@ TEST(GeometricMultigrid, SmootherParametersAreCheckedForTheirTypes) {
   }
 }
 
-// The interior point solve reaches the same solution with either hierarchy.
-// The same solution with either hierarchy. By default the geometric levels are rebuilt at
+// The interior point solve reaches the same solution with either hierarchy. By default the geometric levels are rebuilt at
 // every Newton step (one setup per main iteration and one for the start), MueLu's hierarchy
 // alone only when constraints switch.
 TEST(GeometricMultigrid, InteriorPointSolutionAgreesWithTheAlgebraicHierarchy) {
