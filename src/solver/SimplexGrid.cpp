@@ -6,10 +6,18 @@
 #include <numeric>
 
 #include <Tpetra_Map.hpp>
+#include <boost/geometry/algorithms/comparable_distance.hpp>
+#include <boost/geometry/algorithms/intersects.hpp>
+#include <boost/geometry/geometries/box.hpp>
+#include <boost/geometry/geometries/point.hpp>
+#include <boost/geometry/index/rtree.hpp>
+#include <boost/geometry/strategies/strategies.hpp>
 
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
+namespace bg = boost::geometry;
+namespace bgi = boost::geometry::index;
 namespace {
 
 // Barycentric coordinates of x in the simplex with vertex coordinates v (dim per vertex);
@@ -58,100 +66,68 @@ bool nondegenerate(int dim, const double* v) {
 
 }  // namespace
 
-// A uniform grid of boxes over this rank's cells: each box lists the cells whose bounding
-// box (widened by the tolerance) meets it and the vertices in it.
+// Boost.Geometry R-trees of the cells' bounding boxes (widened by the tolerance) and of the
+// vertices, packed at construction; points in 2D have z = 0.
 struct SimplexGrid::Buckets {
-  int dim = 0;
-  std::array<double, 3> lower{}, width{};
-  std::array<long long, 3> count{1, 1, 1};
+  using Point = bg::model::point<double, 3, bg::cs::cartesian>;
+  using Box = bg::model::box<Point>;
   double tolerance = 0.0;
-  std::vector<long long> cellStart, cellItems, vertexStart, vertexItems;  // CSR per box
+  bgi::rtree<std::pair<Box, long long>, bgi::rstar<16>> cells;
+  bgi::rtree<std::pair<Point, long long>, bgi::rstar<16>> vertices;
 
-  long long index(int axis, double x) const {
-    const auto i = static_cast<long long>(std::floor((x - lower[axis]) / width[axis]));
-    return std::clamp<long long>(i, 0, count[axis] - 1);
-  }
-  long long box(const std::array<long long, 3>& i) const { return i[0] + count[0] * (i[1] + count[1] * i[2]); }
-  // Calls visit(box) for every box that meets [low, high].
-  template <class Visit>
-  void forBoxes(const double* low, const double* high, Visit&& visit) const {
-    std::array<long long, 3> from{0, 0, 0}, to{0, 0, 0}, i{0, 0, 0};
-    for (int a = 0; a < dim; ++a) {
-      from[a] = index(a, low[a]);
-      to[a] = index(a, high[a]);
-    }
-    for (i[2] = from[2]; i[2] <= to[2]; ++i[2])
-      for (i[1] = from[1]; i[1] <= to[1]; ++i[1])
-        for (i[0] = from[0]; i[0] <= to[0]; ++i[0]) visit(box(i));
-  }
-  // The buckets of the cells (vertices of `cells` indices into `coordinates`, dim per vertex).
+  static Point point(int dim, const double* x) { return Point(x[0], x[1], dim == 3 ? x[2] : 0.0); }
+  // The trees of the cells (vertices of `cells` indices into `coordinates`, dim per vertex).
   // Throws InputError for a degenerate cell.
   static std::unique_ptr<Buckets> over(int dim, const std::vector<double>& coordinates,
                                        const std::vector<long long>& cells);
 };
 
-// Boxes about as many as the cells, each about a cell wide, over the vertices' bounding box.
 std::unique_ptr<SimplexGrid::Buckets> SimplexGrid::Buckets::over(int dim, const std::vector<double>& coordinates,
                                                                  const std::vector<long long>& cells) {
   auto buckets = std::make_unique<Buckets>();
-  Buckets& b = *buckets;
-  b.dim = dim;
   const std::size_t numVertices = coordinates.size() / dim;
   const long long numCells = static_cast<long long>(cells.size()) / (dim + 1);
-  std::array<double, 3> upper{};
-  for (int a = 0; a < dim; ++a) {
-    b.lower[a] = upper[a] = numVertices > 0 ? coordinates[a] : 0.0;
-    for (std::size_t v = 0; v < numVertices; ++v) {
-      b.lower[a] = std::min(b.lower[a], coordinates[dim * v + a]);
-      upper[a] = std::max(upper[a], coordinates[dim * v + a]);
-    }
-  }
   double volume = 1.0;
-  for (int a = 0; a < dim; ++a) volume *= std::max(upper[a] - b.lower[a], 1e-300);
-  const double cellSize = std::pow(volume / std::max<long long>(numCells, 1), 1.0 / dim);
-  b.tolerance = 1e-10 * cellSize;
   for (int a = 0; a < dim; ++a) {
-    b.count[a] = std::clamp<long long>(static_cast<long long>((upper[a] - b.lower[a]) / cellSize), 1, 1 << 20);
-    b.width[a] = std::max(upper[a] - b.lower[a], 1e-300) / static_cast<double>(b.count[a]);
+    double low = 0.0, high = 0.0;
+    for (std::size_t v = 0; v < numVertices; ++v) {
+      low = v == 0 ? coordinates[a] : std::min(low, coordinates[dim * v + a]);
+      high = v == 0 ? coordinates[a] : std::max(high, coordinates[dim * v + a]);
+    }
+    volume *= std::max(high - low, 1e-300);
   }
-  const long long boxes = b.count[0] * b.count[1] * b.count[2];
-  std::vector<std::vector<long long>> cellLists(boxes), vertexLists(boxes);
-  double x[12], low[3], high[3];
+  buckets->tolerance = 1e-10 * std::pow(volume / std::max<long long>(numCells, 1), 1.0 / dim);
+  const double t = buckets->tolerance;
+  std::vector<std::pair<Box, long long>> boxes;
+  boxes.reserve(numCells);
+  double x[12];
   for (long long c = 0; c < numCells; ++c) {
     for (int k = 0; k <= dim; ++k) std::copy_n(&coordinates[dim * cells[(dim + 1) * c + k]], dim, &x[dim * k]);
     if (!nondegenerate(dim, x)) throw InputError("SimplexGrid: cell " + std::to_string(c) + " is degenerate");
+    double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
     for (int a = 0; a < dim; ++a) {
       low[a] = high[a] = x[a];
       for (int k = 1; k <= dim; ++k) {
         low[a] = std::min(low[a], x[dim * k + a]);
         high[a] = std::max(high[a], x[dim * k + a]);
       }
-      low[a] -= b.tolerance;
-      high[a] += b.tolerance;
+      low[a] -= t;
+      high[a] += t;
     }
-    b.forBoxes(low, high, [&](long long box) { cellLists[box].push_back(c); });
+    boxes.emplace_back(Box(Point(low[0], low[1], low[2]), Point(high[0], high[1], high[2])), c);
   }
+  buckets->cells = decltype(buckets->cells)(boxes.begin(), boxes.end());
+  std::vector<std::pair<Point, long long>> points;
+  points.reserve(numVertices);
   for (std::size_t v = 0; v < numVertices; ++v)
-    b.forBoxes(&coordinates[dim * v], &coordinates[dim * v], [&](long long box) {
-      vertexLists[box].push_back(static_cast<long long>(v));
-    });
-  const auto flatten = [](std::vector<std::vector<long long>>& lists, std::vector<long long>& start,
-                          std::vector<long long>& items) {
-    start.assign(1, 0);
-    for (auto& list : lists) {
-      items.insert(items.end(), list.begin(), list.end());
-      start.push_back(static_cast<long long>(items.size()));
-      std::vector<long long>().swap(list);
-    }
-  };
-  flatten(cellLists, b.cellStart, b.cellItems);
-  flatten(vertexLists, b.vertexStart, b.vertexItems);
+    points.emplace_back(point(dim, &coordinates[dim * v]), static_cast<long long>(v));
+  buckets->vertices = decltype(buckets->vertices)(points.begin(), points.end());
   return buckets;
 }
 
 SimplexGrid::SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long long> vertexIds,
-                         std::vector<double> coordinates, std::vector<long long> cells)
-    : dim_(dim) {
+                         std::vector<double> coordinates, std::vector<long long> cells, Outside outside)
+    : dim_(dim), outside_(outside) {
   if (dim != 2 && dim != 3) throw InputError("SimplexGrid: the dimension must be 2 or 3, got " + std::to_string(dim));
   const std::size_t numVertices = vertexIds.size();
   if (coordinates.size() != dim * numVertices || cells.size() % (dim + 1) != 0)
@@ -200,43 +176,51 @@ void SimplexGrid::vertexCoordinates(long long vertex, double* x) const {
 
 long long SimplexGrid::vertexAt(const double* x) const {
   const Buckets& b = *buckets_;
-  double low[3], high[3];
+  double low[3] = {0, 0, 0}, high[3] = {0, 0, 0};
   for (int a = 0; a < dim_; ++a) {
     low[a] = x[a] - b.tolerance;
     high[a] = x[a] + b.tolerance;
   }
   long long found = -1;
-  b.forBoxes(low, high, [&](long long box) {
-    for (long long i = b.vertexStart[box]; i < b.vertexStart[box + 1] && found < 0; ++i) {
-      const long long v = b.vertexItems[i];
-      bool near = true;
-      for (int a = 0; a < dim_; ++a) near = near && std::abs(coordinates_[dim_ * v + a] - x[a]) <= b.tolerance;
-      if (near) found = vertexIds_[v];
-    }
-  });
-  return found;
+  const Buckets::Box near(Buckets::Point(low[0], low[1], low[2]), Buckets::Point(high[0], high[1], high[2]));
+  for (auto it = b.vertices.qbegin(bgi::intersects(near)); it != b.vertices.qend(); ++it)
+    if (found < 0 || it->second < found) found = it->second;
+  return found < 0 ? -1 : vertexIds_[found];
 }
 
-void SimplexGrid::interpolation(const double* x, long long* vertices, double* weights) const {
+long long SimplexGrid::bestCell(const double* x, std::size_t nearest, double* lambda) const {
   const Buckets& b = *buckets_;
-  double corners[12], lambda[4], best = -1e300;
+  const auto p = Buckets::point(dim_, x);
+  double corners[12], trial[4], best = -1e300;
   long long chosen = -1;
-  std::array<long long, 3> at{0, 0, 0};
-  for (int a = 0; a < dim_; ++a) at[a] = b.index(a, x[a]);
-  const long long box = b.box(at);
-  for (long long i = b.cellStart[box]; i < b.cellStart[box + 1]; ++i) {
-    const long long c = b.cellItems[i];
-    for (int k = 0; k <= dim_; ++k) std::copy_n(&coordinates_[dim_ * cells_[(dim_ + 1) * c + k]], dim_, &corners[dim_ * k]);
-    if (!barycentric(dim_, corners, x, lambda)) continue;
-    const double smallest = *std::min_element(lambda, lambda + dim_ + 1);
+  const auto consider = [&](long long c) {
+    for (int v = 0; v <= dim_; ++v) std::copy_n(&coordinates_[dim_ * cells_[(dim_ + 1) * c + v]], dim_, &corners[dim_ * v]);
+    if (!barycentric(dim_, corners, x, trial)) return;
+    const double smallest = *std::min_element(trial, trial + dim_ + 1);
     if (smallest > best) {
       best = smallest;
       chosen = c;
-      std::copy_n(lambda, dim_ + 1, weights);
+      std::copy_n(trial, dim_ + 1, lambda);
     }
+  };
+  if (nearest == 0) {
+    for (auto it = b.cells.qbegin(bgi::intersects(p)); it != b.cells.qend(); ++it) consider(it->second);
+  } else {
+    for (auto it = b.cells.qbegin(bgi::nearest(p, static_cast<unsigned>(nearest))); it != b.cells.qend(); ++it)
+      consider(it->second);
   }
-  if (chosen < 0 || best < -1e-8)
-    throw Error("SimplexGrid: a point in none of this rank's cells; each rank's cells must hold the nodes it owns");
+  return chosen;
+}
+
+void SimplexGrid::interpolation(const double* x, long long* vertices, double* weights) const {
+  long long chosen = bestCell(x, 0, weights);
+  if (chosen < 0 || *std::min_element(weights, weights + dim_ + 1) < -1e-8) {
+    if (outside_ == Outside::error)
+      throw Error("SimplexGrid: a point in none of this rank's cells; each rank's cells must hold the nodes it owns");
+    // The cells whose boxes are nearest: the nearest cell is among them.
+    chosen = bestCell(x, 16, weights);
+    if (chosen < 0) throw Error("SimplexGrid: a grid without cells cannot interpolate");
+  }
   double sum = 0.0;
   for (int k = 0; k <= dim_; ++k) sum += weights[k] = std::max(weights[k], 0.0);
   for (int k = 0; k <= dim_; ++k) {

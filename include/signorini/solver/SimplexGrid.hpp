@@ -20,8 +20,12 @@ class SimplexGrid : public GeometricGrid {
   /// The cells of a rank must hold the nodes of the QP's rows it owns (the cells it assembled).
   /// Throws InputError for a dimension other than 2 or 3, arrays of sizes that do not fit, a
   /// cell naming a vertex not in vertexIds, or a degenerate cell.
+  /// With `outside` Outside::nearestCell, a point in none of the cells is first moved onto the
+  /// nearest of them (GeometricGrid::interpolation) instead of being an error: for cells that
+  /// cover the nodes only up to the boundary's curvature, a coarser grid of the mesh's.
+  enum class Outside { error, nearestCell };
   SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long long> vertexIds, std::vector<double> coordinates,
-              std::vector<long long> cells);
+              std::vector<long long> cells, Outside outside = Outside::error);
   ~SimplexGrid() override;
 
   int dimension() const override { return dim_; }
@@ -32,19 +36,26 @@ class SimplexGrid : public GeometricGrid {
   /// The vertex within 1e-10 of the local cell size of x, among this rank's, or -1.
   long long vertexAt(const double* x) const override;
   /// x in one of this rank's cells (within 1e-10 of its size): that cell's vertices and P1
-  /// weights. Throws Error for a point in none.
+  /// weights. Throws Error for a point in none, unless the grid moves such points onto its
+  /// nearest cell (Outside::nearestCell).
   void interpolation(const double* x, long long* vertices, double* weights) const override;
   std::shared_ptr<const GeometricGrid> coarser() const override { return nullptr; }
   std::string description() const override;
 
  private:
   struct Buckets;
+  // The cell whose smallest barycentric coordinate at x is largest, among the cells whose
+  // bounding box holds x (nearest = 0) or the `nearest` cells with the nearest boxes; -1 if
+  // there are none. Its weights in `lambda`.
+  long long bestCell(const double* x, std::size_t nearest, double* lambda) const;
+
   int dim_;
+  Outside outside_;
   long long numVertices_ = 0;
   std::vector<long long> vertexIds_;  // sorted
   std::vector<double> coordinates_;   // dim_ per vertex, in vertexIds_ order
   std::vector<long long> cells_;      // dim_ + 1 local vertex indices per cell
-  std::unique_ptr<Buckets> buckets_;  // cells and vertices by place
+  std::unique_ptr<Buckets> buckets_;  // cells and vertices by place (R-trees)
 };
 
 }  // namespace signorini
