@@ -8,11 +8,15 @@ plane (doc/benchmark-family.md). Three meshes per case:
            (Problem/mesh: refinements), each refinement a geometric level; "refined r2"
            is refined twice;
   msh      the fine mesh written by Gmsh as a .msh file and read as is by rank 0, which
-           partitions it (Problem/mesh: read = rank 0; its own P1 grid, MueLu below);
+           partitions it (Problem/mesh: read = rank 0; its own P1 grid, MueLu below:
+           Problem/mesh: coarse grids = none);
   msh all ranks  the same .msh read by all ranks together (Problem/mesh: read = all ranks,
            the default: each reads a slice, PT-Scotch partitions; runs on 2 ranks or more);
   parts    the same fine mesh partitioned by Gmsh and written as one file per rank
-           (gmsh -part N -part_split), each rank reading its own (runs on 2 ranks or more).
+           (gmsh -part N -part_split), each rank reading its own (runs on 2 ranks or more);
+  msh delaunay  the .msh read by all ranks with the default coarse grids, Delaunay
+           triangulations of its vertices' maximal independent sets below its P1 grid
+           (Problem/mesh: coarse grids = delaunay); the other .msh rows have MueLu there.
 
 Each on 1 and 2 ranks (--ranks; the large case on 4 ranks too), with the contact solve and a
 linear solve of the same problem with the bottom clamped instead (no contact): setup,
@@ -55,6 +59,8 @@ CASES = {
 
 # The meshes that need more than one rank: a mesh in parts, and a reading by all ranks.
 PARALLEL_ONLY = ("parts", "msh all ranks")
+# The .msh meshes as is, MueLu below their P1 grid but for "msh delaunay".
+AS_IS = ("msh", *PARALLEL_ONLY, "msh delaunay")
 
 
 def refined_mesh(refinements):
@@ -107,7 +113,8 @@ def mesh_settings(case, mesh, workdir, ranks):
             return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={write_geometry(workdir, dim, coarse)}",
                     f"Problem/mesh: refinements={refinements}"]
     file = fine_parts(workdir, dim, fine, ranks) if mesh == "parts" else fine_msh(workdir, dim, fine)
-    read = [f"Problem/mesh: read={'all ranks' if mesh == 'msh all ranks' else 'rank 0'}"]
+    read = [f"Problem/mesh: read={'rank 0' if mesh == 'msh' else 'all ranks'}",
+            f"Problem/mesh: coarse grids={'delaunay' if mesh == 'msh delaunay' else 'none'}"]
     return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={file}"] + read
 
 
@@ -177,7 +184,7 @@ def main():
     parser.add_argument("--ranks", default="1,2")
     parser.add_argument("--cases", default=",".join(CASES))
     parser.add_argument("--meshes", default=None, help="only these meshes (box, refined rK, msh, parts, "
-                        "msh all ranks); the box is the reference of the ratios")
+                        "msh all ranks, msh delaunay); the box is the reference of the ratios")
     parser.add_argument("--repeat", type=int, default=2, help="runs of each case, mesh and solve; the fastest is kept")
     parser.add_argument("--name", default="gmsh-meshes", help="the result set's name")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "gmsh-meshes"))
@@ -192,7 +199,7 @@ def main():
     runs = []
     for case in cases:
         _, _, _, _, refined, fine_size, _ = CASES[case]
-        meshes = ["box"] + [refined_mesh(r) for _, r in refined] + (["msh", *PARALLEL_ONLY] if fine_size else [])
+        meshes = ["box"] + [refined_mesh(r) for _, r in refined] + (list(AS_IS) if fine_size else [])
         if args.meshes:
             meshes = [m for m in meshes if m in args.meshes.split(",")]
         for np in rank_counts[case]:

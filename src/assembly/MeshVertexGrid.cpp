@@ -83,6 +83,24 @@ long long MeshVertexGrid::nodeAt(const double* x, int body) const {
   return -1;
 }
 
+VertexGraph MeshVertexGrid::vertexGraph() const {
+  if (refinement_ == Refinement::atNodes) throw Error("MeshVertexGrid: no vertex graph of a grid refined at the nodes");
+  const DistributedSpace& ds = *space_;
+  const SimplexMesh& mesh = ds.mesh();
+  const int dim = ds.dim();
+  const long long count = mesh.numVertices();
+  VertexGraph g;
+  g.dim = dim;
+  g.ids = vertexId_;
+  g.owned.resize(count);
+  for (long long v = 0; v < count; ++v) g.owned[v] = ds.ownsNode(v);
+  const auto& xyz = ds.space().nodeCoordinates();
+  g.coordinates.assign(xyz.begin(), xyz.begin() + dim * count);
+  g.bodies.assign(bodyOfNode_.begin(), bodyOfNode_.begin() + count);
+  g.setEdgesOfCells(mesh.cells);
+  return g;
+}
+
 long long MeshVertexGrid::vertexAt(const double* x) const { return vertexOfBodyAt(x, -1); }
 
 long long MeshVertexGrid::vertexOfBodyAt(const double* x, int body) const {

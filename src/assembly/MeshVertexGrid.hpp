@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "assembly/DelaunayCoarseGrid.hpp"
 #include "assembly/DistributedSpace.hpp"
 #include "signorini/core/GeometricGrid.hpp"
 
@@ -36,9 +37,15 @@ class MeshVertexGrid : public GeometricGrid {
   void interpolation(const double* x, long long* vertices, double* weights) const override;
   long long vertexOfBodyAt(const double* x, int body) const override;
   void interpolationInBody(const double* x, int body, long long* vertices, double* weights) const override;
-  std::shared_ptr<const GeometricGrid> coarser() const override { return nullptr; }
+  std::shared_ptr<const GeometricGrid> coarser() const override { return coarser_; }
   bool refinesFineCells() const override { return refinement_ == Refinement::atNodes; }
   std::string description() const override;
+
+  // The vertices of this rank's cells and the cells' edges between them (not refined at the
+  // nodes): what DelaunayCoarseGrid coarsens.
+  VertexGraph vertexGraph() const;
+  // The next coarser grid, whose vertices are vertices of this one (DelaunayCoarseGrid).
+  void setCoarser(std::shared_ptr<const GeometricGrid> coarser) { coarser_ = std::move(coarser); }
 
  private:
   // The local space node at x (of the body, if several have a node there), or -1.
@@ -56,6 +63,7 @@ class MeshVertexGrid : public GeometricGrid {
   std::vector<long long> nodesByPlace_;   // local space nodes sorted by coordinates
   std::vector<long long> vertexById_;     // local vertices sorted by global id
   std::vector<int> bodyOfNode_;           // per local space node: its piece of the mesh
+  std::shared_ptr<const GeometricGrid> coarser_;
 };
 
 }  // namespace signorini

@@ -15,6 +15,7 @@
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/CoarseMeshLattice.hpp"
 #include "assembly/ElasticityAssembler.hpp"
+#include "assembly/DelaunayCoarseGrid.hpp"
 #include "assembly/MeshVertexGrid.hpp"
 #include "assembly/MortarFacet.hpp"
 #include "assembly/ParallelMshRead.hpp"
@@ -228,11 +229,21 @@ void orientMortarPairs(ProblemDefinition& def, const DistributedSpace& space) {
   }
 }
 
+// The P1 grid of a mesh without coarser levels of its own, with Delaunay coarse grids below.
+std::shared_ptr<const GeometricGrid> delaunayHierarchy(const std::shared_ptr<const DistributedSpace>& space) {
+  Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: mesh and space: coarse grids"));
+  auto grid = std::make_shared<MeshVertexGrid>(space);
+  // Down to a grid of at most a few hundred vertices, which the direct solver takes.
+  grid->setCoarser(DelaunayCoarseGrid::hierarchyBelow(space->comm(), grid->vertexGraph(), 300));
+  return grid;
+}
+
 // The QP on `space`, and the grids of the geometric multigrid: a box's or a refined
-// mesh's nested ones, a P_k space's own mesh, or that mesh refined at the nodes, whose
-// stiffness is no Galerkin product of Q's.
+// mesh's nested ones, an unrefined mesh's Delaunay coarse grids (`meshGrid` holds either), a
+// P_k space's own mesh, or that mesh refined at the nodes, whose stiffness is no Galerkin
+// product of Q's.
 void assembleQP(AssembledProblem& result, const std::shared_ptr<const DistributedSpace>& space,
-                std::shared_ptr<const GeometricGrid> refinedGrid) {
+                std::shared_ptr<const GeometricGrid> meshGrid) {
   orientMortarPairs(result.definition, *space);
   const ProblemDefinition& def = result.definition;
   const bool onlyGridStiffness = storesNoStiffness(def);
@@ -245,8 +256,8 @@ void assembleQP(AssembledProblem& result, const std::shared_ptr<const Distribute
   }
   if (def.gridRefinedAtNodes)
     multigrid.grid = std::make_shared<MeshVertexGrid>(space, MeshVertexGrid::Refinement::atNodes);
-  else if (refinedGrid)
-    multigrid.grid = std::move(refinedGrid);
+  else if (meshGrid)
+    multigrid.grid = std::move(meshGrid);
   else if (def.meshType == "box")
     multigrid.grid = std::make_shared<BoxGrid>(def.dim, def.cells, def.lengths);
   else if (def.degree > 1)
@@ -267,7 +278,8 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
   BuildObserver& report = observer ? *observer : none;
   AssembledProblem result;
   std::shared_ptr<const DistributedSpace> space;
-  std::shared_ptr<const GeometricGrid> refinedGrid;  // the levels of a refined Gmsh mesh
+  // The levels of a refined Gmsh mesh, or the coarse grids made for an unrefined one.
+  std::shared_ptr<const GeometricGrid> meshGrid;
   Teuchos::Time setup("setup"), assembly("assembly");
   {
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: mesh and space"));
@@ -277,7 +289,9 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     Teuchos::ParameterList validated = validatedParameters(problem, validProblemParameters(), "Problem");
     if (stiffness == StiffnessNeed::Assembled && validated.get<std::string>("stiffness: operator") == "auto")
       validated.set("stiffness: operator", "assembled");
-    refinedGrid = makeSpace(validated, comm, baseDirectory, result, space, report);
+    meshGrid = makeSpace(validated, comm, baseDirectory, result, space, report);
+    const ProblemDefinition& def = result.definition;
+    if (!meshGrid && def.delaunayCoarseGrids && !def.gridRefinedAtNodes) meshGrid = delaunayHierarchy(space);
     result.space = space;
     setup.stop();
     const double growth = std::max(0.0, peakResidentMiB() - residentBefore);
@@ -289,7 +303,7 @@ AssembledProblem buildProblem(const Teuchos::ParameterList& problem, const RCP<c
     Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: assembly"));
     const detail::CommunicationPhaseScope phase(detail::CommunicationPhase::assembly);
     assembly.start(true);
-    assembleQP(result, space, std::move(refinedGrid));
+    assembleQP(result, space, std::move(meshGrid));
     assembly.stop();
   }
   report.onPhase("mesh and space", maxOverRanks(*comm, setup.totalElapsedTime()));

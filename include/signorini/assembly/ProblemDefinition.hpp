@@ -73,6 +73,9 @@ struct ProblemDefinition {
   std::string meshFile;
   double meshSizeFactor = 1.0;  ///< of a .geo geometry
   int meshRefinements = 0;      ///< uniform refinements of a Gmsh mesh
+  /// A Gmsh mesh without refinements gets coarse grids made from its vertices
+  /// (DelaunayCoarseGrid) below its P1 grid
+  bool delaunayCoarseGrids = false;
   int degree = 1;
   Body body;                ///< the Problem-level material and body force
   std::vector<Body> bodies;  ///< Problem/Bodies: bodies of the mesh with their own (unnamed: body)
