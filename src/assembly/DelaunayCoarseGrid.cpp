@@ -48,13 +48,13 @@ namespace {
 
 using Import = Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>;
 
-// A vertex's priority in Luby's rule: a hash of its place and body, the same whatever the
-// ids and the rank count.
+// A vertex's priority in Luby's rule: a hash of its place, the same whatever the ids, the
+// bodies' numbers and the rank count. Vertices of two bodies at one place share it, but they
+// are never neighbours.
 std::uint64_t priority(const VertexGraph& g, std::size_t v) {
-  std::uint64_t words[4] = {0, 0, 0, 0};
+  std::uint64_t words[3] = {0, 0, 0};
   std::memcpy(words, &g.coordinates[g.dim * v], g.dim * sizeof(double));
-  words[3] = g.bodies.empty() ? 0 : static_cast<std::uint64_t>(g.bodies[v]);
-  return splitMixHash(words, words + 4);
+  return splitMixHash(words, words + 3);
 }
 
 // The owned and the local (owned and ghost) vertices as maps of their ids, and the import

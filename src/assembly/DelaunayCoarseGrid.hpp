@@ -4,9 +4,8 @@
 //
 // Each coarse grid's vertices are a maximal independent set of the finer grid's vertices (no
 // two joined by an edge of the finer grid; every other vertex next to one of them), chosen
-// by Luby's rule with priorities hashed from the vertices' coordinates and bodies, so that on
-// a mesh of one body the set does not depend on the rank count (the bodies' numbers follow the
-// partition). Their Delaunay triangulation, one per body, is the grid; every rank
+// by Luby's rule with priorities hashed from the vertices' coordinates, so that the set does
+// not depend on the rank count. Their Delaunay triangulation, one per body, is the grid; every rank
 // holds it whole (it has about an eighth of the finer grid's vertices in 3D, a quarter in 2D).
 // The vertices are nested, the cells are not: the interpolation to a finer vertex is P1 in
 // the coarse cell that holds it. A Delaunay triangulation covers the convex hull of a body's

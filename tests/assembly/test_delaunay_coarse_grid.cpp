@@ -6,9 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Teuchos_CommHelpers.hpp>
@@ -17,24 +17,16 @@
 #include "assembly/DelaunayCoarseGrid.hpp"
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/MeshVertexGrid.hpp"
-#include "fe/BoxMesh.hpp"
 #include "solver/preconditioner/LocalBlock.hpp"
+#include "support/TestProblems.hpp"
 
 namespace {
 
 using namespace signorini;
 
-// A box mesh with its interior vertices moved by up to a fifth of the spacing; with
-// `twoBodies`, a copy of it beside it at x + 1.1 as a second body.
+// signorini::testing::distortedBoxMesh; with `twoBodies`, a copy of it beside it at x + 1.1 as a second body.
 std::shared_ptr<const SimplexMesh> distortedMesh(int dim, long long n, bool twoBodies = false) {
-  SimplexMesh mesh = makeBoxMesh(dim, {n, n, dim == 3 ? n : 1}, {1.0, 1.0, 1.0});
-  for (long long v = 0; v < mesh.numVertices(); ++v) {
-    double* x = &mesh.vertices[dim * v];
-    bool interior = true;
-    for (int c = 0; c < dim; ++c) interior = interior && x[c] > 1e-9 && x[c] < 1 - 1e-9;
-    if (interior)
-      for (int c = 0; c < dim; ++c) x[c] += 0.2 / n * std::sin(7.0 * v + 3.0 * c);
-  }
+  SimplexMesh mesh = signorini::testing::distortedBoxMesh(dim, n);
   if (twoBodies) {  // a copy of the mesh beside it, a gap of 0.1 between them
     const long long numVertices = mesh.numVertices(), numCells = mesh.numCells();
     for (long long v = 0; v < numVertices; ++v)
@@ -97,18 +89,19 @@ TEST(DelaunayCoarseGrid, FirstLevelIsAMaximalIndependentSetOfTheMeshVertices) {
 
 TEST(DelaunayCoarseGrid, TheLevelsDoNotDependOnTheRankCount) {
   const auto comm = Tpetra::getDefaultComm();
-  for (int dim : {2, 3}) {
-    const auto distributed = space(comm, dim, dim == 2 ? 24 : 8);
-    const auto whole = space(selfComm(), dim, dim == 2 ? 24 : 8);
+  for (const auto& [dim, twoBodies] : {std::pair{2, false}, std::pair{3, false}, std::pair{2, true}}) {
+    const std::string what = std::to_string(dim) + "D" + (twoBodies ? ", two bodies" : "");
+    const auto distributed = space(comm, dim, dim == 2 ? 24 : 8, twoBodies);
+    const auto whole = space(selfComm(), dim, dim == 2 ? 24 : 8, twoBodies);
     std::shared_ptr<const GeometricGrid> a =
         DelaunayCoarseGrid::hierarchyBelow(comm, MeshVertexGrid(distributed).vertexGraph(), 10);
     std::shared_ptr<const GeometricGrid> b =
         DelaunayCoarseGrid::hierarchyBelow(selfComm(), MeshVertexGrid(whole).vertexGraph(), 10);
     int level = 0;
     for (; a && b; a = a->coarser(), b = b->coarser(), ++level)
-      EXPECT_EQ(places(*a), places(*b)) << dim << "D level " << level;
-    EXPECT_EQ(!a, !b) << dim << "D: the hierarchies end at different levels";
-    EXPECT_GE(level, 2) << dim << "D";
+      EXPECT_EQ(places(*a), places(*b)) << what << " level " << level;
+    EXPECT_EQ(!a, !b) << what << ": the hierarchies end at different levels";
+    EXPECT_GE(level, 2) << what;
   }
 }
 
@@ -138,10 +131,11 @@ TEST(DelaunayCoarseGrid, InterpolatesLinearFunctionsInsideItsHullAndClampsOutsid
       bool deep = true;
       for (int c = 0; c < dim; ++c) deep = deep && x[c] > 3.0 / n && x[c] < 1 - 3.0 / n;
       for (int c = 0; c < dim; ++c) {
-        if (deep)
+        if (deep) {
           EXPECT_NEAR(back[c], x[c], 1e-12) << dim << "D vertex " << v;
-        else
+        } else {
           EXPECT_NEAR(back[c], x[c], 2.0 / n) << dim << "D vertex " << v;
+        }
       }
     }
     // Far outside: the nearest cell's weights, clamped.
@@ -154,7 +148,9 @@ TEST(DelaunayCoarseGrid, InterpolatesLinearFunctionsInsideItsHullAndClampsOutsid
       sum += weights[k];
       double at[3];
       coarse->vertexCoordinates(vertices[k], at);
-      if (weights[k] > 1e-12) EXPECT_GT(at[0], 0.6) << dim << "D: a vertex far from the nearest side";
+      if (weights[k] > 1e-12) {
+        EXPECT_GT(at[0], 0.6) << dim << "D: a vertex far from the nearest side";
+      }
     }
     EXPECT_NEAR(sum, 1.0, 1e-12);
   }
@@ -183,14 +179,17 @@ TEST(DelaunayCoarseGrid, EachBodyHasItsOwnGrid) {
     for (int k = 0; k <= dim; ++k) {
       double at[2];
       coarse->vertexCoordinates(vertices[k], at);
-      if (weights[k] > 1e-12) EXPECT_EQ(at[0] > 1.05, body == right) << "body " << body;
+      if (weights[k] > 1e-12) {
+        EXPECT_EQ(at[0] > 1.05, body == right) << "body " << body;
+      }
     }
   }
   for (std::size_t v = 0; v < graph.ids.size(); ++v) {
     const long long at = coarse->vertexOfBodyAt(&graph.coordinates[dim * v], graph.bodies[v]);
-    if (at >= 0)
+    if (at >= 0) {
       EXPECT_EQ(coarse->vertexOfBodyAt(&graph.coordinates[dim * v], 1 - graph.bodies[v]), -1)
           << "x = " << graph.coordinates[dim * v] << ", body " << graph.bodies[v];
+    }
   }
 }
 

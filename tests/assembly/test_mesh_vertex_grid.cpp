@@ -4,7 +4,6 @@
 // nodes, every node is a vertex with its own global id.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,25 +13,15 @@
 
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/MeshVertexGrid.hpp"
-#include "fe/BoxMesh.hpp"
 #include "signorini/core/Error.hpp"
+#include "support/TestProblems.hpp"
 
 namespace {
 
 using namespace signorini;
 
-// A box mesh with its interior vertices moved by up to a fifth of the spacing, deterministically.
 std::shared_ptr<const SimplexMesh> distortedMesh(int dim) {
-  const long long n = dim == 2 ? 6 : 3;
-  SimplexMesh mesh = makeBoxMesh(dim, {n, n, dim == 3 ? n : 1}, {1.0, 1.0, 1.0});
-  for (long long v = 0; v < mesh.numVertices(); ++v) {
-    double* x = &mesh.vertices[dim * v];
-    bool interior = true;
-    for (int c = 0; c < dim; ++c) interior = interior && x[c] > 1e-9 && x[c] < 1 - 1e-9;
-    if (interior)
-      for (int c = 0; c < dim; ++c) x[c] += 0.2 / n * std::sin(7.0 * v + 3.0 * c);
-  }
-  return std::make_shared<const SimplexMesh>(std::move(mesh));
+  return std::make_shared<const SimplexMesh>(signorini::testing::distortedBoxMesh(dim, dim == 2 ? 6 : 3));
 }
 
 struct Case {

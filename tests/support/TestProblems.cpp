@@ -10,6 +10,7 @@
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "fe/BoxMesh.hpp"
 #include "solver/linear/KrylovSolver.hpp"
 #include "solver/preconditioner/MueLuPreconditioner.hpp"
 
@@ -88,6 +89,18 @@ std::pair<int, int> unitBoxBottomAndTop(int dim, int body) {
     if (std::fabs(high - 1) < 1e-6) top = tag;
   }
   return {bottom, top};
+}
+
+SimplexMesh distortedBoxMesh(int dim, long long n) {
+  SimplexMesh mesh = makeBoxMesh(dim, {n, n, dim == 3 ? n : 1}, {1.0, 1.0, 1.0});
+  for (long long v = 0; v < mesh.numVertices(); ++v) {
+    double* x = &mesh.vertices[dim * v];
+    bool interior = true;
+    for (int c = 0; c < dim; ++c) interior = interior && x[c] > 1e-9 && x[c] < 1 - 1e-9;
+    if (interior)
+      for (int c = 0; c < dim; ++c) x[c] += 0.2 / n * std::sin(7.0 * v + 3.0 * c);
+  }
+  return mesh;
 }
 
 int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol) {

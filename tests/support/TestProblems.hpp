@@ -7,6 +7,7 @@
 #include <Teuchos_ParameterList.hpp>
 
 #include "assembly/DistributedSpace.hpp"
+#include "fe/SimplexMesh.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
 #include "signorini/solver/ContactQP.hpp"
 #include "signorini/solver/MultigridInput.hpp"
@@ -39,6 +40,10 @@ void meshUnitBox(int dim, double h);
 // The Gmsh tags of the bottom (y or z = 0) and top (y or z = 1) sides of the unit square or
 // cube `body` of the current model.
 std::pair<int, int> unitBoxBottomAndTop(int dim, int body);
+
+// The unit box mesh of n cells per side with its interior vertices moved by up to a fifth of
+// the spacing, deterministically: a mesh whose vertices are not on a lattice.
+SimplexMesh distortedBoxMesh(int dim, long long n);
 
 // Solves Q x = b by CG + MueLu to a relative residual of tol; returns the iterations.
 int solveLinear(const ContactQP& qp, const MultigridInput& multigrid, Vector& x, double tol);
