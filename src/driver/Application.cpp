@@ -347,6 +347,20 @@ void writeSolutionOutputs(const AssembledProblem& problem, const SolveResult& re
 
 namespace {
 
+// The vertex counts of the multigrid's geometric grids, finest first; empty without a grid.
+std::vector<long long> gridVertexCounts(const MultigridInput& multigrid) {
+  std::vector<long long> counts;
+  for (auto grid = multigrid.grid; grid; grid = grid->coarser()) counts.push_back(grid->numVertices());
+  return counts;
+}
+
+void logGridVertices(const std::vector<long long>& counts, std::ostream& out) {
+  if (counts.empty()) return;
+  out << "Signorini: geometric grids of";
+  for (std::size_t k = 0; k < counts.size(); ++k) out << (k ? ", " : " ") << counts[k];
+  out << " vertices\n";
+}
+
 // The user's parameters (the XML file, if any, then the --set overrides) and what the driver
 // reads of them: each list is validated once, by its reader. The top level and Output here;
 // Solver by the solver, made here, so that its mistakes stop the run before anything is built;
@@ -445,6 +459,7 @@ SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostre
   summary.result = &result;
   summary.record = &record;
   summary.setupSeconds = setupSeconds;
+  summary.gridVertices = gridVertexCounts(files.multigrid);
   summary.totalSeconds = maxOverRanks(*comm, total.stop());
   writeRunSummary(summary, cl, run.output, run.directory, false, *comm, out);
   return result;
@@ -481,6 +496,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
         << ", " << comm->getSize() << " MPI rank(s); setup " << built.setupSeconds << " s, assembly "
         << built.assemblySeconds << " s\n";
     for (const std::string& note : built.notes) out << "Signorini: " << note << "\n";
+    logGridVertices(gridVertexCounts(problem.multigrid), out);
   }
 
   if (!cl.exportQp.empty()) {
@@ -523,6 +539,7 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
     summary.serialMeshPeakMiB = built.setupPeakMiB[0];
     summary.setupPeakMiBPerRank = built.setupPeakMiB;
     summary.notes = built.notes;
+    summary.gridVertices = gridVertexCounts(problem.multigrid);
     writeRunSummary(summary, cl, output, directory, finite && output.get<bool>("write solution"), *comm, out);
   }
   Teuchos::TimeMonitor::summarize(comm.ptr(), out, false, true, false);

@@ -114,6 +114,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
   for (std::size_t i = 0; i < s.setupPeakMiBPerRank.size(); ++i) j << (i ? ", " : "") << number(s.setupPeakMiBPerRank[i]);
   j << "],\n  \"notes\": [";
   for (std::size_t i = 0; i < s.notes.size(); ++i) j << (i ? ", " : "") << quoted(s.notes[i]);
+  j << "],\n  \"grid_vertices\": [";
+  for (std::size_t i = 0; i < s.gridVertices.size(); ++i) j << (i ? ", " : "") << s.gridVertices[i];
   j << "],\n"
     << "  \"time\": {\"setup\": " << number(s.setupSeconds) << ", \"assembly\": " << number(s.assemblySeconds)
     << ", \"solve\": " << number(s.solveSeconds) << ", \"total\": " << number(s.totalSeconds) << "}\n"

@@ -330,6 +330,9 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_TRUE(has("\"serial_mesh_mib\": "));
   EXPECT_TRUE(has("\"serial_mesh_peak_rss_mib\": "));
   EXPECT_TRUE(has("\"notes\": [],"));  // a box is made as asked
+  // The box's geometric grids, the finest one of the mesh's 121 vertices, and the same in the log.
+  EXPECT_TRUE(has("\"grid_vertices\": [121, ")) << summary;
+  EXPECT_NE(log.str().find("geometric grids of 121, "), std::string::npos) << log.str();
   {  // one setup peak per rank
     const std::size_t at = summary.find("\"setup_peak_rss_mib\": [");
     ASSERT_NE(at, std::string::npos);
