@@ -347,7 +347,8 @@ void writeSolutionOutputs(const AssembledProblem& problem, const SolveResult& re
 
 namespace {
 
-// The vertex counts of the multigrid's geometric grids, finest first; empty without a grid.
+// The vertex counts of the grids given to the geometric multigrid, finest first (the
+// preconditioner may take fewer); empty without a grid.
 std::vector<long long> gridVertexCounts(const MultigridInput& multigrid) {
   std::vector<long long> counts;
   for (auto grid = multigrid.grid; grid; grid = grid->coarser()) counts.push_back(grid->numVertices());

@@ -26,7 +26,7 @@ struct RunSummary {
   double serialMeshMiB = 0, serialMeshPeakMiB = 0;
   std::vector<double> setupPeakMiBPerRank;  // every rank's peak growth over mesh and space
   std::vector<std::string> notes;           // on how the problem was built (BuildObserver::onNote)
-  std::vector<long long> gridVertices;      // the multigrid's geometric grids, finest first
+  std::vector<long long> gridVertices;      // the grids given to the geometric multigrid, finest first
   std::optional<ContactStatistics> contact;  // when the problem has a contact boundary: all pairs'
   struct ContactPairStatistics {
     std::string name, boundary, masterBoundary;
