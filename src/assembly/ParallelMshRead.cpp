@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "assembly/SortByKey.hpp"
 #include "assembly/SortedVertexKey.hpp"
 #include "core/Collectives.hpp"
 #include "core/NeighbourExchange.hpp"
@@ -39,13 +40,25 @@ constexpr long long kFacesPerRound = 1 << 21;
 
 using Face = std::pair<Key, long long>;  // a face's key and a cell it is a face of
 
+// Sorts faces by key and cell (a radix sort by the key's first tag, then the runs of one).
+void sortFaces(std::vector<Face>& faces) {
+  sortByKey(faces, [](const Face& f) { return f.first[0]; }, std::less<Face>());
+}
+
+// Sorts pairs of integers ascending (a radix sort by the first, then the runs of one first).
+template <class First, class Second>
+void sortPairs(std::vector<std::pair<First, Second>>& pairs) {
+  sortByKey(pairs, [](const std::pair<First, Second>& p) { return p.first; }, std::less<std::pair<First, Second>>());
+}
+
 // The distinct values of tagAt(0 .. count - 1), ascending, and in `place` each entry's index
-// among them: one sort of (tag, entry) pairs instead of a search or a hash lookup per entry.
+// among them: one radix sort of (tag, entry) pairs instead of a search or a hash lookup per
+// entry.
 template <class TagAt>
 std::vector<long long> distinctTags(std::size_t count, TagAt&& tagAt, std::vector<std::size_t>& place) {
   std::vector<std::pair<long long, std::size_t>> byTag(count);
   for (std::size_t i = 0; i < count; ++i) byTag[i] = {tagAt(i), i};
-  std::sort(byTag.begin(), byTag.end());
+  sortByKey(byTag, [](const std::pair<long long, std::size_t>& r) { return r.first; });
   std::vector<long long> tags;
   place.resize(count);
   for (const auto& [tag, i] : byTag) {
@@ -166,7 +179,7 @@ class ParallelRead {
     using Code = std::pair<long long, long long>;
     std::vector<Code> sorted(codes.size() / 2);
     for (std::size_t i = 0; i < sorted.size(); ++i) sorted[i] = {codes[2 * i], codes[2 * i + 1]};
-    std::sort(sorted.begin(), sorted.end());
+    sortPairs(sorted);
     std::vector<long long> sample;
     const std::size_t samples = std::min<std::size_t>(sorted.size(), 64);
     for (std::size_t s = 0; s < samples; ++s) {
@@ -186,7 +199,7 @@ class ParallelRead {
     codes = exchangeWithRanksJoined(*comm_, toRank);
     sorted.resize(codes.size() / 2);
     for (std::size_t i = 0; i < sorted.size(); ++i) sorted[i] = {codes[2 * i], codes[2 * i + 1]};
-    std::sort(sorted.begin(), sorted.end());
+    sortPairs(sorted);
     long long end = 0, count = static_cast<long long>(sorted.size());
     Teuchos::scan(*comm_, Teuchos::REDUCE_SUM, 1, &count, &end);
     toRank.assign(size_, {});
@@ -228,7 +241,7 @@ class ParallelRead {
     if (heldNodes_.empty()) {
       heldNodes_.resize(slice_.nodeTags.size());
       for (std::size_t i = 0; i < heldNodes_.size(); ++i) heldNodes_[i] = {slice_.nodeTags[i], i};
-      std::sort(heldNodes_.begin(), heldNodes_.end());
+      sortPairs(heldNodes_);
     }
     const auto it = std::lower_bound(heldNodes_.begin(), heldNodes_.end(), std::make_pair(tag, std::size_t{0}));
     if (it == heldNodes_.end() || it->first != tag)
@@ -323,7 +336,7 @@ class ParallelRead {
   // to `adjacent`); a face of one cell goes to `alone`; a face of more than two is an error.
   template <class Alone>
   void matchFaces(std::vector<Face>& faces, std::vector<long long>& adjacent, const Alone& alone) const {
-    std::sort(faces.begin(), faces.end());
+    sortFaces(faces);
     for (std::size_t first = 0, end = 0; first < faces.size(); first = end) {
       for (end = first + 1; end < faces.size() && faces[end].first == faces[first].first;) ++end;
       if (end - first > 2) notConforming(faces[first].first);
@@ -359,7 +372,7 @@ class ParallelRead {
     const std::size_t record = 5 + d_;
     std::vector<int> found(all.size() / record, 1), foundAnywhere(found.size(), 0);
     std::vector<Face> faces = sliceFaces([](const Key&, int&) { return true; });
-    std::sort(faces.begin(), faces.end());
+    sortFaces(faces);
     matchFacets(all, faces, [&](const long long* facet) { found[(facet - all.data()) / record] = 0; });
     Teuchos::reduceAll(*comm_, Teuchos::REDUCE_MAX, static_cast<int>(found.size()), found.data(), foundAnywhere.data());
     for (std::size_t f = 0; f < found.size(); ++f)
@@ -501,7 +514,7 @@ void ParallelRead::vertexData(GmshMeshPart& part) {
     std::vector<std::pair<long long, int>> users;  // (tag, asking rank), sorted
     for (int r = 0; r < size_; ++r)
       for (long long tag : questions[r]) users.emplace_back(tag, r);
-    std::sort(users.begin(), users.end());
+    sortPairs(users);
     for (int r = 0; r < size_; ++r) {  // each rank's tags ascending: one walk through the users
       auto first = users.begin();
       for (long long tag : questions[r]) {
@@ -560,11 +573,12 @@ void ParallelRead::cellsAndFacets(GmshMeshPart& part) const {
   const auto vertex = [&part](long long tag) {
     return std::lower_bound(part.vertexTags.begin(), part.vertexTags.end(), tag) - part.vertexTags.begin();
   };
-  std::vector<std::size_t> order(cells_.size() / record);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return cells_[record * a] < cells_[record * b]; });
+  std::vector<std::pair<long long, std::size_t>> byElement(cells_.size() / record);  // (element tag, cell)
+  for (std::size_t c = 0; c < byElement.size(); ++c) byElement[c] = {cells_[record * c], c};
+  sortPairs(byElement);
+  mesh.cells.reserve((d_ + 1) * byElement.size());
   std::vector<double> x(d_ * (d_ + 1));
-  for (std::size_t c : order) {
+  for (const auto& [element, c] : byElement) {
     const long long* cell = &cells_[record * c];
     long long ids[4];
     for (int i = 0; i <= d_; ++i) {
@@ -580,7 +594,7 @@ void ParallelRead::cellsAndFacets(GmshMeshPart& part) const {
     if (!slice_.bodyTags.empty()) mesh.cellTags.push_back(static_cast<int>(cell[1]));
   }
   const std::size_t facetRecord = d_ + 2;
-  order.resize(heldFacets_.size() / facetRecord);
+  std::vector<std::size_t> order(heldFacets_.size() / facetRecord);
   std::iota(order.begin(), order.end(), std::size_t{0});
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     return std::make_pair(heldFacets_[facetRecord * a], heldFacets_[facetRecord * a + 1]) <
