@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <limits>
 #include <string>
 #include <tuple>
@@ -13,6 +14,7 @@
 
 #include "assembly/GlobalPartition.hpp"
 #include "assembly/RefinedMeshPart.hpp"
+#include "assembly/SortByKey.hpp"
 #include "assembly/SplitMeshPart.hpp"
 #include "core/RootTask.hpp"
 #include "fe/GmshMesh.hpp"
@@ -88,7 +90,7 @@ Entities numberEntities(const SimplexMesh& mesh, const GlobalPartition& partitio
       std::sort(key.begin(), key.begin() + size);
       all.emplace_back(key, c * perCell + e);
     }
-  std::sort(all.begin(), all.end());
+  sortByKey(all, [](const auto& entity) { return std::get<0>(entity)[0]; }, std::less<>());
   Entities result;
   result.ids.resize(all.size());
   for (std::size_t i = 0; i < all.size(); ++i) {

@@ -45,12 +45,6 @@ void sortFaces(std::vector<Face>& faces) {
   sortByKey(faces, [](const Face& f) { return f.first[0]; }, std::less<Face>());
 }
 
-// Sorts pairs of integers ascending (a radix sort by the first, then the runs of one first).
-template <class First, class Second>
-void sortPairs(std::vector<std::pair<First, Second>>& pairs) {
-  sortByKey(pairs, [](const std::pair<First, Second>& p) { return p.first; }, std::less<std::pair<First, Second>>());
-}
-
 // The distinct values of tagAt(0 .. count - 1), ascending, and in `place` each entry's index
 // among them: one radix sort of (tag, entry) pairs instead of a search or a hash lookup per
 // entry.

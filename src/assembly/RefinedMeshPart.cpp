@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <utility>
 
+#include "assembly/SortByKey.hpp"
 #include "fe/LagrangeSpace.hpp"
 #include "fe/MortonCode.hpp"
 
@@ -27,7 +28,7 @@ std::vector<long long> coarseCellsAlongCurve(const SimplexMesh& mesh) {
       for (int c = 0; c < d; ++c) x[c] += mesh.vertices[d * mesh.cells[(d + 1) * cell + v] + c] / (d + 1);
     code[cell] = {mortonCode(x, lower, upper, d), cell};
   }
-  std::sort(code.begin(), code.end());
+  sortPairs(code);
   std::vector<long long> order(code.size());
   for (std::size_t i = 0; i < code.size(); ++i) order[i] = code[i].second;
   return order;
@@ -118,7 +119,7 @@ RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefine
   std::vector<long long>& ids = result.vertexIds;
   std::vector<std::pair<long long, std::size_t>> byId(pointIds.size());
   for (std::size_t k = 0; k < pointIds.size(); ++k) byId[k] = {pointIds[k], k};
-  std::sort(byId.begin(), byId.end());
+  sortPairs(byId);
   for (const auto& [id, at] : byId) {
     if (ids.empty() || ids.back() != id) {
       ids.push_back(id);

@@ -2,6 +2,8 @@
 // Sorting by an integer key: Boost's spreadsort, a radix sort, which orders the millions of
 // (tag, place) records a mesh reader sorts several times faster than std::sort.
 #include <algorithm>
+#include <functional>
+#include <utility>
 #include <vector>
 
 #include <boost/sort/spreadsort/integer_sort.hpp>
@@ -26,6 +28,12 @@ void sortByKey(std::vector<T>& records, const Key& key, const Less& less) {
     for (end = first + 1; end != records.end() && key(*end) == key(*first);) ++end;
     if (end - first > 1) std::sort(first, end, less);
   }
+}
+
+// Sorts pairs of integers ascending: by the first, then the second.
+template <class First, class Second>
+void sortPairs(std::vector<std::pair<First, Second>>& pairs) {
+  sortByKey(pairs, [](const std::pair<First, Second>& p) { return p.first; }, std::less<std::pair<First, Second>>());
 }
 
 }  // namespace signorini::detail

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <random>
 #include <utility>
 #include <vector>
@@ -63,6 +64,20 @@ TEST(SortByKey, SortsRecordsByTheirFirstFieldAndTheRest) {
   std::sort(expected.begin(), expected.end());
   sortByKey(faces, [](const auto& f) { return f.first[0]; }, std::less<std::pair<std::array<long long, 3>, long long>>());
   EXPECT_EQ(faces, expected);
+}
+
+TEST(SortByKey, SortsPairsOfUnsignedAndSignedIntegers) {
+  // (Morton code, cell) pairs as the mesh code sorts them, with codes over all 64 bits.
+  std::mt19937_64 random(17);
+  std::vector<std::pair<std::uint64_t, long long>> codes(100000);
+  for (auto& [code, cell] : codes) {
+    code = random() >> (random() % 2 ? 0 : 56);
+    cell = static_cast<long long>(random() % 100) - 50;
+  }
+  auto expected = codes;
+  std::sort(expected.begin(), expected.end());
+  signorini::detail::sortPairs(codes);
+  EXPECT_EQ(codes, expected);
 }
 
 TEST(SortByKey, TakesEmptyAndSingleRecords) {
