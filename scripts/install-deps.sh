@@ -19,6 +19,7 @@ packages=(
   libgmsh-dev gmsh            # Gmsh SDK (mesh reading) and CLI (test meshes)
   libmuparser-dev             # user expressions for loads, gaps, displacements
   libboost-dev                # Boost.Geometry's R-tree: the master facets near each slave facet
+  libcgal-dev                 # CGAL's Delaunay triangulations: the coarse grids of a mesh read as is
   libgtest-dev                # unit tests
   clang libclang-rt-14-dev    # the sanitizer build and the libFuzzer targets (make sanitize)
   valgrind                    # the memcheck run in the test suite

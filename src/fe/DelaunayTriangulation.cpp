@@ -3,33 +3,89 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
-#include <cstdlib>
 #include <string>
+#include <utility>
 
-#include <gmsh.h>
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_triangulation_3.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_data_structure_2.h>
+#include <CGAL/Triangulation_data_structure_3.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
-#include "fe/GmshSandbox.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
 namespace {
 
-// Gmsh's triangulation of the points, its node tags (from 1) as indices from 0.
-std::vector<long long> gmshCells(int dim, const std::vector<double>& points) {
-  gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
-  gmsh::option::setNumber("General.Terminal", 1);
-  gmsh::option::setNumber("General.Verbosity", 1);
-  // The same cells for the same points in any process: one thread, and the random numbers
-  // of Gmsh's point perturbation (rand()) started alike.
-  gmsh::option::setNumber("General.NumThreads", 1);
-  std::srand(1);
-  std::vector<std::size_t> tags;
-  if (dim == 2)
-    gmsh::model::mesh::triangulate(points, tags);
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+// Each vertex keeps the index of its point.
+using Delaunay2 = CGAL::Delaunay_triangulation_2<
+    Kernel, CGAL::Triangulation_data_structure_2<CGAL::Triangulation_vertex_base_with_info_2<long long, Kernel>>>;
+using Delaunay3 = CGAL::Delaunay_triangulation_3<
+    Kernel, CGAL::Triangulation_data_structure_3<CGAL::Triangulation_vertex_base_with_info_3<long long, Kernel>>>;
+
+// The corners of the points' bounding box enlarged by a fifth of its extent on every side.
+template <class Point>
+std::vector<Point> enclosingCorners(int dim, const std::vector<double>& points) {
+  double low[3], high[3];
+  for (int c = 0; c < dim; ++c) {
+    low[c] = high[c] = points[c];
+    for (std::size_t p = 0; p < points.size() / dim; ++p) {
+      low[c] = std::min(low[c], points[dim * p + c]);
+      high[c] = std::max(high[c], points[dim * p + c]);
+    }
+    const double margin = 0.2 * (high[c] - low[c]);
+    low[c] -= margin;
+    high[c] += margin;
+  }
+  std::vector<Point> corners;
+  for (int m = 0; m < (1 << dim); ++m) {
+    double x[3];
+    for (int c = 0; c < dim; ++c) x[c] = (m >> c) & 1 ? high[c] : low[c];
+    if constexpr (Point::Ambient_dimension::value == 2)
+      corners.emplace_back(x[0], x[1]);
+    else
+      corners.emplace_back(x[0], x[1], x[2]);
+  }
+  return corners;
+}
+
+// The finite cells of the triangulation of the points, dim + 1 point indices each, but those
+// whose circumsphere holds a corner of the enclosing box (exact predicates).
+template <class Triangulation>
+std::vector<long long> triangulationCells(int dim, const std::vector<double>& points) {
+  using Point = typename Triangulation::Point;
+  constexpr bool planar = Point::Ambient_dimension::value == 2;
+  std::vector<std::pair<Point, long long>> indexed(points.size() / dim);
+  for (std::size_t p = 0; p < indexed.size(); ++p) {
+    const double* x = &points[dim * p];
+    if constexpr (planar)
+      indexed[p] = {Point(x[0], x[1]), static_cast<long long>(p)};
+    else
+      indexed[p] = {Point(x[0], x[1], x[2]), static_cast<long long>(p)};
+  }
+  const Triangulation triangulation(indexed.begin(), indexed.end());
+  std::vector<long long> cells;
+  if (triangulation.dimension() < dim) return cells;  // the points lie in a line or a plane
+  const std::vector<Point> corners = enclosingCorners<Point>(dim, points);
+  const auto holds = [](const auto& cell, const Point& corner) {
+    const auto& v = [&cell](int k) -> const Point& { return cell->vertex(k)->point(); };
+    if constexpr (planar)
+      return Kernel().side_of_bounded_circle_2_object()(v(0), v(1), v(2), corner) == CGAL::ON_BOUNDED_SIDE;
+    else
+      return Kernel().side_of_bounded_sphere_3_object()(v(0), v(1), v(2), v(3), corner) == CGAL::ON_BOUNDED_SIDE;
+  };
+  const auto append = [&](const auto& cell) {
+    for (const Point& corner : corners)
+      if (holds(cell, corner)) return;
+    for (int k = 0; k <= dim; ++k) cells.push_back(cell->vertex(k)->info());
+  };
+  if constexpr (planar)
+    for (const auto& face : triangulation.finite_face_handles()) append(face);
   else
-    gmsh::model::mesh::tetrahedralize(points, tags);
-  std::vector<long long> cells(tags.size());
-  for (std::size_t k = 0; k < tags.size(); ++k) cells[k] = static_cast<long long>(tags[k]) - 1;
+    for (const auto& cell : triangulation.finite_cell_handles()) append(cell);
   return cells;
 }
 
@@ -55,24 +111,13 @@ double signedMeasure(int dim, const double* v, double& longest) {
 std::vector<long long> delaunayCells(int dim, const std::vector<double>& points) {
   if (dim != 2 && dim != 3) throw InputError("delaunayCells: the dimension must be 2 or 3, got " + std::to_string(dim));
   if (points.size() < static_cast<std::size_t>(dim * (dim + 1))) return {};
-  std::vector<long long> raw;
-  detail::answerFromChild(
-      "Gmsh's Delaunay mesher", "triangulating " + std::to_string(points.size() / dim) + " points", -1,
-      [&](int fd) {
-        const std::vector<long long> cells = gmshCells(dim, points);
-        detail::writeAll(fd, "A", 1);
-        detail::sendArray(fd, cells);
-      },
-      [&](int fd) { return detail::receiveArray(fd, raw); });
-  const auto numPoints = static_cast<long long>(points.size() / dim);
+  const std::vector<long long> raw =
+      dim == 2 ? triangulationCells<Delaunay2>(dim, points) : triangulationCells<Delaunay3>(dim, points);
   std::vector<long long> cells;
   cells.reserve(raw.size());
   double v[12];
   for (std::size_t c = 0; c + dim < raw.size(); c += dim + 1) {
-    for (int k = 0; k <= dim; ++k) {
-      if (raw[c + k] < 0 || raw[c + k] >= numPoints) throw Error("delaunayCells: Gmsh named a point it was not given");
-      std::copy_n(&points[dim * raw[c + k]], dim, &v[dim * k]);
-    }
+    for (int k = 0; k <= dim; ++k) std::copy_n(&points[dim * raw[c + k]], dim, &v[dim * k]);
     double longest = 0.0;
     const double measure = signedMeasure(dim, v, longest);
     if (std::abs(measure) <= 1e-9 * std::pow(longest, dim)) continue;

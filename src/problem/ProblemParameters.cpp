@@ -152,7 +152,7 @@ void addMeshParameters(ParameterList& p) {
         "The geometric multigrid's levels below the P1 grid of a Gmsh mesh that is not refined (a .msh file "
         "read as is, or a .geo geometry meshed at its sizes). \"delaunay\": each level's vertices are a "
         "maximal independent set of the finer level's (the same set on any rank count), triangulated by "
-        "Gmsh's Delaunay mesher per body and held by every rank, down to a grid the direct solver takes; "
+        "CGAL's Delaunay triangulation per body and held by every rank, down to a grid the direct solver takes; "
         "\"none\": MueLu's algebraic multigrid below the P1 grid",
         choices({"delaunay", "none"}));
 }
