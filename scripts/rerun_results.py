@@ -38,7 +38,7 @@ COMMANDS = {
     "forcing": ["bench/forcing.py"],
     "gmsh-meshes": ["bench/gmsh_meshes.py"],
     "gmsh-meshes-coarse-grids": ["bench/gmsh_meshes.py", "--cases", "3d-p1,3d-p2,2d-p1", "--ranks", "2",
-                                 "--repeat", "1", "--meshes", "box,msh all ranks,msh delaunay", "--name",
+                                 "--repeat", "2", "--meshes", "box,msh all ranks,msh delaunay", "--name",
                                  "gmsh-meshes-coarse-grids"],
     "gmsh-meshes-msh-read": ["bench/gmsh_meshes.py", "--cases", "3d-p1", "--ranks", "2,4", "--meshes",
                              "box,msh,msh all ranks", "--name", "gmsh-meshes-msh-read"],
