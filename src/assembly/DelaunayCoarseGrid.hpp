@@ -9,8 +9,9 @@
 // holds it whole (it has about an eighth of the finer grid's vertices in 3D, a quarter in 2D).
 // The vertices are nested, the cells are not: the interpolation to a finer vertex is P1 in
 // the coarse cell that holds it. A Delaunay triangulation covers the convex hull of a body's
-// vertices, less the flat slivers on it (delaunayCells): where the body is not convex, coarse cells span its concave parts (the coarse
-// space is then coarser there, never wrong: the coarse operators are Galerkin products), and
+// vertices, less the flat slivers on it (delaunayCells): where the body is not convex, coarse
+// cells span its concave parts (the coarse space is then coarser there, never wrong: the
+// coarse operators are Galerkin products), and
 // finer vertices outside the hull (on a curved boundary) take the nearest cell's weights,
 // clamped to [0, 1].
 #include <memory>
