@@ -1,8 +1,9 @@
 // delaunayCells: positively oriented cells with empty circumspheres (the Delaunay property,
 // checked against every point), covering the points' convex hull but for the flat slivers on
-// it; the same cells for the same points; degenerate input.
+// it, and so none of large circumsphere; the same cells for the same points; degenerate input.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <vector>
@@ -97,6 +98,36 @@ TEST_P(DelaunayCells, AreOrientedWithEmptyCircumspheresAndFillTheHull) {
   // The hull, the unit square / cube, less the slivers on its sides.
   EXPECT_GT(measure, 0.98);
   EXPECT_LE(measure, 1.0 + 1e-12);
+}
+
+// Without points on its sides, a box's random points have a convex hull of few, far apart
+// vertices, and the Delaunay triangulation of that hull has flat slivers along it: cells of
+// points near one side whose circumspheres reach far outside the box. A sphere through points
+// of the bounding box [l, h] with radius R > diag^2 / (0.4 min extent) (diag: that of the box
+// enlarged by a fifth of its extent on every side) holds a corner of the enlarged box, so
+// none of the cells kept can have one.
+TEST_P(DelaunayCells, OfRandomPointsHaveNoSliversOnTheHull) {
+  const int dim = GetParam();
+  for (unsigned seed : {3u, 4u, 7u}) {
+    const std::vector<double> points = randomPoints(dim, dim == 2 ? 400 : 300, seed);
+    double low[3] = {1, 1, 1}, high[3] = {0, 0, 0}, squaredDiagonal = 0.0, smallestExtent = 1.0;
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      low[p % dim] = std::min(low[p % dim], points[p]);
+      high[p % dim] = std::max(high[p % dim], points[p]);
+    }
+    for (int c = 0; c < dim; ++c) {
+      squaredDiagonal += std::pow(1.4 * (high[c] - low[c]), 2);
+      smallestExtent = std::min(smallestExtent, high[c] - low[c]);
+    }
+    const double largestRadius = squaredDiagonal / (0.4 * smallestExtent);
+    const std::vector<long long> cells = delaunayCells(dim, points);
+    ASSERT_FALSE(cells.empty());
+    for (std::size_t c = 0; c < cells.size(); c += dim + 1) {
+      double center[3];
+      EXPECT_LE(std::sqrt(circumsphere(dim, points, &cells[c], center)), largestRadius)
+          << "seed " << seed << ": cell " << c / (dim + 1) << " is a sliver on the hull";
+    }
+  }
 }
 
 TEST_P(DelaunayCells, AreTheSameForTheSamePoints) {
