@@ -42,10 +42,12 @@ struct VertexGraph {
 class DelaunayCoarseGrid final : public GeometricGrid {
  public:
   // Collective. The coarse grids below the grid of `graph`, each the coarsening of the one
-  // above, until one has at most `fewestVertices` vertices or a coarsening keeps more than
-  // `keptAtMost` of the vertices; null if the first would.
+  // above, until one has at most `fewestVertices` vertices (a few hundred: the direct solver
+  // takes them) or a coarsening keeps more than `keptAtMost` of the vertices; null if the
+  // first would.
   static std::shared_ptr<const DelaunayCoarseGrid> hierarchyBelow(const RCP<const Comm>& comm,
-                                                                  const VertexGraph& graph, long long fewestVertices,
+                                                                  const VertexGraph& graph,
+                                                                  long long fewestVertices = 300,
                                                                   double keptAtMost = 0.6);
 
   int dimension() const override { return dim_; }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "assembly/DelaunayCoarseGrid.hpp"
 #include "assembly/MeshPieces.hpp"
 #include "assembly/RefinedMeshPart.hpp"
 #include "signorini/core/Error.hpp"
@@ -23,11 +24,30 @@ bool lessByCoordinates(const double* a, const double* b, int dim) {
   return std::lexicographical_compare(a, a + dim, b, b + dim);
 }
 
+// This rank's vertices and edges of the coarse mesh (level 0, `coarsest`), each vertex owned
+// by its lattice point's owner, of its coarse cell's body (none: one body).
+VertexGraph coarseMeshGraph(const detail::CoarseMeshLattice& lattice, const detail::RefinedLevel& coarsest,
+                            const std::vector<int>& coarseCellBody) {
+  VertexGraph graph;
+  graph.dim = lattice.dim();
+  graph.ids = coarsest.vertexIds;
+  graph.coordinates = coarsest.mesh.vertices;
+  const int rank = lattice.comm()->getRank();
+  for (std::size_t v = 0; v < graph.ids.size(); ++v) {
+    const long long cell = coarsest.vertexCells[v];
+    graph.owned.push_back(lattice.pointOwner(cell, coarsest.vertexPoints[v]) == rank);
+    if (!coarseCellBody.empty())
+      graph.bodies.push_back(cell < static_cast<long long>(coarseCellBody.size()) ? std::max(coarseCellBody[cell], 0) : 0);
+  }
+  graph.setEdgesOfCells(coarsest.mesh.cells);
+  return graph;
+}
+
 }  // namespace
 
 std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
     std::shared_ptr<const detail::CoarseMeshLattice> lattice, const SimplexRefinement& refinement,
-    const DistributedSpace& space, const detail::RefinedLevel& finest) {
+    const DistributedSpace& space, const detail::RefinedLevel& finest, bool delaunayBelow) {
   // Finest first: each level is refined once, for its own grid and the points of the next coarser.
   const int levels = refinement.levels();
   std::shared_ptr<RefinedMeshGrid> top(new RefinedMeshGrid(*lattice, levels, levels, finest));
@@ -54,6 +74,8 @@ std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
     previous = std::move(own);
     finer = &previous;
   }
+  if (delaunayBelow)
+    above->coarser_ = DelaunayCoarseGrid::hierarchyBelow(lattice->comm(), coarseMeshGraph(*lattice, previous, coarseCellBody));
   return top;
 }
 

@@ -23,13 +23,15 @@ namespace signorini {
 
 class RefinedMeshGrid : public GeometricGrid {
  public:
-  // The finest grid (level refinement.levels()) of `space`, which makeRefinedMeshPart() made
-  // from `lattice` and `finest` (whose vertex data it reads), with the coarser levels below it
-  // down to the coarse mesh.
+  // Collective. The finest grid (level refinement.levels()) of `space`, which
+  // makeRefinedMeshPart() made from `lattice` and `finest` (whose vertex data it reads), with
+  // the coarser levels below it down to the coarse mesh; `delaunayBelow`: and below that the
+  // Delaunay coarse grids of the coarse mesh's vertices (DelaunayCoarseGrid), so that a large
+  // coarse mesh, which the direct solver does not take, need not be left to MueLu.
   static std::shared_ptr<const RefinedMeshGrid> hierarchy(std::shared_ptr<const detail::CoarseMeshLattice> lattice,
                                                           const SimplexRefinement& refinement,
                                                           const DistributedSpace& space,
-                                                          const detail::RefinedLevel& finest);
+                                                          const detail::RefinedLevel& finest, bool delaunayBelow);
 
   int dimension() const override { return dim_; }
   long long numVertices() const override { return numVertices_; }
@@ -64,7 +66,7 @@ class RefinedMeshGrid : public GeometricGrid {
   std::vector<long long> vertexIds_;  // this rank's vertices, ascending
   std::vector<double> coordinates_;   // dim_ per vertex
   std::vector<Point> points_;         // sorted by coordinates
-  std::shared_ptr<const RefinedMeshGrid> coarser_;
+  std::shared_ptr<const GeometricGrid> coarser_;  // a RefinedMeshGrid but below the coarse mesh
 };
 
 }  // namespace signorini

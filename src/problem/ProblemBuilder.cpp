@@ -97,7 +97,7 @@ std::shared_ptr<const GeometricGrid> latticeSpace(const Teuchos::ParameterList& 
   }
   if (gmsh.refinements == 0) return nullptr;
   const Teuchos::TimeMonitor timer(*setupTimer("levels"));
-  return RefinedMeshGrid::hierarchy(lattice, refinement, *space, finest);
+  return RefinedMeshGrid::hierarchy(lattice, refinement, *space, finest, def.delaunayCoarseGrids);
 }
 
 // The resolution of the finest lattice points of a Gmsh mesh: its space's nodes, k 2^r.
@@ -233,8 +233,7 @@ void orientMortarPairs(ProblemDefinition& def, const DistributedSpace& space) {
 std::shared_ptr<const GeometricGrid> delaunayHierarchy(const std::shared_ptr<const DistributedSpace>& space) {
   Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: mesh and space: coarse grids"));
   auto grid = std::make_shared<MeshVertexGrid>(space);
-  // Down to a grid of at most a few hundred vertices, which the direct solver takes.
-  grid->setCoarser(DelaunayCoarseGrid::hierarchyBelow(space->comm(), grid->vertexGraph(), 300));
+  grid->setCoarser(DelaunayCoarseGrid::hierarchyBelow(space->comm(), grid->vertexGraph()));
   return grid;
 }
 

@@ -149,11 +149,13 @@ void addMeshParameters(ParameterList& p) {
         "curved), those of a .msh file stay on the facets of the mesh read",
         range(0, 10));
   p.set("mesh: coarse grids", "delaunay",
-        "The geometric multigrid's levels below the P1 grid of a Gmsh mesh that is not refined (a .msh file "
-        "read as is, or a .geo geometry meshed at its sizes). \"delaunay\": each level's vertices are a "
-        "maximal independent set of the finer level's (the same set on any rank count), triangulated by "
-        "CGAL's Delaunay triangulation per body and held by every rank, down to a grid the direct solver takes; "
-        "\"none\": MueLu's algebraic multigrid below the P1 grid",
+        "The geometric multigrid's levels below the coarsest grid of a Gmsh mesh: the P1 grid of a mesh "
+        "that is not refined (a .msh file read as is, or a .geo geometry meshed at its sizes), the mesh "
+        "read of a refined one. \"delaunay\": each level's vertices are a maximal independent set of the "
+        "finer level's (the same set on any rank count), triangulated by CGAL's Delaunay triangulation per "
+        "body and held by every rank, down to a grid the direct solver takes; \"none\": below the P1 grid "
+        "MueLu's algebraic multigrid, below the mesh read of a refined mesh the direct solver up to "
+        "Solver/Preconditioner/geometric: direct solve size unknowns, MueLu above",
         choices({"delaunay", "none"}));
 }
 
@@ -352,8 +354,7 @@ ProblemDefinition detail::definitionOf(const ParameterList& p, int meshDim) {
   def.meshFile = p.get<std::string>("mesh: file");
   def.meshSizeFactor = p.get<double>("mesh: size factor");
   def.meshRefinements = p.get<int>("mesh: refinements");
-  def.delaunayCoarseGrids =
-      def.meshType == "gmsh" && def.meshRefinements == 0 && p.get<std::string>("mesh: coarse grids") == "delaunay";
+  def.delaunayCoarseGrids = def.meshType == "gmsh" && p.get<std::string>("mesh: coarse grids") == "delaunay";
   if (def.meshType == "gmsh" && def.meshFile.empty())
     throw InputError("Problem/mesh: file: required when mesh: type is \"gmsh\"");
 

@@ -18,6 +18,7 @@
 #include <Tpetra_Vector.hpp>
 
 #include "assembly/DistributedSpace.hpp"
+#include "solver/linear/StiffnessParts.hpp"
 #include "solver/preconditioner/GeometricMultigridPreconditioner.hpp"
 #include "signorini/core/Error.hpp"
 #include "signorini/problem/ProblemBuilder.hpp"
@@ -201,6 +202,41 @@ TEST_P(RefinedMesh, PassesThePatchTest) {
 
 INSTANTIATE_TEST_SUITE_P(Dimensions, RefinedMesh, ::testing::Values(2, 3),
                          [](const auto& info) { return std::to_string(info.param) + "D"; });
+
+// A coarse mesh too large for the direct solver gets Delaunay coarse grids below it (the
+// default Problem/mesh: coarse grids): a grid per refinement, then coarsenings of the coarse
+// mesh's vertices, which the multigrid takes as levels of its own. The QP is the same as with
+// MueLu below the coarse mesh (coarse grids "none"), so is its solution.
+TEST_P(RefinedMesh, LargeCoarseMeshHasDelaunayCoarseGridsBelowIt) {
+  const int dim = GetParam();
+  auto comm = Tpetra::getDefaultComm();
+  const std::string directory = writeMeshes(*comm, dim, dim == 2 ? 0.04 : 0.15);
+  const std::string base = comm->getRank() == 0 ? directory : directory + "/nowhere";
+  Teuchos::ParameterList definition = gmshPressedProblem(dim, "coarse.msh", 1, 1);
+  const AssembledProblem delaunay = buildProblem(definition, comm, base);
+  definition.set("mesh: coarse grids", "none");
+  const AssembledProblem none = buildProblem(definition, comm, base);
+  const GeometricGrid& coarseMesh = *delaunay.multigrid.grid->coarser();
+  ASSERT_GT(coarseMesh.numVertices(), 300);
+  ASSERT_NE(coarseMesh.coarser(), nullptr);
+  EXPECT_LT(coarseMesh.coarser()->numVertices(), coarseMesh.numVertices() / 2);
+  EXPECT_NE(coarseMesh.coarser()->description().find("Delaunay"), std::string::npos);
+  EXPECT_EQ(gridLevels(none.multigrid.grid.get()), 2);
+  EXPECT_GT(gridLevels(delaunay.multigrid.grid.get()), 2);
+
+  Teuchos::ParameterList solver;  // a direct solve of the coarse mesh would leave nothing below it
+  solver.sublist("Preconditioner").set("geometric: direct solve size", 200);
+  const CrsMatrix& Q = *assembledStiffness(delaunay.qp, delaunay.multigrid);
+  const GeometricMultigridPreconditioner multigrid(*delaunay.multigrid.grid, Q.getRowMap(), prescribedRows(Q),
+                                                   *delaunay.multigrid.coordinates, dim, 1, 200, Teuchos::ParameterList(),
+                                                   Teuchos::ParameterList(), 3);
+  EXPECT_EQ(multigrid.geometricLevels(), 2);  // the fine grid, the coarse mesh, a Delaunay grid
+  const SolveResult a = InteriorPointSolver(solver).solve(delaunay.qp, delaunay.multigrid);
+  const SolveResult b = InteriorPointSolver(solver).solve(none.qp, none.multigrid);
+  ASSERT_TRUE(a.converged() && b.converged()) << a.message << " / " << b.message;
+  EXPECT_NEAR(a.objective, b.objective, 1e-8 * std::fabs(b.objective));
+  EXPECT_EQ(a.activeConstraints, b.activeConstraints);
+}
 
 // A .geo geometry's curved boundary stays curved: the refinement's new vertices on it are
 // placed on the geometry (the Hertz examples' half-disk, a circle of radius 1 about (0, 1),

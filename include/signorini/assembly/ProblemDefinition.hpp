@@ -73,8 +73,8 @@ struct ProblemDefinition {
   std::string meshFile;
   double meshSizeFactor = 1.0;  ///< of a .geo geometry
   int meshRefinements = 0;      ///< uniform refinements of a Gmsh mesh
-  /// A Gmsh mesh without refinements gets coarse grids made from its vertices
-  /// (DelaunayCoarseGrid) below its P1 grid
+  /// A Gmsh mesh gets coarse grids made from vertices (DelaunayCoarseGrid) below its coarsest
+  /// grid: its P1 grid, or the mesh read of a refined one
   bool delaunayCoarseGrids = false;
   int degree = 1;
   Body body;                ///< the Problem-level material and body force
