@@ -5,8 +5,10 @@ plane (doc/benchmark-family.md). Three meshes per case:
 
   box      the family's box mesh (its nested geometric grids);
   refined  a coarse Gmsh mesh of the .geo refined uniformly on every rank
-           (Problem/mesh: refinements), each refinement a geometric level; "refined r2"
-           is refined twice;
+           (Problem/mesh: refinements), each refinement a geometric level, the default
+           Delaunay coarse grids below the coarse mesh; "refined r2" is refined twice;
+           "refined r1 none" is "refined r1" with MueLu below its coarse mesh where that is
+           too large for the direct solver (Problem/mesh: coarse grids = none);
   msh      the fine mesh written by Gmsh as a .msh file and read as is by rank 0, which
            partitions it (Problem/mesh: read = rank 0; its own P1 grid, MueLu below:
            Problem/mesh: coarse grids = none);
@@ -47,10 +49,12 @@ FAMILY = os.path.join(ROOT, "xml", "family")
 # name: (dimension, degree, box input, box cells, the refined meshes' coarse sizes and refinements,
 # fine .msh size or None, more rank counts than --ranks). Gmsh cuts the cube's edges into whole
 # numbers of segments, so the sizes come near the box's unknowns, not to them: the table gives n.
-# 3D P1 has two refined meshes: coarse size 1/17 refined twice comes nearest the box's size
-# (17 x 4 segments per edge), 0.116 refined three times (9 x 8 segments) has one level more.
+# 3D P1 has three refined meshes: coarse size 1/17 refined twice comes nearest the box's size
+# (17 x 4 segments per edge), 0.116 refined three times (9 x 8 segments) has one level more,
+# 0.031 refined once (32 x 2 segments) has a coarse mesh of about 90 000 unknowns, as a
+# geometry whose features need many coarse cells would.
 CASES = {
-    "3d-p1": (3, 1, "3d-p1-nx64.xml", 64, [(0.0588, 2), (0.116, 3)], 0.0142, []),
+    "3d-p1": (3, 1, "3d-p1-nx64.xml", 64, [(0.0588, 2), (0.116, 3), (0.031, 1)], 0.0142, []),
     "3d-p2": (3, 2, "3d-p2-nx32.xml", 32, [(0.127, 2)], 0.032, []),
     "2d-p1": (2, 1, "2d-p1-nx1000.xml", 1000, [(0.035, 5)], 0.0011, []),
     "3d-p1-large": (3, 1, "3d-p1-nx100.xml", 100, [(0.08, 3)], None, [4]),
@@ -61,6 +65,8 @@ CASES = {
 PARALLEL_ONLY = ("parts", "msh all ranks")
 # The .msh meshes as is, MueLu below their P1 grid but for "msh delaunay".
 AS_IS = ("msh", *PARALLEL_ONLY, "msh delaunay")
+# A refined mesh's name with this suffix: MueLu below its coarse mesh (no Delaunay coarse grids).
+WITHOUT_COARSE_GRIDS = " none"
 
 
 def refined_mesh(refinements):
@@ -109,9 +115,10 @@ def mesh_settings(case, mesh, workdir, ranks):
     if mesh == "box":
         return [f"Problem/mesh: cells={{{cells}}}"]
     for coarse, refinements in refined:
-        if mesh == refined_mesh(refinements):
+        if mesh in (refined_mesh(refinements), refined_mesh(refinements) + WITHOUT_COARSE_GRIDS):
+            grids = "none" if mesh.endswith(WITHOUT_COARSE_GRIDS) else "delaunay"
             return ["Problem/mesh: type=gmsh", f"Problem/mesh: file={write_geometry(workdir, dim, coarse)}",
-                    f"Problem/mesh: refinements={refinements}"]
+                    f"Problem/mesh: refinements={refinements}", f"Problem/mesh: coarse grids={grids}"]
     file = fine_parts(workdir, dim, fine, ranks) if mesh == "parts" else fine_msh(workdir, dim, fine)
     read = [f"Problem/mesh: read={'rank 0' if mesh == 'msh' else 'all ranks'}",
             f"Problem/mesh: coarse grids={'delaunay' if mesh == 'msh delaunay' else 'none'}"]
@@ -145,6 +152,12 @@ def run(case, mesh, ranks, linear, workdir):
             "assembly_seconds": s["time"]["assembly"], "solve_seconds": s["time"]["solve"], "wall_seconds": wall,
             "peak_mib_max_rank": s["memory_mib"]["max_rank"], "rank0_setup_mib": s["setup_peak_rss_mib"][0],
             "setup_mib_max_rank": max(s["setup_peak_rss_mib"])}
+
+
+def asked_for(meshes, asked):
+    """The meshes of `asked` among `meshes` and their refined ones without coarse grids."""
+    variants = [v for m in meshes for v in ([m, m + WITHOUT_COARSE_GRIDS] if m.startswith("refined") else [m])]
+    return [v for v in variants if v in asked]
 
 
 PHASES = ("setup_seconds", "assembly_seconds", "solve_seconds")
@@ -184,7 +197,7 @@ def main():
     parser.add_argument("--ranks", default="1,2")
     parser.add_argument("--cases", default=",".join(CASES))
     parser.add_argument("--meshes", default=None, help="only these meshes (box, refined rK, msh, parts, "
-                        "msh all ranks, msh delaunay); the box is the reference of the ratios")
+                        "msh all ranks, msh delaunay, refined rK none); the box is the reference of the ratios")
     parser.add_argument("--repeat", type=int, default=2, help="runs of each case, mesh and solve; the fastest is kept")
     parser.add_argument("--name", default="gmsh-meshes", help="the result set's name")
     parser.add_argument("--workdir", default=os.path.join(ROOT, "results", "gmsh-meshes"))
@@ -201,7 +214,7 @@ def main():
         _, _, _, _, refined, fine_size, _ = CASES[case]
         meshes = ["box"] + [refined_mesh(r) for _, r in refined] + (list(AS_IS) if fine_size else [])
         if args.meshes:
-            meshes = [m for m in meshes if m in args.meshes.split(",")]
+            meshes = asked_for(meshes, args.meshes.split(","))
         for np in rank_counts[case]:
             repeats = {(m, linear): [] for m in meshes if m not in PARALLEL_ONLY or np > 1 for linear in (False, True)}
             for _ in range(args.repeat):
