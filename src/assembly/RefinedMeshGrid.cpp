@@ -36,8 +36,8 @@ VertexGraph coarseMeshGraph(const detail::CoarseMeshLattice& lattice, const deta
   for (std::size_t v = 0; v < graph.ids.size(); ++v) {
     const long long cell = coarsest.vertexCells[v];
     graph.owned.push_back(lattice.pointOwner(cell, coarsest.vertexPoints[v]) == rank);
-    if (!coarseCellBody.empty())
-      graph.bodies.push_back(cell < static_cast<long long>(coarseCellBody.size()) ? std::max(coarseCellBody[cell], 0) : 0);
+    const bool known = cell < static_cast<long long>(coarseCellBody.size());
+    if (!coarseCellBody.empty()) graph.bodies.push_back(known ? std::max(coarseCellBody[cell], 0) : 0);
   }
   graph.setEdgesOfCells(coarsest.mesh.cells);
   return graph;
@@ -74,8 +74,10 @@ std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
     previous = std::move(own);
     finer = &previous;
   }
-  if (delaunayBelow)
-    above->coarser_ = DelaunayCoarseGrid::hierarchyBelow(lattice->comm(), coarseMeshGraph(*lattice, previous, coarseCellBody));
+  if (delaunayBelow) {
+    const VertexGraph coarseMesh = coarseMeshGraph(*lattice, previous, coarseCellBody);
+    above->coarser_ = DelaunayCoarseGrid::hierarchyBelow(lattice->comm(), coarseMesh);
+  }
   return top;
 }
 
