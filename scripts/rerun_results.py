@@ -62,6 +62,7 @@ COMMANDS = {
                                 "--name", "preconditioners-forcing"],
     "preconditioners-forcing-p2p3": ["bench/preconditioners.py", "--sequence", "2d-p2,2d-p3,3d-p2", "--configs",
                                      "default,unfiltered", "--name", "preconditioners-forcing-p2p3"],
+    "qp-handover": ["bench/qp_handover.py"],
     "reference-solve": ["bench/reference_solve.py"],
     "scaling": ["scripts/scaling.py", "--ranks", "1,2"],
     "table2": ["scripts/table2.py"],

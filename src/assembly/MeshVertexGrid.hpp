@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "assembly/DelaunayCoarseGrid.hpp"
+#include "solver/DelaunayCoarseGrid.hpp"
 #include "assembly/DistributedSpace.hpp"
 #include "signorini/core/GeometricGrid.hpp"
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstring>
 
-#include "assembly/DelaunayCoarseGrid.hpp"
+#include "solver/DelaunayCoarseGrid.hpp"
 #include "assembly/MeshPieces.hpp"
 #include "assembly/RefinedMeshPart.hpp"
 #include "signorini/core/Error.hpp"

@@ -444,6 +444,7 @@ SolveResult runQP(const CommandLine& cl, const RCP<const Comm>& comm, std::ostre
     out << "  nodes " << (files.repartitioned ? "repartitioned by METIS" : "in file order") << ": "
         << 100 * files.crossRankCouplings << "% of Q's node couplings between ranks (file order: "
         << 100 * files.crossRankCouplingsInFileOrder << "%)\n";
+  if (comm->getRank() == 0) logGridVertices(gridVertexCounts(files.multigrid), out);
   RunSummary summary;
   SolveRecorder record;
   SolveResult result = solveLogged(qp, files.multigrid, *run.solver, out, record, summary.solveSeconds);
@@ -502,9 +503,10 @@ SolveResult runApplication(const CommandLine& cl, const RCP<const Comm>& comm, s
 
   if (!cl.exportQp.empty()) {
     writeQP(problem.qp, problem.multigrid, cl.exportQp);
-    // A P2/P3 space's mesh, for the P_k -> P1 step of a run on these files.
-    if (def.degree > 1) detail::writeCells(space, cl.exportQp);
-    if (root) out << "Exported Q, b, A, d, coords" << (def.degree > 1 ? ", cells" : "") << " to " << cl.exportQp << "/\n";
+    // The mesh's P1 cells: a run on these files makes the same geometric multigrid levels of
+    // them (the P_k -> P1 step, the Delaunay coarse grids below) as of a mesh read as is.
+    detail::writeCells(space, cl.exportQp);
+    if (root) out << "Exported Q, b, A, d, coords, cells to " << cl.exportQp << "/\n";
   }
 
   const Teuchos::ParameterList& output = run.output;

@@ -19,6 +19,7 @@
 #include <Tpetra_MultiVector.hpp>
 #include <Tpetra_Vector.hpp>
 
+#include "core/Collectives.hpp"
 #include "core/RootTask.hpp"
 #include "io/QPCells.hpp"
 #include "io/QPNodeDistribution.hpp"
@@ -142,10 +143,50 @@ RCP<MultiVector> everywhere(const MultiVector& v) {
   return copy;
 }
 
-// The P1 grid of cells.mtx (dim + 1 node numbers per cell), if the directory has one and its
-// cells' vertices are fewer than the nodes (a P2 or P3 space; the grid of a P1 space would be
-// the space itself). Every rank reads all cells and node coordinates, finds the cells that
-// hold its nodes, and keeps only those. Collective.
+// Of `cells` (dim + 1 node numbers each, of the sorted `vertices` at `vertexCoordinates`),
+// those that hold this rank's nodes: every cell with one of them as a vertex, so that the
+// grid has all their edges, and for a node that is no vertex (of a P2 or P3 space) the cell
+// that the grid of all cells locates it in. Collective.
+std::vector<long long> cellsHoldingNodes(int dim, const std::vector<long long>& cells,
+                                         const std::vector<long long>& vertices,
+                                         const std::vector<double>& vertexCoordinates, const MultiVector& coordinates) {
+  const Map& nodes = *coordinates.getMap();
+  const std::size_t corners = dim + 1, numCells = cells.size() / corners;
+  std::vector<char> taken(numCells, 0);
+  for (std::size_t c = 0; c < numCells; ++c)
+    for (std::size_t k = 0; k < corners && !taken[c]; ++k) taken[c] = nodes.isNodeGlobalElement(cells[corners * c + k]);
+  std::vector<std::size_t> inside;  // local nodes that are no vertex
+  for (std::size_t i = 0; i < coordinates.getLocalLength(); ++i)
+    if (!std::binary_search(vertices.begin(), vertices.end(), nodes.getGlobalElement(i))) inside.push_back(i);
+  if (sumOverRanks(*nodes.getComm(), static_cast<long long>(inside.size())) > 0) {
+    const SimplexGrid all(nodes.getComm(), dim, vertices, vertexCoordinates, cells, SimplexGrid::Outside::error,
+                          SimplexGrid::CoarseGrids::none);
+    std::map<std::vector<long long>, long long> cellOf;  // sorted vertices -> cell
+    for (std::size_t c = 0; c < numCells; ++c) {
+      std::vector<long long> key(cells.begin() + corners * c, cells.begin() + corners * (c + 1));
+      std::sort(key.begin(), key.end());
+      cellOf[key] = static_cast<long long>(c);
+    }
+    long long holding[4];
+    double x[3], weights[4];
+    for (std::size_t i : inside) {
+      for (int k = 0; k < dim; ++k) x[k] = coordinates.getData(k)[i];
+      all.interpolation(x, holding, weights);
+      std::vector<long long> key(holding, holding + corners);
+      std::sort(key.begin(), key.end());
+      taken[cellOf.at(key)] = 1;
+    }
+  }
+  std::vector<long long> mine;
+  for (std::size_t c = 0; c < numCells; ++c)
+    if (taken[c]) mine.insert(mine.end(), cells.begin() + corners * c, cells.begin() + corners * (c + 1));
+  return mine;
+}
+
+// The P1 grid of cells.mtx (dim + 1 node numbers per cell), if the directory has one, with
+// its Delaunay coarse grids: of a P2 or P3 space the P_k -> P1 step, of a P1 space the grids
+// below it. Every rank reads all cells and node coordinates and keeps the cells that hold its
+// nodes. Collective.
 std::shared_ptr<const GeometricGrid> cellGrid(const std::string& path, const MultiVector& coordinates, int dim) {
   const RCP<const Comm> comm = coordinates.getMap()->getComm();
   int present = 0;
@@ -171,36 +212,13 @@ std::shared_ptr<const GeometricGrid> cellGrid(const std::string& path, const Mul
   vertices = cells;
   std::sort(vertices.begin(), vertices.end());
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
-  if (static_cast<long long>(vertices.size()) == numNodes) return nullptr;
   const auto coordinatesOf = [&](const std::vector<long long>& nodes) {
     std::vector<double> x;
     for (long long node : nodes)
       for (int k = 0; k < dim; ++k) x.push_back(allCoordinates->getData(k)[node]);
     return x;
   };
-  // The cells that hold this rank's nodes, found by the grid of all cells.
-  std::vector<long long> mine;
-  {
-    const SimplexGrid all(comm, dim, vertices, coordinatesOf(vertices), cells);
-    std::map<std::vector<long long>, long long> cellOf;  // sorted vertices -> cell
-    for (std::size_t c = 0; c < cells.size() / (dim + 1); ++c) {
-      std::vector<long long> key(cells.begin() + (dim + 1) * c, cells.begin() + (dim + 1) * (c + 1));
-      std::sort(key.begin(), key.end());
-      cellOf[key] = static_cast<long long>(c);
-    }
-    std::vector<char> taken(cells.size() / (dim + 1), 0);
-    long long holding[4];
-    double x[3], weights[4];
-    for (std::size_t i = 0; i < coordinates.getLocalLength(); ++i) {
-      for (int k = 0; k < dim; ++k) x[k] = coordinates.getData(k)[i];
-      all.interpolation(x, holding, weights);
-      std::vector<long long> key(holding, holding + dim + 1);
-      std::sort(key.begin(), key.end());
-      const long long c = cellOf.at(key);
-      if (!taken[c]) mine.insert(mine.end(), cells.begin() + (dim + 1) * c, cells.begin() + (dim + 1) * (c + 1));
-      taken[c] = 1;
-    }
-  }
+  const std::vector<long long> mine = cellsHoldingNodes(dim, cells, vertices, coordinatesOf(vertices), coordinates);
   std::vector<long long> myVertices = mine;
   std::sort(myVertices.begin(), myVertices.end());
   myVertices.erase(std::unique(myVertices.begin(), myVertices.end()), myVertices.end());

@@ -15,7 +15,7 @@
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/CoarseMeshLattice.hpp"
 #include "assembly/ElasticityAssembler.hpp"
-#include "assembly/DelaunayCoarseGrid.hpp"
+#include "solver/DelaunayCoarseGrid.hpp"
 #include "assembly/MeshVertexGrid.hpp"
 #include "assembly/MortarFacet.hpp"
 #include "assembly/ParallelMshRead.hpp"

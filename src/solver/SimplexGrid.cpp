@@ -14,6 +14,7 @@
 #include <boost/geometry/strategies/strategies.hpp>
 
 #include "signorini/core/Error.hpp"
+#include "solver/DelaunayCoarseGrid.hpp"
 
 namespace signorini {
 namespace bg = boost::geometry;
@@ -62,6 +63,19 @@ bool nondegenerate(int dim, const double* v) {
                                     m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                                     m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
   return std::abs(det) > 1e-12 * std::pow(longest, dim);
+}
+
+// The grid's vertices and edges, each vertex owned by the rank that `owned` gives it.
+VertexGraph vertexGraph(int dim, const std::vector<long long>& ids, const std::vector<double>& coordinates,
+                        const std::vector<long long>& cells, const Map& owned) {
+  VertexGraph graph;
+  graph.dim = dim;
+  graph.ids = ids;
+  graph.owned.resize(ids.size());
+  for (std::size_t v = 0; v < ids.size(); ++v) graph.owned[v] = owned.isNodeGlobalElement(ids[v]);
+  graph.coordinates = coordinates;
+  graph.setEdgesOfCells(cells);
+  return graph;
 }
 
 }  // namespace
@@ -126,7 +140,8 @@ std::unique_ptr<SimplexGrid::Buckets> SimplexGrid::Buckets::over(int dim, const 
 }
 
 SimplexGrid::SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long long> vertexIds,
-                         std::vector<double> coordinates, std::vector<long long> cells, Outside outside)
+                         std::vector<double> coordinates, std::vector<long long> cells, Outside outside,
+                         CoarseGrids coarseGrids)
     : dim_(dim), outside_(outside) {
   if (dim != 2 && dim != 3) throw InputError("SimplexGrid: the dimension must be 2 or 3, got " + std::to_string(dim));
   const std::size_t numVertices = vertexIds.size();
@@ -160,9 +175,12 @@ SimplexGrid::SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long 
   const auto invalid = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
   std::vector<GlobalOrdinal> ids(vertexIds_.begin(), vertexIds_.end());
   const RCP<const Map> overlapping = rcp(new Map(invalid, Teuchos::ArrayView<const GlobalOrdinal>(ids), 0, comm));
-  numVertices_ = static_cast<long long>(Tpetra::createOneToOne(overlapping)->getGlobalNumElements());
+  const RCP<const Map> owned = Tpetra::createOneToOne(overlapping);
+  numVertices_ = static_cast<long long>(owned->getGlobalNumElements());
 
   buckets_ = Buckets::over(dim, coordinates_, cells_);
+  if (coarseGrids == CoarseGrids::delaunay)
+    coarser_ = DelaunayCoarseGrid::hierarchyBelow(comm, vertexGraph(dim, vertexIds_, coordinates_, cells_, *owned));
 }
 
 SimplexGrid::~SimplexGrid() = default;

@@ -424,6 +424,27 @@ TEST(Application, ExportedP2QPKeepsItsMultigridStep) {
   EXPECT_EQ(imported.krylovIterations, direct.krylovIterations);
 }
 
+// A P1 problem on a Gmsh mesh read as is: the export's cells give the run on the files the
+// direct run's Delaunay coarse grids, so the same iterations, Krylov ones included.
+TEST(Application, ExportedP1QPKeepsItsCoarseGrids) {
+  auto comm = Tpetra::getDefaultComm();
+  const std::string dir = scratchDirectory("app-qp-p1", *comm);
+  const auto [direct, imported] = exportedAndImported(
+      sourceDir() + "/examples/hertz/half-disk-2d.xml",
+      {"Output/write solution=false", "Output/write contact samples=false"}, dir);
+  EXPECT_EQ(imported.outerIterations, direct.outerIterations);
+  EXPECT_EQ(imported.krylovIterations, direct.krylovIterations);
+  comm->barrier();
+  if (comm->getRank() != 0) return;
+  const auto grids = [](const std::string& summary) {
+    const std::size_t at = summary.find("\"grid_vertices\": [");
+    return at == std::string::npos ? std::string() : summary.substr(at, summary.find(']', at) - at);
+  };
+  const std::string ofDirect = grids(readFile(dir + "/direct/summary.json"));
+  EXPECT_NE(ofDirect.find(','), std::string::npos) << ofDirect << ": coarse grids below the P1 grid";
+  EXPECT_EQ(grids(readFile(dir + "/imported/summary.json")), ofDirect);
+}
+
 TEST(Application, QPDirectoryAndExportExcludeEachOther) {
   const char* argv[] = {"signorini", "--qp", "a", "--export-qp", "b"};
   EXPECT_NE(inputErrorOf([&] { CommandLine::parse(5, argv); }).find("exclude each other"), std::string::npos);

@@ -2,7 +2,9 @@
 /// \file
 /// A GeometricGrid made from any simplex mesh a caller has: the P1 grid of its triangles or
 /// tetrahedra, for the geometric multigrid's P_k -> P1 step on a QP assembled by another
-/// finite element code (MultigridInput::grid). Below it MueLu takes over.
+/// finite element code (MultigridInput::grid), or the finest grid of a P1 QP. Below it come
+/// coarse grids made of its own vertices (CoarseGrids::delaunay), as below a Gmsh mesh read as
+/// is, or MueLu's algebraic levels (CoarseGrids::none).
 #include <memory>
 #include <string>
 #include <vector>
@@ -24,8 +26,14 @@ class SimplexGrid : public GeometricGrid {
   /// nearest of them (GeometricGrid::interpolation) instead of being an error: for cells that
   /// cover the nodes only up to the boundary's curvature, a coarser grid of the mesh's.
   enum class Outside { error, nearestCell };
+  /// With CoarseGrids::delaunay the coarse grids below this one are the Delaunay
+  /// triangulations of maximal independent sets of its vertices, level by level, down to a
+  /// few hundred vertices: the same grids on any rank count, each a geometric multigrid level
+  /// (doc/algorithms.md). With CoarseGrids::none there are none, and MueLu coarsens below it.
+  enum class CoarseGrids { none, delaunay };
   SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long long> vertexIds, std::vector<double> coordinates,
-              std::vector<long long> cells, Outside outside = Outside::error);
+              std::vector<long long> cells, Outside outside = Outside::error,
+              CoarseGrids coarseGrids = CoarseGrids::delaunay);
   ~SimplexGrid() override;
 
   int dimension() const override { return dim_; }
@@ -39,7 +47,7 @@ class SimplexGrid : public GeometricGrid {
   /// weights. Throws Error for a point in none, unless the grid moves such points onto its
   /// nearest cell (Outside::nearestCell).
   void interpolation(const double* x, long long* vertices, double* weights) const override;
-  std::shared_ptr<const GeometricGrid> coarser() const override { return nullptr; }
+  std::shared_ptr<const GeometricGrid> coarser() const override { return coarser_; }
   std::string description() const override;
 
  private:
@@ -56,6 +64,7 @@ class SimplexGrid : public GeometricGrid {
   std::vector<double> coordinates_;   // dim_ per vertex, in vertexIds_ order
   std::vector<long long> cells_;      // dim_ + 1 local vertex indices per cell
   std::unique_ptr<Buckets> buckets_;  // cells and vertices by place (R-trees)
+  std::shared_ptr<const GeometricGrid> coarser_;
 };
 
 }  // namespace signorini

@@ -1,4 +1,4 @@
-#include "fe/DelaunayTriangulation.hpp"
+#include "solver/DelaunayTriangulation.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -14,7 +14,7 @@
 #include <Teuchos_CommHelpers.hpp>
 #include <Tpetra_Core.hpp>
 
-#include "assembly/DelaunayCoarseGrid.hpp"
+#include "solver/DelaunayCoarseGrid.hpp"
 #include "assembly/DistributedSpace.hpp"
 #include "assembly/MeshVertexGrid.hpp"
 #include "solver/preconditioner/LocalBlock.hpp"

@@ -1,4 +1,4 @@
-#include "assembly/DelaunayCoarseGrid.hpp"
+#include "solver/DelaunayCoarseGrid.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -12,7 +12,7 @@
 
 #include "core/Collectives.hpp"
 #include "core/SplitMixHash.hpp"
-#include "fe/DelaunayTriangulation.hpp"
+#include "solver/DelaunayTriangulation.hpp"
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/LocalBlock.hpp"
 
@@ -126,8 +126,9 @@ std::vector<char> independentSet(const RCP<const Comm>& comm, const VertexGraph&
   return selected;
 }
 
-// The selected vertices every rank owns, numbered in rank order: their coordinates and
-// bodies, the same on every rank. Collective.
+// The selected vertices every rank owns, numbered in the order of their ids in the finer
+// grid, whichever ranks own them: their coordinates and bodies, the same on every rank.
+// Collective.
 void gatherSelected(const RCP<const Comm>& comm, const VertexGraph& g, const std::vector<char>& selected,
                     std::vector<double>& coordinates, std::vector<int>& bodies) {
   std::vector<std::size_t> mine;
@@ -137,18 +138,28 @@ void gatherSelected(const RCP<const Comm>& comm, const VertexGraph& g, const std
   long long upTo = 0, total = 0;
   Teuchos::scan(*comm, Teuchos::REDUCE_SUM, 1, &count, &upTo);
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &count, &total);
-  std::vector<double> local(static_cast<std::size_t>((g.dim + 1) * total), 0.0);
+  // Coordinates, then bodies, then ids (exact in doubles below 2^53).
+  const int dim = g.dim;
+  std::vector<double> local(static_cast<std::size_t>((dim + 2) * total), 0.0);
   for (long long k = 0; k < count; ++k) {
     const std::size_t at = static_cast<std::size_t>(upTo - count + k);
-    std::copy_n(&g.coordinates[g.dim * mine[k]], g.dim, &local[g.dim * at]);
-    local[g.dim * total + at] = g.bodies.empty() ? 0 : g.bodies[mine[k]];
+    std::copy_n(&g.coordinates[dim * mine[k]], dim, &local[dim * at]);
+    local[dim * total + at] = g.bodies.empty() ? 0 : g.bodies[mine[k]];
+    local[(dim + 1) * total + at] = static_cast<double>(g.ids[mine[k]]);
   }
   std::vector<double> all(local.size());
   if (!all.empty())
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(all.size()), local.data(), all.data());
-  coordinates.assign(all.begin(), all.begin() + g.dim * total);
+  std::vector<long long> order(total);
+  std::iota(order.begin(), order.end(), 0LL);
+  const double* id = &all[(dim + 1) * total];
+  std::sort(order.begin(), order.end(), [&](long long p, long long q) { return id[p] < id[q]; });
+  coordinates.resize(dim * total);
   bodies.resize(total);
-  for (long long k = 0; k < total; ++k) bodies[k] = static_cast<int>(all[g.dim * total + k]);
+  for (long long k = 0; k < total; ++k) {
+    std::copy_n(&all[dim * order[k]], dim, &coordinates[dim * k]);
+    bodies[k] = static_cast<int>(all[dim * total + order[k]]);
+  }
 }
 
 // Each body's Delaunay cells (vertex indices into all the vertices), made on rank 0 from the
@@ -212,7 +223,7 @@ DelaunayCoarseGrid::DelaunayCoarseGrid(int dim, std::vector<double> coordinates,
         xyz.insert(xyz.end(), &coordinates_[dim * v], &coordinates_[dim * v + dim]);
       }
     byBody_.push_back(std::make_unique<SimplexGrid>(self, dim, std::move(ids), std::move(xyz), cellsOfBodies[b],
-                                                    SimplexGrid::Outside::nearestCell));
+                                                    SimplexGrid::Outside::nearestCell, SimplexGrid::CoarseGrids::none));
   }
 }
 

@@ -8,7 +8,7 @@
 #include <random>
 #include <vector>
 
-#include "fe/DelaunayTriangulation.hpp"
+#include "solver/DelaunayTriangulation.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace {

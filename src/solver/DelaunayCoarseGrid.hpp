@@ -1,6 +1,7 @@
 #pragma once
-// Coarse grids for a mesh that has none of its own (a Gmsh mesh read as is), so that the
-// geometric multigrid has levels below its P1 grid as on box and refined meshes.
+// Coarse grids for a mesh that has none of its own (a Gmsh mesh read as is, the coarse mesh
+// of a refined one, a caller's SimplexGrid), so that the geometric multigrid has levels below
+// its P1 grid as on box meshes.
 //
 // Each coarse grid's vertices are a maximal independent set of the finer grid's vertices (no
 // two joined by an edge of the finer grid; every other vertex next to one of them), chosen
