@@ -29,7 +29,9 @@ class SimplexGrid : public GeometricGrid {
   /// With CoarseGrids::delaunay the coarse grids below this one are the Delaunay
   /// triangulations of maximal independent sets of its vertices, level by level, down to a
   /// few hundred vertices: the same grids on any rank count, each a geometric multigrid level
-  /// (doc/algorithms.md). With CoarseGrids::none there are none, and MueLu coarsens below it.
+  /// (doc/algorithms.md). Their first level is as coarse as the mesh's own when the ranks'
+  /// cells together are all of its cells (the edges they leave out join vertices that may then
+  /// both be kept). With CoarseGrids::none there are none, and MueLu coarsens below it.
   enum class CoarseGrids { none, delaunay };
   SimplexGrid(const RCP<const Comm>& comm, int dim, std::vector<long long> vertexIds, std::vector<double> coordinates,
               std::vector<long long> cells, Outside outside = Outside::error,
