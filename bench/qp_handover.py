@@ -52,7 +52,7 @@ def signorini(args, out):
 
 def export(case, ranks, workdir):
     """The case's QP files (with cells.mtx) and a copy without it; returns both directories."""
-    dim, degree, family, size = CASES[case]
+    family = CASES[case][2]
     files = os.path.join(workdir, f"{case}-qp")
     bare = files + "-no-cells"
     if not os.path.exists(os.path.join(bare, "Q.mtx")):
