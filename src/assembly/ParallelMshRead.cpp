@@ -5,6 +5,7 @@
 
 #include <Teuchos_CommHelpers.hpp>
 #include <Teuchos_DefaultMpiComm.hpp>
+#include <Teuchos_TimeMonitor.hpp>
 
 #include <algorithm>
 #include <array>
@@ -78,15 +79,26 @@ class ParallelRead {
     if (slice_.numCells < size_)
       throw InputError(prefix_ + "it has " + std::to_string(slice_.numCells) + " cells, fewer than the " +
                        std::to_string(size_) + " ranks");
-    orderCellsAlongCurve();
-    faceDirectory();
-    partition();
-    facetsToParts();
-    migrateCells();
-    return assemble();
+    step("curve order", [this] { orderCellsAlongCurve(); });
+    step("face matching", [this] { faceDirectory(); });
+    step("partition", [this] { partition(); });
+    step("migration", [this] {
+      facetsToParts();
+      migrateCells();
+    });
+    GmshMeshPart result;
+    step("part", [&] { result = assemble(); });
+    return result;
   }
 
  private:
+  // Runs one step of the reading under its timer in the log's table ("mesh read: <name>").
+  template <class Step>
+  static void step(const std::string& name, const Step& run) {
+    const Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: mesh and space: mesh read: " + name));
+    run();
+  }
+
   int cellOwner(long long cell) const {
     return static_cast<int>(std::upper_bound(cellStart_.begin(), cellStart_.end(), cell) - cellStart_.begin()) - 1;
   }
@@ -623,7 +635,10 @@ GmshMeshPart readMshInParallel(const RCP<const Comm>& comm, const std::string& p
     return {};
   }
   MshFileSlice slice;
-  runOnEveryRank(*comm, [&] { slice = readMshSlice(path, comm->getRank(), comm->getSize(), unsupported); });
+  {
+    const Teuchos::TimeMonitor timer(*Teuchos::TimeMonitor::getNewTimer("Signorini: mesh and space: mesh read: slices"));
+    runOnEveryRank(*comm, [&] { slice = readMshSlice(path, comm->getRank(), comm->getSize(), unsupported); });
+  }
   if (!onEveryRank(*comm, unsupported.empty())) {
     if (unsupported.empty()) unsupported = "another rank found it outside what the parallel reader reads";
     return {};
