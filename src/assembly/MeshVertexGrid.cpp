@@ -97,7 +97,7 @@ VertexGraph MeshVertexGrid::vertexGraph() const {
   const auto& xyz = ds.space().nodeCoordinates();
   g.coordinates.assign(xyz.begin(), xyz.begin() + dim * count);
   g.bodies.assign(bodyOfNode_.begin(), bodyOfNode_.begin() + count);
-  g.setEdgesOfCells(mesh.cells);
+  g.setEdgesAndFeaturesOfCells(*ds.comm(), mesh.cells);
   return g;
 }
 

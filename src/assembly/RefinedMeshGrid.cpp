@@ -39,7 +39,7 @@ VertexGraph coarseMeshGraph(const detail::CoarseMeshLattice& lattice, const deta
     const bool known = cell < static_cast<long long>(coarseCellBody.size());
     if (!coarseCellBody.empty()) graph.bodies.push_back(known ? std::max(coarseCellBody[cell], 0) : 0);
   }
-  graph.setEdgesOfCells(coarsest.mesh.cells);
+  graph.setEdgesAndFeaturesOfCells(*lattice.comm(), coarsest.mesh.cells);
   return graph;
 }
 

@@ -12,6 +12,7 @@
 
 #include "core/Collectives.hpp"
 #include "core/SplitMixHash.hpp"
+#include "solver/BoundaryFeatures.hpp"
 #include "solver/DelaunayTriangulation.hpp"
 #include "signorini/core/Error.hpp"
 #include "solver/preconditioner/LocalBlock.hpp"
@@ -44,17 +45,24 @@ void VertexGraph::setEdgesOfCells(const std::vector<long long>& cells) {
   }
 }
 
+void VertexGraph::setEdgesAndFeaturesOfCells(const Comm& comm, const std::vector<long long>& cells) {
+  setEdgesOfCells(cells);
+  features = boundaryFeatureDimensions(comm, dim, ids, coordinates, cells);
+}
+
 namespace {
 
 using Import = Tpetra::Import<LocalOrdinal, GlobalOrdinal, Node>;
 
-// A vertex's priority in Luby's rule: a hash of its place, the same whatever the ids, the
+// A vertex's priority in Luby's rule: the lower the dimension of the boundary feature it lies
+// on, the higher (corners first), then a hash of its place; the same whatever the ids, the
 // bodies' numbers and the rank count. Vertices of two bodies at one place share it, but they
 // are never neighbours.
 std::uint64_t priority(const VertexGraph& g, std::size_t v) {
   std::uint64_t words[3] = {0, 0, 0};
   std::memcpy(words, &g.coordinates[g.dim * v], g.dim * sizeof(double));
-  return splitMixHash(words, words + 3);
+  const std::uint64_t feature = g.features.empty() ? g.dim : g.features[v];
+  return (static_cast<std::uint64_t>(g.dim) - feature) << 62 | splitMixHash(words, words + 3) >> 2;
 }
 
 // The owned and the local (owned and ghost) vertices as maps of their ids, and the import
@@ -76,7 +84,9 @@ struct VertexMaps {
 
 // Luby's maximal independent set of the graph: in each round the undecided vertices whose
 // priority is above all their undecided neighbours' join the set, and their undecided
-// neighbours leave it. A vertex's neighbours may be spread over the ranks' cells, so each
+// neighbours leave it, but for the domain's corners: a corner is a feature of its own, which
+// no neighbour removes, so that every level keeps every corner (two corners joined by an edge
+// are both in the set). A vertex's neighbours may be spread over the ranks' cells, so each
 // test is summed at its owner, who decides. Collective; per local vertex, 1 if in the set.
 std::vector<char> independentSet(const RCP<const Comm>& comm, const VertexGraph& g) {
   enum : char { undecided, in, out };
@@ -86,6 +96,7 @@ std::vector<char> independentSet(const RCP<const Comm>& comm, const VertexGraph&
   const auto above = [&](std::size_t u, std::size_t v) {  // u's priority above v's
     return rank[u] != rank[v] ? rank[u] > rank[v] : g.ids[u] > g.ids[v];
   };
+  const auto corner = [&](std::size_t v) { return !g.features.empty() && g.features[v] == 0; };
   const VertexMaps maps(comm, g);
   Vector localTest(maps.local), ownedTest(maps.owned), ownedState(maps.owned), localState(maps.local);
   std::vector<char> state(n, undecided);
@@ -119,7 +130,8 @@ std::vector<char> independentSet(const RCP<const Comm>& comm, const VertexGraph&
   while (sumOverRanks(*comm, static_cast<long long>(std::count(state.begin(), state.end(), undecided))) > 0) {
     decide([&](std::size_t v) { return anyNeighbour(v, [&](std::size_t u) { return state[u] == undecided && above(u, v); }); },
            in, /*whenZero=*/true);
-    decide([&](std::size_t v) { return anyNeighbour(v, [&](std::size_t u) { return state[u] == in; }); }, out, false);
+    decide([&](std::size_t v) { return !corner(v) && anyNeighbour(v, [&](std::size_t u) { return state[u] == in; }); },
+           out, false);
   }
   std::vector<char> selected(n);
   for (std::size_t v = 0; v < n; ++v) selected[v] = state[v] == in;
@@ -127,10 +139,9 @@ std::vector<char> independentSet(const RCP<const Comm>& comm, const VertexGraph&
 }
 
 // The selected vertices every rank owns, numbered in the order of their ids in the finer
-// grid, whichever ranks own them: their coordinates and bodies, the same on every rank.
-// Collective.
-void gatherSelected(const RCP<const Comm>& comm, const VertexGraph& g, const std::vector<char>& selected,
-                    std::vector<double>& coordinates, std::vector<int>& bodies) {
+// grid, whichever ranks own them: a graph of them without edges (coordinates, bodies and
+// features), the same on every rank, each vertex owned. Collective.
+VertexGraph gatherSelected(const RCP<const Comm>& comm, const VertexGraph& g, const std::vector<char>& selected) {
   std::vector<std::size_t> mine;
   for (std::size_t v = 0; v < g.ids.size(); ++v)
     if (selected[v] && g.owned[v]) mine.push_back(v);
@@ -138,28 +149,37 @@ void gatherSelected(const RCP<const Comm>& comm, const VertexGraph& g, const std
   long long upTo = 0, total = 0;
   Teuchos::scan(*comm, Teuchos::REDUCE_SUM, 1, &count, &upTo);
   Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, 1, &count, &total);
-  // Coordinates, then bodies, then ids (exact in doubles below 2^53).
+  // Coordinates, then bodies, features and ids (exact in doubles below 2^53).
   const int dim = g.dim;
-  std::vector<double> local(static_cast<std::size_t>((dim + 2) * total), 0.0);
+  std::vector<double> local(static_cast<std::size_t>((dim + 3) * total), 0.0);
   for (long long k = 0; k < count; ++k) {
     const std::size_t at = static_cast<std::size_t>(upTo - count + k);
     std::copy_n(&g.coordinates[dim * mine[k]], dim, &local[dim * at]);
     local[dim * total + at] = g.bodies.empty() ? 0 : g.bodies[mine[k]];
-    local[(dim + 1) * total + at] = static_cast<double>(g.ids[mine[k]]);
+    local[(dim + 1) * total + at] = g.features.empty() ? dim : g.features[mine[k]];
+    local[(dim + 2) * total + at] = static_cast<double>(g.ids[mine[k]]);
   }
   std::vector<double> all(local.size());
   if (!all.empty())
     Teuchos::reduceAll(*comm, Teuchos::REDUCE_SUM, static_cast<int>(all.size()), local.data(), all.data());
   std::vector<long long> order(total);
   std::iota(order.begin(), order.end(), 0LL);
-  const double* id = &all[(dim + 1) * total];
+  const double* id = &all[(dim + 2) * total];
   std::sort(order.begin(), order.end(), [&](long long p, long long q) { return id[p] < id[q]; });
-  coordinates.resize(dim * total);
-  bodies.resize(total);
+  VertexGraph kept;
+  kept.dim = dim;
+  kept.ids.resize(total);
+  std::iota(kept.ids.begin(), kept.ids.end(), 0LL);
+  kept.owned.assign(total, 1);
+  kept.coordinates.resize(dim * total);
+  kept.bodies.resize(total);
+  kept.features.resize(total);
   for (long long k = 0; k < total; ++k) {
-    std::copy_n(&all[dim * order[k]], dim, &coordinates[dim * k]);
-    bodies[k] = static_cast<int>(all[dim * total + order[k]]);
+    std::copy_n(&all[dim * order[k]], dim, &kept.coordinates[dim * k]);
+    kept.bodies[k] = static_cast<int>(all[dim * total + order[k]]);
+    kept.features[k] = static_cast<signed char>(all[(dim + 1) * total + order[k]]);
   }
+  return kept;
 }
 
 // Each body's Delaunay cells (vertex indices into all the vertices), made on rank 0 from the
@@ -189,23 +209,6 @@ std::vector<std::vector<long long>> cellsByBody(const Comm& comm, int dim, const
     if (size > 0) Teuchos::broadcast(comm, 0, static_cast<int>(size), cells[b].data());
   }
   return cells;
-}
-
-// The vertices and edges of cells (dim + 1 indices into count vertices), every vertex owned.
-VertexGraph graphOfCells(int dim, const std::vector<double>& coordinates, const std::vector<int>& bodies,
-                         const std::vector<std::vector<long long>>& cellsOfBodies) {
-  VertexGraph g;
-  g.dim = dim;
-  const std::size_t count = bodies.size();
-  g.ids.resize(count);
-  std::iota(g.ids.begin(), g.ids.end(), 0LL);
-  g.owned.assign(count, 1);
-  g.coordinates = coordinates;
-  g.bodies = bodies;
-  std::vector<long long> cells;
-  for (const auto& bodyCells : cellsOfBodies) cells.insert(cells.end(), bodyCells.begin(), bodyCells.end());
-  g.setEdgesOfCells(cells);
-  return g;
 }
 
 }  // namespace
@@ -241,18 +244,19 @@ std::shared_ptr<const DelaunayCoarseGrid> DelaunayCoarseGrid::coarsen(const RCP<
   const long long finer =
       sumOverRanks(*graphComm, static_cast<long long>(std::count(graph.owned.begin(), graph.owned.end(), 1)));
   if (finer <= fewestVertices) return nullptr;
-  std::vector<double> coordinates;
-  std::vector<int> bodies;
-  gatherSelected(graphComm, graph, independentSet(graphComm, graph), coordinates, bodies);
-  const auto count = static_cast<long long>(bodies.size());
-  if (count > keptAtMost * finer) return nullptr;
-  const auto cells = cellsByBody(*comm, graph.dim, coordinates, bodies);
-  for (const auto& bodyCells : cells)
+  VertexGraph kept = gatherSelected(graphComm, graph, independentSet(graphComm, graph));
+  if (static_cast<long long>(kept.ids.size()) > keptAtMost * finer) return nullptr;
+  const auto cells = cellsByBody(*comm, graph.dim, kept.coordinates, kept.bodies);
+  std::vector<long long> allCells;
+  for (const auto& bodyCells : cells) {
     if (bodyCells.empty()) return nullptr;  // a body of too few vertices to triangulate
-  const VertexGraph own = graphOfCells(graph.dim, coordinates, bodies, cells);
-  std::shared_ptr<DelaunayCoarseGrid> grid(new DelaunayCoarseGrid(graph.dim, std::move(coordinates), std::move(bodies), cells));
-  // Every rank holds this grid: each finds the same coarser set on its own.
-  grid->coarser_ = coarsen(comm, selfComm(), own, fewestVertices, keptAtMost);
+    allCells.insert(allCells.end(), bodyCells.begin(), bodyCells.end());
+  }
+  kept.setEdgesOfCells(allCells);
+  std::shared_ptr<DelaunayCoarseGrid> grid(new DelaunayCoarseGrid(graph.dim, kept.coordinates, kept.bodies, cells));
+  // Every rank holds this grid: each finds the same coarser set on its own, its vertices
+  // keeping the features they lie on in the mesh.
+  grid->coarser_ = coarsen(comm, selfComm(), kept, fewestVertices, keptAtMost);
   return grid;
 }
 

@@ -5,8 +5,10 @@
 //
 // Each coarse grid's vertices are a maximal independent set of the finer grid's vertices (no
 // two joined by an edge of the finer grid; every other vertex next to one of them), chosen
-// by Luby's rule with priorities hashed from the vertices' coordinates, so that the set does
-// not depend on the rank count. Their Delaunay triangulation, one per body, is the grid; every rank
+// by Luby's rule with priorities that put the domain's corners first, then its edges, its
+// faces and its inside (BoundaryFeatures), and within each the order of a hash of the
+// vertices' coordinates, so that the set does not depend on the rank count and the coarse
+// grids keep the domain's shape. Their Delaunay triangulation, one per body, is the grid; every rank
 // holds it whole (it has about an eighth of the finer grid's vertices in 3D, a quarter in 2D).
 // The vertices are nested, the cells are not: the interpolation to a finer vertex is P1 in
 // the coarse cell that holds it. A Delaunay triangulation covers the convex hull of a body's
@@ -27,17 +29,22 @@ namespace signorini {
 
 // One rank's view of a grid's vertices and edges: the vertices of its cells, with their
 // global ids (0 .. count - 1 over all ranks), whether it owns them (each vertex has one
-// owner), coordinates, bodies, and the edges of its cells between them (CSR, both ways).
+// owner), coordinates, bodies, the dimension of the boundary feature each lies on, and the
+// edges of its cells between them (CSR, both ways).
 struct VertexGraph {
   int dim = 0;
   std::vector<long long> ids;
   std::vector<char> owned;
   std::vector<double> coordinates;  // dim per vertex
   std::vector<int> bodies;          // per vertex; empty: one body
+  std::vector<signed char> features;  // per vertex (BoundaryFeatures); empty: not known, none kept first
   std::vector<long long> start, neighbours;
 
   // start and neighbours from cells (dim + 1 local vertex indices each).
   void setEdgesOfCells(const std::vector<long long>& cells);
+  // The edges as above and the features of the mesh these cells are this rank's part of
+  // (boundaryFeatureDimensions). Collective.
+  void setEdgesAndFeaturesOfCells(const Comm& comm, const std::vector<long long>& cells);
 };
 
 class DelaunayCoarseGrid final : public GeometricGrid {

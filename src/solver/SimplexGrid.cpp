@@ -65,7 +65,8 @@ bool nondegenerate(int dim, const double* v) {
   return std::abs(det) > 1e-12 * std::pow(longest, dim);
 }
 
-// The grid's vertices and edges, each vertex owned by the rank that `owned` gives it.
+// The grid's vertices, edges and boundary features, each vertex owned by the rank that
+// `owned` gives it. Collective.
 VertexGraph vertexGraph(int dim, const std::vector<long long>& ids, const std::vector<double>& coordinates,
                         const std::vector<long long>& cells, const Map& owned) {
   VertexGraph graph;
@@ -74,7 +75,7 @@ VertexGraph vertexGraph(int dim, const std::vector<long long>& ids, const std::v
   graph.owned.resize(ids.size());
   for (std::size_t v = 0; v < ids.size(); ++v) graph.owned[v] = owned.isNodeGlobalElement(ids[v]);
   graph.coordinates = coordinates;
-  graph.setEdgesOfCells(cells);
+  graph.setEdgesAndFeaturesOfCells(*owned.getComm(), cells);
   return graph;
 }
 

@@ -27,7 +27,9 @@ class SimplexGrid : public GeometricGrid {
   /// cover the nodes only up to the boundary's curvature, a coarser grid of the mesh's.
   enum class Outside { error, nearestCell };
   /// With CoarseGrids::delaunay the coarse grids below this one are the Delaunay
-  /// triangulations of maximal independent sets of its vertices, level by level, down to a
+  /// triangulations of maximal independent sets of its vertices that keep the domain's
+  /// corners and take its edges and faces first (found from the cells of all ranks together,
+  /// a cell held by several ranks counting once), level by level, down to a
   /// few hundred vertices: the same grids on any rank count, each a geometric multigrid level
   /// (doc/algorithms.md). Their first level is as coarse as the mesh's own when the ranks'
   /// cells together are all of its cells (the edges they leave out join vertices that may then
