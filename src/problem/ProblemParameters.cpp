@@ -152,8 +152,8 @@ void addMeshParameters(ParameterList& p) {
         "The geometric multigrid's levels below the coarsest grid of a Gmsh mesh: the P1 grid of a mesh "
         "that is not refined (a .msh file read as is, or a .geo geometry meshed at its sizes), the mesh "
         "read of a refined one. \"delaunay\": each level's vertices are a maximal independent set of the "
-        "finer level's, the domain's corners, edges and faces first (the same set on any rank count), triangulated by CGAL's Delaunay triangulation per "
-        "body and held by every rank, down to a grid the direct solver takes; \"none\": below the P1 grid "
+        "finer level's, the domain's corners, edges and faces first (the same set on any rank count), "
+        "triangulated by CGAL's Delaunay triangulation per body and held by every rank, down to a grid the direct solver takes; \"none\": below the P1 grid "
         "MueLu's algebraic multigrid, below the mesh read of a refined mesh the direct solver up to "
         "Solver/Preconditioner/geometric: direct solve size unknowns, MueLu above",
         choices({"delaunay", "none"}));

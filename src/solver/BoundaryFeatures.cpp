@@ -38,17 +38,6 @@ int directoryOf(const long long* first, const long long* last, int size) {
   return static_cast<int>(splitMixHash(first, last) % static_cast<std::uint64_t>(size));
 }
 
-// The cells at each local vertex (CSR: cellsAt[at[v] .. at[v + 1]]).
-void cellsAtVertices(int dim, std::size_t count, const std::vector<long long>& cells, std::vector<long long>& at,
-                     std::vector<long long>& cellsAt) {
-  at.assign(count + 1, 0);
-  for (long long v : cells) ++at[v + 1];
-  std::partial_sum(at.begin(), at.end(), at.begin());
-  std::vector<long long> next(at.begin(), at.end() - 1);
-  cellsAt.resize(cells.size());
-  for (std::size_t e = 0; e < cells.size(); ++e) cellsAt[next[cells[e]]++] = static_cast<long long>(e / (dim + 1));
-}
-
 // The facets of the local cells that no second local cell shares (a cell held twice counts
 // once), sorted by key. A facet is looked for among the cells at its vertex of lowest local
 // index, which hold every cell that shares it.
@@ -233,6 +222,16 @@ std::vector<std::pair<long long, signed char>> featuresAtDirectory(const Comm& c
 }
 
 }  // namespace
+
+void cellsAtVertices(int dim, std::size_t count, const std::vector<long long>& cells, std::vector<long long>& at,
+                     std::vector<long long>& cellsAt) {
+  at.assign(count + 1, 0);
+  for (long long v : cells) ++at[v + 1];
+  std::partial_sum(at.begin(), at.end(), at.begin());
+  std::vector<long long> next(at.begin(), at.end() - 1);
+  cellsAt.resize(cells.size());
+  for (std::size_t e = 0; e < cells.size(); ++e) cellsAt[next[cells[e]]++] = static_cast<long long>(e / (dim + 1));
+}
 
 std::vector<signed char> boundaryFeatureDimensions(const Comm& comm, int dim, const std::vector<long long>& ids,
                                                    const std::vector<double>& coordinates,

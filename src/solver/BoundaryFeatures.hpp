@@ -10,6 +10,7 @@
 // dim - min(g, dim): in 3D one group is a face, two an edge, three or more a corner; in 2D
 // one is an edge, two or more a corner. A curved boundary turns by less than the angle from
 // one facet to the next and stays a face (3D) or an edge (2D).
+#include <cstddef>
 #include <vector>
 
 #include "signorini/core/TpetraTypes.hpp"
@@ -19,6 +20,11 @@ namespace signorini {
 // The angle (radians) between two boundary facets' normals above which they belong to two
 // sides of the domain.
 constexpr double kFeatureAngle = 0.5;
+
+// The cells at each of `count` vertices (CSR: cellsAt[at[v] .. at[v + 1]]) of `cells`, dim + 1
+// vertex indices per cell.
+void cellsAtVertices(int dim, std::size_t count, const std::vector<long long>& cells, std::vector<long long>& at,
+                     std::vector<long long>& cellsAt);
 
 // Collective. For each local vertex (ids: global ids, the same on every rank for the same
 // vertex; coordinates: dim per vertex), the dimension of the boundary feature it lies on, dim

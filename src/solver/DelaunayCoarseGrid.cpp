@@ -23,11 +23,8 @@ void VertexGraph::setEdgesOfCells(const std::vector<long long>& cells) {
   const std::size_t count = ids.size();
   const int corners = dim + 1;
   // The cells at each vertex (CSR), then each vertex's neighbours through them, each once.
-  std::vector<long long> at(count + 1, 0), cellsAt(cells.size());
-  for (long long v : cells) ++at[v + 1];
-  std::partial_sum(at.begin(), at.end(), at.begin());
-  std::vector<long long> next(at.begin(), at.end() - 1);
-  for (std::size_t e = 0; e < cells.size(); ++e) cellsAt[next[cells[e]]++] = static_cast<long long>(e / corners);
+  std::vector<long long> at, cellsAt;
+  cellsAtVertices(dim, count, cells, at, cellsAt);
   std::vector<long long> seenBy(count, -1);
   start.assign(count + 1, 0);
   neighbours.clear();
