@@ -733,7 +733,8 @@ def two_bodies():
     force = max(relative(r["normal_force"], PRESSURE) for r in contact)
     pressure = max(relative(r["peak_pressure"], PRESSURE) for r in contact)
     masters = [r for r in contact if r["master_force"]]
-    opposite = max(relative(-r["master_force"][-1], r["normal_force"]) for r in masters)
+    # The slave side's force and the master body's, as vectors: their vertical components.
+    opposite = max(relative(-r["master_force"][-1], r["force"][-1]) for r in masters)
     print(f"The contact force differs from the load ({PRESSURE}) by at most {force:.0e} relative, the largest "
           f"pressure from the applied one by at most {pressure:.0e}, and the master body's force from the contact "
           f"force's opposite by at most {opposite:.0e}.")

@@ -164,10 +164,12 @@ PHASES = ("setup_seconds", "assembly_seconds", "solve_seconds")
 
 
 def fastest(repeats, by="wall_seconds"):
-    """The fastest of the repeats of one run (by `by`), with the times `by` and the phases' times of all."""
+    """The fastest of the repeats of one run (by `by`), with the times `by` and the phases'
+    times (those the runs record) of all."""
     best = dict(min(repeats, key=lambda r: r[by]))
     for key in (by, *PHASES):
-        best[key + "_repeats"] = [r[key] for r in repeats]
+        if all(key in r for r in repeats):
+            best[key + "_repeats"] = [r[key] for r in repeats]
     return best
 
 

@@ -93,8 +93,8 @@ def run(name, moduli, size_factor, ranks, linear, workdir):
               "wall_seconds": wall}
     if not linear:
         contact = s["contact"]
-        result.update({"normal_force": contact["normal_force"], "peak_pressure": contact["peak_pressure"],
-                       "master_force": contact.get("master_force")})
+        result.update({"force": contact["force"], "normal_force": contact["normal_force"],
+                       "peak_pressure": contact["peak_pressure"], "master_force": contact.get("master_force")})
     return result
 
 
