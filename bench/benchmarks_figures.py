@@ -663,13 +663,18 @@ def force_control():
     defaults = [r for r in runs if default(r)]
     gaps = [r for r in runs if r["formulation"] == "weighted gap"]
     worst = max(defaults, key=lambda r: r["force"]["cg_iterations"] / r["displacement"]["cg_iterations"])
-    fixed = {f"{r['case']} ({r['method']}, {r['formulation']})": r["force"]["cg_per_system_at_fixed_accuracy"] /
-             r["displacement"]["cg_per_system_at_fixed_accuracy"] for r in runs}
+    label = lambda r: f"{r['case']} ({r['method']}, {r['formulation']})"  # noqa: E731
+    reached = lambda r: all(r[c]["status_at_fixed_accuracy"] == "converged"  # noqa: E731
+                            for c in ("force", "displacement"))
+    fixed = {label(r): r["force"]["cg_per_system_at_fixed_accuracy"] / r["displacement"]["cg_per_system_at_fixed_accuracy"]
+             for r in runs if reached(r)}
+    short = [label(r) for r in runs if not reached(r)]
     more = [k for k, v in fixed.items() if v > 1]
     print(f"- {'Every' if converged else 'Not every'} force-controlled run converges, in {span(it, 2)} times the "
           f"main iterations of its displacement-controlled counterpart.")
     print(f"- CG iterations per Newton system at the fixed accuracy, force over displacement control: "
-          f"{span(fixed.values(), 2)}; more under force control on {words(more) if more else 'none'}.")
+          f"{span(fixed.values(), 2)}; more under force control on {words(more) if more else 'none'}"
+          + (f"; {words(short)} did not reach that accuracy (left out)." if short else "."))
     methods = [span(cg([r for r in defaults if r["method"] == method]), 2) for method in ("primal-dual", "primal")]
     print(f"- At the defaults (nodal constraints for P1, dual mortar for P2) the force-controlled runs take "
           f"{methods[0]} times the CG iterations of their counterparts with the primal-dual method, {methods[1]} with "
