@@ -34,6 +34,9 @@ import tempfile
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+# mpirun as root (containers, CI), ranks beyond the cores, no single-copy shared memory.
+ENV = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
+           OMPI_MCA_rmaps_base_oversubscribe="1", OMPI_MCA_btl_vader_single_copy_mechanism="none")
 
 # (example, dimension, {degree: meshes}) per study: box cells (the same nodes per row across
 # degrees), or a Gmsh geometry's mesh size factor.
@@ -125,7 +128,7 @@ def run(args, example, degree, cells, formulation, recovery, directory, settings
            "--set", "Output/contact pressure=" + recovery, "--output", directory]
     for setting in list(extra) + list(settings):
         cmd += ["--set", setting]
-    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
+    subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL, env=ENV)
     with open(os.path.join(directory, "summary.json")) as f:
         summary = json.load(f)
     samples = np.genfromtxt(os.path.join(directory, "contact.csv"), delimiter=",", names=True)
