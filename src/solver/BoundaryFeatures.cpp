@@ -79,27 +79,39 @@ std::vector<Facet> exposedFacets(int dim, const std::vector<long long>& ids, con
   return exposed;
 }
 
-// Whether each local vertex is a vertex of another rank's cells too: its directory rank
-// counts the ranks that name it.
-std::vector<char> sharedVertices(const Comm& comm, const std::vector<long long>& ids) {
+// Asks each local vertex's directory rank about it: `answersTo` gets the ids each rank asked
+// (questions[r]) and returns one answer per id in that order; the answers come back in the
+// order of `ids`. Collective.
+template <class AnswersTo>
+std::vector<long long> askDirectories(const Comm& comm, const std::vector<long long>& ids, AnswersTo answersTo) {
   const int size = comm.getSize();
   std::vector<std::vector<long long>> asked(size);
   for (long long id : ids) asked[directoryOf(&id, &id + 1, size)].push_back(id);
-  const std::vector<std::vector<long long>> questions = exchangeWithRanks(comm, asked);
-  std::vector<long long> all;
-  for (const auto& q : questions) all.insert(all.end(), q.begin(), q.end());
-  std::sort(all.begin(), all.end());
-  std::vector<std::vector<long long>> answers(size);
-  for (int r = 0; r < size; ++r)
-    for (long long id : questions[r])
-      answers[r].push_back(std::upper_bound(all.begin(), all.end(), id) - std::lower_bound(all.begin(), all.end(), id));
-  const std::vector<std::vector<long long>> counts = exchangeWithRanks(comm, answers);
+  const std::vector<std::vector<long long>> replies = exchangeWithRanks(comm, answersTo(exchangeWithRanks(comm, asked)));
   std::vector<std::size_t> next(size, 0);
-  std::vector<char> shared(ids.size());
+  std::vector<long long> answers(ids.size());
   for (std::size_t v = 0; v < ids.size(); ++v) {
     const int r = directoryOf(&ids[v], &ids[v] + 1, size);
-    shared[v] = counts[r][next[r]++] > 1;
+    answers[v] = replies[r][next[r]++];
   }
+  return answers;
+}
+
+// Whether each local vertex is a vertex of another rank's cells too: its directory rank
+// counts the ranks that name it.
+std::vector<char> sharedVertices(const Comm& comm, const std::vector<long long>& ids) {
+  const std::vector<long long> ranksNaming = askDirectories(comm, ids, [](const std::vector<std::vector<long long>>& questions) {
+    std::vector<long long> all;
+    for (const auto& q : questions) all.insert(all.end(), q.begin(), q.end());
+    std::sort(all.begin(), all.end());
+    std::vector<std::vector<long long>> answers(questions.size());
+    for (std::size_t r = 0; r < questions.size(); ++r)
+      for (long long id : questions[r])
+        answers[r].push_back(std::upper_bound(all.begin(), all.end(), id) - std::lower_bound(all.begin(), all.end(), id));
+    return answers;
+  });
+  std::vector<char> shared(ids.size());
+  for (std::size_t v = 0; v < ids.size(); ++v) shared[v] = ranksNaming[v] > 1;
   return shared;
 }
 
@@ -236,27 +248,18 @@ void cellsAtVertices(int dim, std::size_t count, const std::vector<long long>& c
 std::vector<signed char> boundaryFeatureDimensions(const Comm& comm, int dim, const std::vector<long long>& ids,
                                                    const std::vector<double>& coordinates,
                                                    const std::vector<long long>& cells) {
-  const int size = comm.getSize();
   const auto features =
       featuresAtDirectory(comm, dim, ids, coordinates, boundaryFacets(comm, dim, ids, cells, exposedFacets(dim, ids, cells)));
-  // Each rank asks the directories about its vertices; they answer in the order asked.
-  std::vector<std::vector<long long>> asked(size);
-  for (long long id : ids) asked[directoryOf(&id, &id + 1, size)].push_back(id);
-  const std::vector<std::vector<long long>> questions = exchangeWithRanks(comm, asked);
-  std::vector<std::vector<long long>> answers(size);
-  for (int r = 0; r < size; ++r)
-    for (long long id : questions[r]) {
-      const auto it = std::lower_bound(features.begin(), features.end(), std::make_pair(id, static_cast<signed char>(-1)));
-      answers[r].push_back(it != features.end() && it->first == id ? it->second : dim);
-    }
-  const std::vector<std::vector<long long>> replies = exchangeWithRanks(comm, answers);
-  std::vector<std::size_t> next(size, 0);
-  std::vector<signed char> result(ids.size());
-  for (std::size_t v = 0; v < ids.size(); ++v) {
-    const int r = directoryOf(&ids[v], &ids[v] + 1, size);
-    result[v] = static_cast<signed char>(replies[r][next[r]++]);
-  }
-  return result;
+  const std::vector<long long> dimensions = askDirectories(comm, ids, [&](const std::vector<std::vector<long long>>& questions) {
+    std::vector<std::vector<long long>> answers(questions.size());
+    for (std::size_t r = 0; r < questions.size(); ++r)
+      for (long long id : questions[r]) {
+        const auto it = std::lower_bound(features.begin(), features.end(), std::make_pair(id, static_cast<signed char>(-1)));
+        answers[r].push_back(it != features.end() && it->first == id ? it->second : dim);
+      }
+    return answers;
+  });
+  return std::vector<signed char>(dimensions.begin(), dimensions.end());
 }
 
 }  // namespace signorini
