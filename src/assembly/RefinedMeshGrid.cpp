@@ -6,6 +6,8 @@
 #include "solver/DelaunayCoarseGrid.hpp"
 #include "assembly/MeshPieces.hpp"
 #include "assembly/RefinedMeshPart.hpp"
+#include "assembly/SortByKey.hpp"
+#include "core/SplitMixHash.hpp"
 #include "signorini/core/Error.hpp"
 
 namespace signorini {
@@ -20,8 +22,14 @@ struct RefinedMeshGrid::Point {
 
 namespace {
 
-bool lessByCoordinates(const double* a, const double* b, int dim) {
-  return std::lexicographical_compare(a, a + dim, b, b + dim);
+// A hash of a place: of its coordinates' bits, -0 taken as 0.
+std::uint64_t placeHash(const double* x, int dim) {
+  std::uint64_t words[3] = {0, 0, 0};
+  for (int c = 0; c < dim; ++c) {
+    const double value = x[c] + 0.0;
+    std::memcpy(&words[c], &value, sizeof(double));
+  }
+  return splitMixHash(words, words + dim);
 }
 
 // This rank's vertices and edges of the coarse mesh (level 0, `coarsest`), each vertex owned
@@ -106,7 +114,7 @@ void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, c
       point.weights[0] = point.weights[1] = 0.5;
     }
   }
-  sortPoints();
+  indexPoints();
 }
 
 void RefinedMeshGrid::answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space,
@@ -128,20 +136,23 @@ void RefinedMeshGrid::answerForSpace(const SimplexRefinement& refinement, const 
       if (index[v] == k) point.vertex = point.vertices[v];
     }
   });
-  sortPoints();
+  indexPoints();
 }
 
-void RefinedMeshGrid::sortPoints() {
-  std::sort(points_.begin(), points_.end(),
-            [&](const Point& a, const Point& b) { return lessByCoordinates(a.x, b.x, dim_); });
+void RefinedMeshGrid::indexPoints() {
+  byPlace_.resize(points_.size());
+  for (std::size_t i = 0; i < points_.size(); ++i) byPlace_[i] = {placeHash(points_[i].x, dim_), i};
+  detail::sortByKey(byPlace_, [](const PlaceEntry& entry) { return entry.first; });
 }
 
 const RefinedMeshGrid::Point* RefinedMeshGrid::findPoint(const double* x, int body) const {
-  auto it = std::lower_bound(points_.begin(), points_.end(), x, [&](const Point& p, const double* y) {
-    return lessByCoordinates(p.x, y, dim_);
-  });
-  for (; it != points_.end() && !lessByCoordinates(x, it->x, dim_); ++it)
-    if (body < 0 || it->body == body) return &*it;
+  const std::uint64_t hash = placeHash(x, dim_);
+  auto it = std::lower_bound(byPlace_.begin(), byPlace_.end(), hash,
+                             [](const PlaceEntry& entry, std::uint64_t h) { return entry.first < h; });
+  for (; it != byPlace_.end() && it->first == hash; ++it) {
+    const Point& point = points_[it->second];
+    if (std::equal(x, x + dim_, point.x) && (body < 0 || point.body == body)) return &point;
+  }
   return nullptr;
 }
 

@@ -9,8 +9,10 @@
 // A rank answers for the points of its own part: vertexAt() and interpolation() for the
 // vertices of its next finer level (the finest grid: the nodes of its P_k space), given by
 // their coordinates, vertexCoordinates() for its own vertices.
+#include <cstdint>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "assembly/CoarseMeshLattice.hpp"
@@ -57,7 +59,8 @@ class RefinedMeshGrid : public GeometricGrid {
                       const detail::RefinedLevel& finer, const std::vector<int>& coarseCellBody);
   void answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space,
                       const std::vector<long long>& vertexIds, const std::vector<int>& nodeBody);
-  void sortPoints();
+  // Fills byPlace_ for points_.
+  void indexPoints();
   // The point at x (of `body`, -1: any), or null.
   const Point* findPoint(const double* x, int body) const;
 
@@ -65,7 +68,11 @@ class RefinedMeshGrid : public GeometricGrid {
   long long numVertices_ = 0;
   std::vector<long long> vertexIds_;  // this rank's vertices, ascending
   std::vector<double> coordinates_;   // dim_ per vertex
-  std::vector<Point> points_;         // sorted by coordinates
+  std::vector<Point> points_;
+  // (hash of a point's place, its index in points_), ascending: the table that finds a point
+  // by its coordinates, radix-sorted by 8-byte keys rather than the points compared by theirs
+  using PlaceEntry = std::pair<std::uint64_t, std::size_t>;
+  std::vector<PlaceEntry> byPlace_;
   std::shared_ptr<const GeometricGrid> coarser_;  // a RefinedMeshGrid but below the coarse mesh
 };
 
