@@ -6,6 +6,7 @@
 
 #include <Ifpack2_Chebyshev.hpp>
 #include <Teuchos_TimeMonitor.hpp>
+#include <boost/sort/spreadsort/integer_sort.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <TpetraExt_TripleMatrixMultiply.hpp>
 #include <Tpetra_CrsMatrix.hpp>
@@ -83,6 +84,41 @@ RCP<const Map> coarseLevelMap(const GeometricGrid& coarse, int blockSize, const 
   return coarseMap;
 }
 
+// Each fine node's simplex in the columns of P: the positions of its coarse vertices in
+// `usedVertices` (sorted), ascending, with their weights, those above 1e-12 only; and the
+// position of the coarse vertex at the node (-1: none).
+struct NodeSimplices {
+  std::vector<std::size_t> first;  // node i's entries: first[i] .. first[i + 1]
+  std::vector<LocalOrdinal> position;
+  std::vector<double> weight;
+  std::vector<LocalOrdinal> injection;
+
+  NodeSimplices(const std::vector<long long>& usedVertices, const std::vector<long long>& atVertex,
+                const std::vector<long long>& vertices, const std::vector<double>& weights, int dim)
+      : first(atVertex.size() + 1, 0), injection(atVertex.size(), -1) {
+    const auto positionOf = [&](long long v) {
+      return static_cast<LocalOrdinal>(std::lower_bound(usedVertices.begin(), usedVertices.end(), v) -
+                                       usedVertices.begin());
+    };
+    position.reserve(vertices.size());
+    weight.reserve(vertices.size());
+    std::pair<LocalOrdinal, double> simplex[4];
+    for (std::size_t i = 0; i < atVertex.size(); ++i) {
+      int n = 0;
+      for (int k = 0; k <= dim; ++k)
+        if (weights[(dim + 1) * i + k] > 1e-12)
+          simplex[n++] = {positionOf(vertices[(dim + 1) * i + k]), weights[(dim + 1) * i + k]};
+      std::sort(simplex, simplex + n);
+      for (int k = 0; k < n; ++k) {
+        position.push_back(simplex[k].first);
+        weight.push_back(simplex[k].second);
+      }
+      first[i + 1] = position.size();
+      if (atVertex[i] >= 0) injection[i] = positionOf(atVertex[i]);
+    }
+  }
+};
+
 // P1 interpolation from the grid `coarse` to the owned fine nodes; fills the coarse level's
 // DOF map (the coarse vertices at this rank's fine nodes), coordinates, Dirichlet flags and
 // bodies. Collective.
@@ -108,7 +144,7 @@ RCP<CrsMatrix> interpolation(const GeometricGrid& coarse, int blockSize, const R
   std::vector<long long> usedVertices(vertices);
   for (long long v : atVertex)
     if (v >= 0) usedVertices.push_back(v);
-  std::sort(usedVertices.begin(), usedVertices.end());
+  boost::sort::spreadsort::integer_sort(usedVertices.begin(), usedVertices.end());
   usedVertices.erase(std::unique(usedVertices.begin(), usedVertices.end()), usedVertices.end());
   std::vector<GlobalOrdinal> used;  // P's column map: all components of the used vertices, sorted
   used.reserve(blockSize * usedVertices.size());
@@ -123,41 +159,39 @@ RCP<CrsMatrix> interpolation(const GeometricGrid& coarse, int blockSize, const R
   }
   usedFlags.doImport(flags, *toUsed, Tpetra::INSERT);
   auto usedData = usedFlags.getData();
-  // Local column of component c at coarse vertex v: the used list holds every component.
-  const auto column = [&](long long v, int c) {
-    const auto at = std::lower_bound(usedVertices.begin(), usedVertices.end(), v) - usedVertices.begin();
-    return static_cast<LocalOrdinal>(blockSize * at + c);
-  };
+  const NodeSimplices simplices(usedVertices, atVertex, vertices, weights, dim);
 
   // P's rows in local CSR form, straight into the arrays Tpetra keeps; the import above is
-  // its column import.
+  // its column import. Component c of a row's node takes component c of its coarse vertices,
+  // but for the coarse DOFs that are Dirichlet; a Dirichlet fine DOF injects its coarse one.
   const std::size_t numFineDofs = fineMap->getNodeNumElements();
-  using Graph = CrsMatrix::local_graph_device_type;
-  typename Graph::row_map_type::non_const_type rowPointers("P row pointers", numFineDofs + 1);
-  std::vector<std::pair<LocalOrdinal, Scalar>> entries;
-  std::vector<std::pair<LocalOrdinal, Scalar>> row;
-  for (std::size_t r = 0; r < numFineDofs; ++r) {
+  const auto forEachEntry = [&](std::size_t r, auto&& entry) {
     const std::size_t i = r / blockSize;
     const int c = static_cast<int>(r % blockSize);
-    row.clear();
     if (fineDirichlet[r]) {
-      if (atVertex[i] >= 0) row.emplace_back(column(atVertex[i], c), 1.0);  // a Dirichlet coarse DOF: injection
-    } else {
-      for (int k = 0; k <= dim; ++k) {
-        const double w = weights[(dim + 1) * i + k];
-        const LocalOrdinal col = column(vertices[(dim + 1) * i + k], c);
-        if (w > 1e-12 && usedData[col] == 0.0) row.emplace_back(col, w);
-      }
-      std::sort(row.begin(), row.end());
+      if (simplices.injection[i] >= 0) entry(blockSize * simplices.injection[i] + c, 1.0);
+      return;
     }
-    entries.insert(entries.end(), row.begin(), row.end());
-    rowPointers(r + 1) = entries.size();
+    for (std::size_t k = simplices.first[i]; k < simplices.first[i + 1]; ++k) {
+      const LocalOrdinal col = blockSize * simplices.position[k] + c;
+      if (usedData[col] == 0.0) entry(col, simplices.weight[k]);
+    }
+  };
+  using Graph = CrsMatrix::local_graph_device_type;
+  typename Graph::row_map_type::non_const_type rowPointers("P row pointers", numFineDofs + 1);
+  for (std::size_t r = 0; r < numFineDofs; ++r) {
+    std::size_t count = 0;
+    forEachEntry(r, [&](LocalOrdinal, double) { ++count; });
+    rowPointers(r + 1) = rowPointers(r) + count;
   }
-  typename Graph::entries_type::non_const_type columns("P columns", entries.size());
-  typename CrsMatrix::local_matrix_device_type::values_type values("P values", entries.size());
-  for (std::size_t e = 0; e < entries.size(); ++e) {
-    columns(e) = entries[e].first;
-    values(e) = entries[e].second;
+  typename Graph::entries_type::non_const_type columns("P columns", rowPointers(numFineDofs));
+  typename CrsMatrix::local_matrix_device_type::values_type values("P values", rowPointers(numFineDofs));
+  for (std::size_t r = 0; r < numFineDofs; ++r) {
+    std::size_t e = rowPointers(r);
+    forEachEntry(r, [&](LocalOrdinal col, double w) {
+      columns(e) = col;
+      values(e++) = w;
+    });
   }
   auto P = rcp(new CrsMatrix(fineMap, usedMap, rowPointers, columns, values));
   P->expertStaticFillComplete(coarseMap, fineMap, toUsed);
