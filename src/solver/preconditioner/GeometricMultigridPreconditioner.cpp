@@ -6,13 +6,13 @@
 
 #include <Ifpack2_Chebyshev.hpp>
 #include <Teuchos_TimeMonitor.hpp>
-#include <boost/sort/spreadsort/integer_sort.hpp>
 #include <TpetraExt_MatrixMatrix.hpp>
 #include <TpetraExt_TripleMatrixMultiply.hpp>
 #include <Tpetra_CrsMatrix.hpp>
 #include <Tpetra_Import.hpp>
 #include <Tpetra_Map.hpp>
 #include <Tpetra_Vector.hpp>
+#include <boost/sort/spreadsort/integer_sort.hpp>
 
 #include "core/Collectives.hpp"
 #include "signorini/core/Error.hpp"
@@ -102,16 +102,16 @@ struct NodeSimplices {
     };
     position.reserve(vertices.size());
     weight.reserve(vertices.size());
-    std::pair<LocalOrdinal, double> simplex[4];
+    std::vector<std::pair<LocalOrdinal, double>> simplex;
     for (std::size_t i = 0; i < atVertex.size(); ++i) {
-      int n = 0;
+      simplex.clear();
       for (int k = 0; k <= dim; ++k)
         if (weights[(dim + 1) * i + k] > 1e-12)
-          simplex[n++] = {positionOf(vertices[(dim + 1) * i + k]), weights[(dim + 1) * i + k]};
-      std::sort(simplex, simplex + n);
-      for (int k = 0; k < n; ++k) {
-        position.push_back(simplex[k].first);
-        weight.push_back(simplex[k].second);
+          simplex.emplace_back(positionOf(vertices[(dim + 1) * i + k]), weights[(dim + 1) * i + k]);
+      std::sort(simplex.begin(), simplex.end());
+      for (const auto& [at, w] : simplex) {
+        position.push_back(at);
+        weight.push_back(w);
       }
       first[i + 1] = position.size();
       if (atVertex[i] >= 0) injection[i] = positionOf(atVertex[i]);
