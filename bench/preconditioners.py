@@ -93,8 +93,10 @@ SEQUENCES = {
 
 def run(xml, settings, ranks, out, reuse):
     if not (reuse and os.path.exists(os.path.join(out, "summary.json"))):
-        cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"),
-               os.path.join(ROOT, "xml", xml + ".xml"), "--output", out, "--set", "Output/write solution=false"]
+        # a family or paper member by name (paper/M), or any input by its path from the root
+        path = os.path.join(ROOT, xml) if xml.endswith(".xml") else os.path.join(ROOT, "xml", xml + ".xml")
+        cmd = ["mpirun", "-np", str(ranks), os.path.join(ROOT, "build/bin/signorini"), path, "--output", out,
+               "--set", "Output/write solution=false"]
         for key, value in settings.items():
             cmd += ["--set", f"{key}={value}"]
         subprocess.run(cmd, env=ENV, stdout=subprocess.DEVNULL, check=False)
