@@ -15,7 +15,7 @@ NAME.png (Krylov iterations per Newton step against mu, one panel per sequence a
 configuration); NAME is --name, "preconditioners" by default.
 
 Forcing "reduction" is the solver's default: every Krylov solve reduces the residual of its
-starting vector (the projection on earlier solutions) by 0.1. Forcing "adaptive" lets the
+starting vector (the projection on earlier solutions) by forcing: eta. Forcing "adaptive" lets the
 Krylov tolerance follow mu, so its counts also measure how much
 accuracy each step asks for. Forcing "relative" solves every Newton system to the same
 relative residual (1e-8): the same linear problem at every mu, which isolates the
@@ -77,7 +77,7 @@ CONFIGS = {
 # Every configuration runs with the solver's defaults for what it does not set.
 NOT_THE_PRECONDITIONER = {"without contact-corrected start", "from zero", "without active-set finish"}
 FORCING = {
-    "reduction": {},  # the default: each solve reduces its start's residual by 0.1
+    "reduction": {},  # the default: each solve reduces its start's residual by forcing: eta
     "adaptive": {"Solver/forcing: type": "adaptive"},
     "relative": {"Solver/forcing: type": "relative", "Solver/forcing: eta": "1e-8"},
 }

@@ -36,6 +36,7 @@ COMMANDS = {
     "expression": ["bench/expression.py"],
     "force-control": ["bench/force_control.py"],
     "forcing": ["bench/forcing.py"],
+    "forcing-reduction": ["bench/forcing.py", "--forcing", "reduction", "--repeat", "2"],
     "gmsh-meshes": ["bench/gmsh_meshes.py"],
     "gmsh-meshes-coarse-grids": ["bench/gmsh_meshes.py", "--cases", "3d-p1,3d-p2,2d-p1", "--ranks", "2",
                                  "--repeat", "2", "--meshes", "box,msh all ranks,msh delaunay", "--name",

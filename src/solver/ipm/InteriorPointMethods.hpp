@@ -94,7 +94,7 @@ RCP<Vector> initialDisplacement(const ContactQP& qp, const Vector* v0);
 //   "relative":          eta ||rhs||, a fixed residual reduction for every Newton system.
 struct ForcingRule {
   ForcingType type = ForcingType::Reduction;
-  double eta = 0.1;
+  double eta = 0.3;
   double safety = 0.3;
   double tailSafety = 0.01;
   double reductionSafeguard = 1.0;

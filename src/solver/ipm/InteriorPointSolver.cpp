@@ -42,7 +42,7 @@ void addForcingParameters(Teuchos::ParameterList& p) {
                               {"eisenstat-walker", ForcingType::EisenstatWalker},
                               {"relative", ForcingType::Relative}},
                              "forcing: type"));
-  p.set("forcing: eta", 0.1, "Reduction of each solve's starting residual, constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
+  p.set("forcing: eta", 0.3, "Reduction of each solve's starting residual, constant forcing term, or the largest adaptive one", range(1e-14, 0.9));
   p.set("forcing: safety", 0.3,
         "Adaptive forcing: the residual allowed as a fraction of the current residual scale; below 1 so "
         "that every step reduces the dual residual",

@@ -120,10 +120,12 @@ TEST(NewtonSystemSolver, OneGridFactoredExactlyIsAnExactPreconditioner) {
   }
 }
 
-// In the interior point method, whose Newton systems reduce their residual tenfold from
+// In the interior point method, with Newton systems that reduce their residual tenfold from
 // starts that improve as mu falls, the filtered geometric hierarchy keeps paper/G's last
 // main iterations as cheap as its first: 3-5 CG iterations in the last against 4 in the
 // first, on 1-3 ranks, where the AMG of H needs 7 and 17-18 in the last three against 22-23.
+// At the default eta = 0.3 both hierarchies take 10 in the last three: the looser solves
+// do not reach the digits where the unfiltered one falls behind.
 TEST(NewtonSystemSolver, FilteredAmgKeepsTheLastNewtonStepsCheap) {
   const AssembledProblem problem = buildProblem(shippedProblem("paper/G"), Tpetra::getDefaultComm());
   const ContactQP& qp = problem.qp;
@@ -131,6 +133,7 @@ TEST(NewtonSystemSolver, FilteredAmgKeepsTheLastNewtonStepsCheap) {
   std::string counts;
   for (int k = 0; k < 2; ++k) {
     Teuchos::ParameterList params;
+    params.set("forcing: eta", 0.1);
     params.sublist("Preconditioner").set("amg of H: weight cap", k == 0 ? 10.0 : 0.0);
     SolveRecorder record;
     const SolveResult r = InteriorPointSolver(params).solve(qp, problem.multigrid, nullptr, &record);
