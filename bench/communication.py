@@ -22,8 +22,8 @@ iterations, Newton systems and CG iterations, then
   per_newton_system: phases solve + preconditioner_setup divided by the Newton systems,
 each with messages_sent, bytes_sent and allreduces as {"max": over ranks, "mean": over
 ranks}; setup: the totals of phases mesh_and_space and assembly ({"max", "mean"} per rank
-of messages_sent, bytes_sent, collectives); and the counters' summary of every phase
-(bench/mpi_counters.cpp documents them). Point-to-point messages are MPI_Send, Isend,
+of messages_sent, bytes_sent, collectives, collective_bytes); and the counters' summary of
+every phase (bench/mpi_counters.cpp documents them). Point-to-point messages are MPI_Send, Isend,
 Ssend, Rsend and Sendrecv; collectives are counted apart. A one-rank run sends nothing.
 """
 import argparse
@@ -40,7 +40,7 @@ LIBRARY = os.path.join(BUILD, "bench", "libsignorini_mpi_counters.so")
 # under a minute each.
 CASES = {"3d-p1-nx40": "family/3d-p1-nx40", "2d-p1-nx200": "family/2d-p1-nx200"}
 QUANTITIES = ["messages_sent", "bytes_sent", "allreduces"]
-SETUP_QUANTITIES = ["messages_sent", "bytes_sent", "collectives"]
+SETUP_QUANTITIES = ["messages_sent", "bytes_sent", "collectives", "collective_bytes"]
 
 
 def counters_library():
@@ -102,7 +102,7 @@ def table(records):
 
     rows = ["| case | ranks | n | m | it | Newton | CG | per CG iteration: messages sent | KiB sent | all-reduces "
             "| per Newton system: messages sent | KiB sent | all-reduces | mesh and space: messages sent | KiB sent "
-            "| assembly: messages sent | KiB sent |", "|" + "---|" * 17]
+            "| collective KiB | assembly: messages sent | KiB sent | collective KiB |", "|" + "---|" * 19]
     for r in records:
         c, s = r["per_cg_iteration"], r["per_newton_system"]
         ms, asm = r["setup"]["mesh_and_space"], r["setup"]["assembly"]
@@ -112,8 +112,12 @@ def table(records):
                     f"{pair(c['bytes_sent'], 1024)} | {c['allreduces']['max']:.1f} | {pair(s['messages_sent'])} | "
                     f"{pair(s['bytes_sent'], 1024)} | {s['allreduces']['max']:.1f} | "
                     f"{pair(ms['messages_sent'], 1, 0)} | {pair(ms['bytes_sent'], 1024)} | "
-                    f"{pair(asm['messages_sent'], 1, 0)} | {pair(asm['bytes_sent'], 1024)} |")
-    notes = ["", "Point-to-point messages and KiB sent as max / mean over the ranks; all-reduces per rank "
+                    f"{pair(ms['collective_bytes'], 1024)} | "
+                    f"{pair(asm['messages_sent'], 1, 0)} | {pair(asm['bytes_sent'], 1024)} | "
+                    f"{pair(asm['collective_bytes'], 1024)} |")
+    notes = ["", "Point-to-point messages and KiB sent as max / mean over the ranks; collective KiB: what each "
+             "rank passes to collective calls (its send buffers; the mesh and space setup exchanges node ids "
+             "by MPI_Alltoallv), max / mean; all-reduces per rank "
              "(the max over the ranks). Per CG iteration: the Krylov phase (CG with its preconditioner "
              "applications) over the run's CG iterations; per Newton system: the rest of the solve with the "
              "preconditioner setups over the Newton systems; mesh and space, assembly: totals of the phase. "
