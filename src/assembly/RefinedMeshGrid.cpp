@@ -55,21 +55,21 @@ VertexGraph coarseMeshGraph(const detail::CoarseMeshLattice& lattice, const deta
 
 std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
     std::shared_ptr<const detail::CoarseMeshLattice> lattice, const SimplexRefinement& refinement,
-    const DistributedSpace& space, const detail::RefinedLevel& finest, bool delaunayBelow) {
+    std::shared_ptr<const DistributedSpace> space, const detail::RefinedLevel& finest, bool delaunayBelow) {
   // Finest first: each level is refined once, for its own grid and the points of the next coarser.
   const int levels = refinement.levels();
   std::shared_ptr<RefinedMeshGrid> top(new RefinedMeshGrid(*lattice, levels, levels, finest));
   // Bodies meshed apart may have points at one place: each point carries its body, that of
   // its coarse cell's nodes.
-  const MeshPieces& apart = meshPieces(space);
+  const MeshPieces& apart = meshPieces(*space);
   std::vector<int> coarseCellBody;
   if (apart.count > 1)
-    detail::forEachCellNode(space.space(), refinement, [&](long long node, long long, long long coarse,
-                                                           const LatticeSimplex&, const std::array<int, 4>&) {
+    detail::forEachCellNode(space->space(), refinement, [&](long long node, long long, long long coarse,
+                                                            const LatticeSimplex&, const std::array<int, 4>&) {
       if (coarse >= static_cast<long long>(coarseCellBody.size())) coarseCellBody.resize(coarse + 1, -1);
       coarseCellBody[coarse] = apart.ofSpaceNode[node];
     });
-  top->answerForSpace(refinement, space, finest.partVertexIds, apart.count > 1 ? apart.ofSpaceNode : std::vector<int>());
+  top->answerForSpaceWhenAsked(space, finest.partVertexIds, apart.count > 1 ? apart.ofSpaceNode : std::vector<int>());
   RefinedMeshGrid* above = top.get();
   const detail::RefinedLevel* finer = &finest;
   detail::RefinedLevel previous;
@@ -117,35 +117,44 @@ void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, c
   indexPoints();
 }
 
-void RefinedMeshGrid::answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space,
-                                     const std::vector<long long>& vertexIds, const std::vector<int>& nodeBody) {
+void RefinedMeshGrid::answerForSpaceWhenAsked(std::shared_ptr<const DistributedSpace> space,
+                                              std::vector<long long> vertexIds, std::vector<int> nodeBody) {
+  spaceToAnswerFor_.reset(new SpaceToAnswerFor{std::move(space), std::move(vertexIds), std::move(nodeBody)});
+}
+
+void RefinedMeshGrid::answerForSpace() const {
+  const std::unique_ptr<SpaceToAnswerFor> pending = std::move(spaceToAnswerFor_);
+  const DistributedSpace& space = *pending->space;
   const LagrangeSpace& pk = space.space();
   const int k = pk.degree();
+  const auto& lattice = pk.basis().latticeIndices();
   points_.resize(pk.numNodes());
   std::vector<char> seen(pk.numNodes(), 0);
-  detail::forEachCellNode(pk, refinement, [&](long long node, long long cell, long long, const LatticeSimplex&,
-                                              const std::array<int, 4>& index) {
-    if (seen[node]) return;
-    seen[node] = 1;
-    Point& point = points_[node];
-    std::copy_n(&pk.nodeCoordinates()[dim_ * node], dim_, point.x);
-    if (!nodeBody.empty()) point.body = nodeBody[node];
-    for (int v = 0; v <= dim_; ++v) {
-      point.vertices[v] = vertexIds[space.mesh().cells[(dim_ + 1) * cell + v]];
-      point.weights[v] = static_cast<double>(index[v]) / k;
-      if (index[v] == k) point.vertex = point.vertices[v];
+  for (long long cell = 0; cell < pk.mesh().numCells(); ++cell)
+    for (int local = 0; local < pk.nodesPerCell(); ++local) {
+      const long long node = pk.cellNodes(cell)[local];
+      if (seen[node]) continue;
+      seen[node] = 1;
+      Point& point = points_[node];
+      std::copy_n(&pk.nodeCoordinates()[dim_ * node], dim_, point.x);
+      if (!pending->nodeBody.empty()) point.body = pending->nodeBody[node];
+      for (int v = 0; v <= dim_; ++v) {
+        point.vertices[v] = pending->vertexIds[space.mesh().cells[(dim_ + 1) * cell + v]];
+        point.weights[v] = static_cast<double>(lattice[local][v]) / k;
+        if (lattice[local][v] == k) point.vertex = point.vertices[v];
+      }
     }
-  });
   indexPoints();
 }
 
-void RefinedMeshGrid::indexPoints() {
+void RefinedMeshGrid::indexPoints() const {
   byPlace_.resize(points_.size());
   for (std::size_t i = 0; i < points_.size(); ++i) byPlace_[i] = {placeHash(points_[i].x, dim_), i};
   detail::sortByKey(byPlace_, [](const PlaceEntry& entry) { return entry.first; });
 }
 
 const RefinedMeshGrid::Point* RefinedMeshGrid::findPoint(const double* x, int body) const {
+  if (spaceToAnswerFor_) answerForSpace();
   const std::uint64_t hash = placeHash(x, dim_);
   auto it = std::lower_bound(byPlace_.begin(), byPlace_.end(), hash,
                              [](const PlaceEntry& entry, std::uint64_t h) { return entry.first < h; });

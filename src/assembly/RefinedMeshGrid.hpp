@@ -8,7 +8,9 @@
 //
 // A rank answers for the points of its own part: vertexAt() and interpolation() for the
 // vertices of its next finer level (the finest grid: the nodes of its P_k space), given by
-// their coordinates, vertexCoordinates() for its own vertices.
+// their coordinates, vertexCoordinates() for its own vertices. The finest grid indexes the
+// space's nodes at its first such question: a P1 space's multigrid starts at the grid below
+// it and never asks, and the index would be the largest of all the levels'.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -30,9 +32,10 @@ class RefinedMeshGrid : public GeometricGrid {
   // the coarser levels below it down to the coarse mesh; `delaunayBelow`: and below that the
   // Delaunay coarse grids of the coarse mesh's vertices (DelaunayCoarseGrid), so that a large
   // coarse mesh, which the direct solver does not take, need not be left to MueLu.
+  // The finest grid keeps `space` for its answers.
   static std::shared_ptr<const RefinedMeshGrid> hierarchy(std::shared_ptr<const detail::CoarseMeshLattice> lattice,
                                                           const SimplexRefinement& refinement,
-                                                          const DistributedSpace& space,
+                                                          std::shared_ptr<const DistributedSpace> space,
                                                           const detail::RefinedLevel& finest, bool delaunayBelow);
 
   int dimension() const override { return dim_; }
@@ -57,10 +60,12 @@ class RefinedMeshGrid : public GeometricGrid {
   // coarse cell, or of each space node; empty: one body).
   void answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
                       const detail::RefinedLevel& finer, const std::vector<int>& coarseCellBody);
-  void answerForSpace(const SimplexRefinement& refinement, const DistributedSpace& space,
-                      const std::vector<long long>& vertexIds, const std::vector<int>& nodeBody);
+  // Of the finest grid: the space's nodes are indexed by the first findPoint().
+  void answerForSpaceWhenAsked(std::shared_ptr<const DistributedSpace> space, std::vector<long long> vertexIds,
+                               std::vector<int> nodeBody);
+  void answerForSpace() const;
   // Fills byPlace_ for points_.
-  void indexPoints();
+  void indexPoints() const;
   // The point at x (of `body`, -1: any), or null.
   const Point* findPoint(const double* x, int body) const;
 
@@ -68,11 +73,19 @@ class RefinedMeshGrid : public GeometricGrid {
   long long numVertices_ = 0;
   std::vector<long long> vertexIds_;  // this rank's vertices, ascending
   std::vector<double> coordinates_;   // dim_ per vertex
-  std::vector<Point> points_;
+  mutable std::vector<Point> points_;
   // (hash of a point's place, its index in points_), ascending: the table that finds a point
   // by its coordinates, radix-sorted by 8-byte keys rather than the points compared by theirs
   using PlaceEntry = std::pair<std::uint64_t, std::size_t>;
-  std::vector<PlaceEntry> byPlace_;
+  mutable std::vector<PlaceEntry> byPlace_;
+  // Of the finest grid until its first findPoint(): the space whose nodes it answers for, the
+  // global id (here) of each vertex of the space's mesh, and each node's body (empty: one body).
+  struct SpaceToAnswerFor {
+    std::shared_ptr<const DistributedSpace> space;
+    std::vector<long long> vertexIds;
+    std::vector<int> nodeBody;
+  };
+  mutable std::unique_ptr<SpaceToAnswerFor> spaceToAnswerFor_;
   std::shared_ptr<const GeometricGrid> coarser_;  // a RefinedMeshGrid but below the coarse mesh
 };
 
