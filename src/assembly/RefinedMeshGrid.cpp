@@ -69,7 +69,8 @@ std::shared_ptr<const RefinedMeshGrid> RefinedMeshGrid::hierarchy(
       if (coarse >= static_cast<long long>(coarseCellBody.size())) coarseCellBody.resize(coarse + 1, -1);
       coarseCellBody[coarse] = apart.ofSpaceNode[node];
     });
-  top->answerForSpaceWhenAsked(space, finest.partVertexIds, apart.count > 1 ? apart.ofSpaceNode : std::vector<int>());
+  top->answerForSpaceWhenAsked(refinement, space, finest.partVertexIds,
+                               apart.count > 1 ? apart.ofSpaceNode : std::vector<int>());
   RefinedMeshGrid* above = top.get();
   const detail::RefinedLevel* finer = &finest;
   detail::RefinedLevel previous;
@@ -117,9 +118,11 @@ void RefinedMeshGrid::answerForLevel(const detail::CoarseMeshLattice& lattice, c
   indexPoints();
 }
 
-void RefinedMeshGrid::answerForSpaceWhenAsked(std::shared_ptr<const DistributedSpace> space,
+void RefinedMeshGrid::answerForSpaceWhenAsked(const SimplexRefinement& refinement,
+                                              std::shared_ptr<const DistributedSpace> space,
                                               std::vector<long long> vertexIds, std::vector<int> nodeBody) {
-  spaceToAnswerFor_.reset(new SpaceToAnswerFor{std::move(space), std::move(vertexIds), std::move(nodeBody)});
+  spaceToAnswerFor_.reset(
+      new SpaceToAnswerFor{refinement, std::move(space), std::move(vertexIds), std::move(nodeBody)});
 }
 
 void RefinedMeshGrid::answerForSpace() const {
@@ -127,23 +130,21 @@ void RefinedMeshGrid::answerForSpace() const {
   const DistributedSpace& space = *pending->space;
   const LagrangeSpace& pk = space.space();
   const int k = pk.degree();
-  const auto& lattice = pk.basis().latticeIndices();
   points_.resize(pk.numNodes());
   std::vector<char> seen(pk.numNodes(), 0);
-  for (long long cell = 0; cell < pk.mesh().numCells(); ++cell)
-    for (int local = 0; local < pk.nodesPerCell(); ++local) {
-      const long long node = pk.cellNodes(cell)[local];
-      if (seen[node]) continue;
-      seen[node] = 1;
-      Point& point = points_[node];
-      std::copy_n(&pk.nodeCoordinates()[dim_ * node], dim_, point.x);
-      if (!pending->nodeBody.empty()) point.body = pending->nodeBody[node];
-      for (int v = 0; v <= dim_; ++v) {
-        point.vertices[v] = pending->vertexIds[space.mesh().cells[(dim_ + 1) * cell + v]];
-        point.weights[v] = static_cast<double>(lattice[local][v]) / k;
-        if (lattice[local][v] == k) point.vertex = point.vertices[v];
-      }
+  detail::forEachCellNode(pk, pending->refinement, [&](long long node, long long cell, long long,
+                                                       const LatticeSimplex&, const std::array<int, 4>& index) {
+    if (seen[node]) return;
+    seen[node] = 1;
+    Point& point = points_[node];
+    std::copy_n(&pk.nodeCoordinates()[dim_ * node], dim_, point.x);
+    if (!pending->nodeBody.empty()) point.body = pending->nodeBody[node];
+    for (int v = 0; v <= dim_; ++v) {
+      point.vertices[v] = pending->vertexIds[space.mesh().cells[(dim_ + 1) * cell + v]];
+      point.weights[v] = static_cast<double>(index[v]) / k;
+      if (index[v] == k) point.vertex = point.vertices[v];
     }
+  });
   indexPoints();
 }
 

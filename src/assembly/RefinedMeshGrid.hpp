@@ -61,8 +61,8 @@ class RefinedMeshGrid : public GeometricGrid {
   void answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
                       const detail::RefinedLevel& finer, const std::vector<int>& coarseCellBody);
   // Of the finest grid: the space's nodes are indexed by the first findPoint().
-  void answerForSpaceWhenAsked(std::shared_ptr<const DistributedSpace> space, std::vector<long long> vertexIds,
-                               std::vector<int> nodeBody);
+  void answerForSpaceWhenAsked(const SimplexRefinement& refinement, std::shared_ptr<const DistributedSpace> space,
+                               std::vector<long long> vertexIds, std::vector<int> nodeBody);
   void answerForSpace() const;
   // Fills byPlace_ for points_.
   void indexPoints() const;
@@ -78,9 +78,11 @@ class RefinedMeshGrid : public GeometricGrid {
   // by its coordinates, radix-sorted by 8-byte keys rather than the points compared by theirs
   using PlaceEntry = std::pair<std::uint64_t, std::size_t>;
   mutable std::vector<PlaceEntry> byPlace_;
-  // Of the finest grid until its first findPoint(): the space whose nodes it answers for, the
-  // global id (here) of each vertex of the space's mesh, and each node's body (empty: one body).
+  // Of the finest grid until its first findPoint(): the refinement (a copy: a few hundred
+  // template cells), the space whose nodes it answers for, the global id (here) of each vertex
+  // of the space's mesh, and each node's body (empty: one body).
   struct SpaceToAnswerFor {
+    SimplexRefinement refinement;
     std::shared_ptr<const DistributedSpace> space;
     std::vector<long long> vertexIds;
     std::vector<int> nodeBody;
