@@ -33,10 +33,11 @@ class RefinedMeshGrid : public GeometricGrid {
   // Delaunay coarse grids of the coarse mesh's vertices (DelaunayCoarseGrid), so that a large
   // coarse mesh, which the direct solver does not take, need not be left to MueLu.
   // The finest grid keeps `space` for its answers.
+  // The finest grid takes `finest`'s vertex ids and coordinates.
   static std::shared_ptr<const RefinedMeshGrid> hierarchy(std::shared_ptr<const detail::CoarseMeshLattice> lattice,
                                                           const SimplexRefinement& refinement,
                                                           std::shared_ptr<const DistributedSpace> space,
-                                                          const detail::RefinedLevel& finest, bool delaunayBelow);
+                                                          detail::RefinedLevel finest, bool delaunayBelow);
 
   int dimension() const override { return dim_; }
   long long numVertices() const override { return numVertices_; }
@@ -51,15 +52,17 @@ class RefinedMeshGrid : public GeometricGrid {
   std::string description() const override;
 
  private:
-  struct Point;  // a point of the finer level, its vertex here (or -1), cell vertices and weights
+  struct Point;  // a point of the finer level: its cell's vertices here and their weights
 
-  // Level `level` of `levels`, whose vertices `own` holds.
-  RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, int level, int levels, const detail::RefinedLevel& own);
-  // The points to answer for: the vertices of the next finer level, or the P_k space's nodes
-  // (the global id of each of its mesh's vertices given), with their bodies (of each local
-  // coarse cell, or of each space node; empty: one body).
+  // Level `level` of `levels` with these vertices (ascending global ids) and coordinates.
+  RefinedMeshGrid(const detail::CoarseMeshLattice& lattice, int level, int levels, std::vector<long long> vertexIds,
+                  std::vector<double> coordinates);
+  // The points to answer for: the vertices of the next finer level (`finerGrid`, refined as
+  // `finer`), or the P_k space's nodes (the global id of each of its mesh's vertices given),
+  // with their bodies (of each local coarse cell, or of each space node; empty: one body).
   void answerForLevel(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                      const detail::RefinedLevel& finer, const std::vector<int>& coarseCellBody);
+                      const RefinedMeshGrid& finerGrid, const detail::RefinedLevel& finer,
+                      const std::vector<int>& coarseCellBody);
   // Of the finest grid: the space's nodes are indexed by the first findPoint().
   void answerForSpaceWhenAsked(const SimplexRefinement& refinement, std::shared_ptr<const DistributedSpace> space,
                                std::vector<long long> vertexIds, std::vector<int> nodeBody);
@@ -68,12 +71,19 @@ class RefinedMeshGrid : public GeometricGrid {
   void indexPoints() const;
   // The point at x (of `body`, -1: any), or null.
   const Point* findPoint(const double* x, int body) const;
+  const double* placeOf(std::size_t point) const { return pointCoordinates_->data() + dim_ * point; }
+  // The vertex here at `point`, or -1.
+  long long vertexOf(const Point& point) const;
 
   int dim_ = 0, level_ = 0, levels_ = 0;
   long long numVertices_ = 0;
   std::vector<long long> vertexIds_;  // this rank's vertices, ascending
-  std::vector<double> coordinates_;   // dim_ per vertex
+  // dim_ per vertex; the next coarser grid's points are these vertices, and it shares them.
+  std::shared_ptr<const std::vector<double>> coordinates_;
   mutable std::vector<Point> points_;
+  // dim_ per point of points_: the finer grid's coordinates_, or the P_k space's nodes'.
+  mutable std::shared_ptr<const std::vector<double>> pointCoordinates_;
+  mutable int weightDenominator_ = 1;  // 2 between levels, k for the P_k space's nodes
   // (hash of a point's place, its index in points_), ascending: the table that finds a point
   // by its coordinates, radix-sorted by 8-byte keys rather than the points compared by theirs
   using PlaceEntry = std::pair<std::uint64_t, std::size_t>;

@@ -97,7 +97,7 @@ std::shared_ptr<const GeometricGrid> latticeSpace(const Teuchos::ParameterList& 
   }
   if (gmsh.refinements == 0) return nullptr;
   const Teuchos::TimeMonitor timer(*setupTimer("levels"));
-  return RefinedMeshGrid::hierarchy(lattice, refinement, space, finest, def.delaunayCoarseGrids);
+  return RefinedMeshGrid::hierarchy(lattice, refinement, space, std::move(finest), def.delaunayCoarseGrids);
 }
 
 // The resolution of the finest lattice points of a Gmsh mesh: its space's nodes, k 2^r.
