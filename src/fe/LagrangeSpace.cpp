@@ -183,7 +183,7 @@ void LagrangeSpace::build(const std::vector<double>* nonVertexCoordinates) {
   std::vector<char> onBoundary(numVertices, 0);
   KeyTable facetIndex = boundaryFacetIndex(mesh, onBoundary);
   facetCells_.assign(numFacets, {-1, -1});
-  nodeCoordinates_ = mesh.vertices;
+  if (degree > 1) nodeCoordinates_ = mesh.vertices;
   numNodes_ = numVertices;
   KeyTable nodeIndex(degree > 1 ? numCells : 0);
   if (degree > 1) cellNodes_.resize(static_cast<std::size_t>(basis_.size()) * numCells);

@@ -43,7 +43,10 @@ class LagrangeSpace {
     return (basis_.degree() == 1 ? mesh_->cells.data() : cellNodes_.data()) + nodesPerCell() * cell;
   }
 
-  const std::vector<double>& nodeCoordinates() const { return nodeCoordinates_; }  // dim * numNodes()
+  // dim * numNodes(); P1 nodes are the vertices: the mesh's array, not a copy.
+  const std::vector<double>& nodeCoordinates() const {
+    return basis_.degree() == 1 ? mesh_->vertices : nodeCoordinates_;
+  }
 
   // Sorted node ids of all lattice nodes of the boundary facets with that tag.
   std::vector<long long> boundaryNodes(int tag) const;
@@ -65,7 +68,7 @@ class LagrangeSpace {
   LagrangeBasis basis_;
   long long numNodes_ = 0;
   std::vector<long long> cellNodes_;  // nodesPerCell() per cell; empty for P1
-  std::vector<double> nodeCoordinates_;
+  std::vector<double> nodeCoordinates_;  // empty for P1
   std::vector<std::pair<long long, int>> facetCells_;  // (cell, local facet) of each mesh facet
 };
 
