@@ -7,7 +7,9 @@ rerun is a choice.
 
     scripts/stale_results.py
 
-Prints one line per cited result set (its JSON file) and what is wrong with it, then a count.
+Prints one line per cited result set (its JSON file) and what is wrong with it (for a set made
+before the last code change: how many commits changed the code since, and in which modules),
+then a count.
 """
 import glob
 import json
@@ -57,8 +59,26 @@ def verdict(commit, last_code_change):
         return f"records {commit}, which this repository does not hold"
     if full != last_code_change and subprocess.run(["git", "merge-base", "--is-ancestor", full, last_code_change],
                                                    cwd=ROOT).returncode == 0:
-        return f"made at {commit}, before the last change of src/ or include/ ({last_code_change[:7]})"
+        return (f"made at {commit}, before the last change of src/ or include/ ({last_code_change[:7]}); "
+                f"{changes_since(full, last_code_change)}")
     return None
+
+
+def module_of(path):
+    """src/solver/linear/X.cpp -> solver/linear; include/signorini/fe/X.hpp -> fe; src/X -> src."""
+    for prefix in ("src/", "include/signorini/", "include/"):
+        if path.startswith(prefix):
+            return os.path.dirname(path[len(prefix):]) or prefix.rstrip("/")
+    return os.path.dirname(path)
+
+
+def changes_since(commit, last_code_change):
+    """How many commits changed src/ or include/ after `commit`, and in which modules (the
+    directories under src/ and include/signorini/): what to read before choosing to rerun."""
+    count = git("rev-list", "--count", f"{commit}..{last_code_change}", "--", "src", "include")
+    files = git("diff", "--name-only", commit, last_code_change, "--", "src", "include").split()
+    modules = sorted({module_of(path) for path in files})
+    return f"{count} commit(s) since, in {', '.join(modules) or 'no file that still differs'}"
 
 
 def main():
