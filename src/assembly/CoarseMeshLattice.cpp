@@ -4,6 +4,7 @@
 #include <array>
 #include <functional>
 #include <limits>
+#include <numeric>
 #include <string>
 #include <tuple>
 #if defined(__GLIBC__)
@@ -285,6 +286,13 @@ CoarseMeshLattice::CoarseMeshLattice(const RCP<const Comm>& comm, GmshMeshPart&&
 void CoarseMeshLattice::indexNearEntities() {
   std::copy(part_.entityCounts.begin(), part_.entityCounts.end(), counts_);
   const int d = dim();
+  positionsById_.resize(part_.mesh.numCells());
+  for (long long cell = 0; cell < part_.mesh.numCells(); ++cell) {
+    std::array<unsigned char, 4>& order = positionsById_[cell];
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.begin() + d + 1,
+              [&](int i, int j) { return vertexId(cell, i) < vertexId(cell, j); });
+  }
   for (std::size_t f = 0; f < part_.nearFacetTags.size(); ++f) {
     const EntityKey facet = sortedKey(&part_.nearFacets[d * f], d);
     boundaryEntities_[facet].push_back(part_.nearFacetTags[f]);
@@ -315,9 +323,9 @@ long long CoarseMeshLattice::numPoints(long long n) const {
 
 int CoarseMeshLattice::carrier(long long cell, const LatticePoint& a, int* positions) const {
   int count = 0;
+  const std::array<unsigned char, 4>& order = positionsById_[cell];
   for (int i = 0; i <= dim(); ++i)
-    if (a[i] > 0) positions[count++] = i;
-  std::sort(positions, positions + count, [&](int i, int j) { return vertexId(cell, i) < vertexId(cell, j); });
+    if (a[order[i]] > 0) positions[count++] = order[i];
   return count;
 }
 

@@ -73,7 +73,8 @@ class CoarseMeshLattice {
   void placeOnGeometry(const std::string& path, const SimplexRefinement& refinement);
 
  private:
-  // Indexes part_'s boundary and geometry entities (both constructors end here).
+  // Indexes part_'s boundary and geometry entities and orders each cell's vertices by global
+  // id (both constructors end here).
   void indexNearEntities();
   // The carrier's local vertices (cell vertex positions), sorted by global vertex id.
   int carrier(long long cell, const LatticePoint& a, int* positions) const;
@@ -91,6 +92,9 @@ class CoarseMeshLattice {
   MeshPart part_;
   long long counts_[4] = {0, 0, 0, 0};  // vertices, edges, faces (3D), cells
   std::size_t serialPhaseBytes_ = 0;
+  // Of each cell, its vertex positions in increasing global id: carrier() is asked for every
+  // lattice point of every cell, so the cell's order is found once.
+  std::vector<std::array<unsigned char, 4>> positionsById_;
   // Sorted global vertex ids of every boundary facet near this part, and of each of their
   // edges, with the facet's tag.
   std::map<EntityKey, std::vector<int>> boundaryEntities_;

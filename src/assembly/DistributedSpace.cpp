@@ -111,21 +111,31 @@ DistributedSpace::DistributedSpace(const detail::CoarseMeshLattice& lattice, con
   numGlobalNodes_ = part.numGlobalNodes;
   numGlobalCells_ = part.numGlobalCells;
   serialPhaseBytes_ = lattice.serialPhaseBytes();
-  adopt(std::move(part.part), degree);
+  adopt(std::move(part.part), std::move(part.mesh), std::move(part.space));
 }
 
 void DistributedSpace::adopt(detail::MeshPart&& part, int degree) {
-  const int rank = comm_->getRank();
-  mesh_ = std::make_shared<const SimplexMesh>(std::move(part.mesh));
-  // The part's node data follows this space's numbering; a mismatch is a bug, not an input error.
+  auto mesh = std::make_shared<const SimplexMesh>(std::move(part.mesh));
+  std::unique_ptr<LagrangeSpace> space;
   bool consistent = true;
   try {
-    space_ = std::make_unique<LagrangeSpace>(*mesh_, degree, part.nodeCoordinates);
-    consistent = space_->numNodes() == static_cast<long long>(part.nodeIds.size());
+    space = std::make_unique<LagrangeSpace>(*mesh, degree, part.nodeCoordinates);
   } catch (const Error&) {
     consistent = false;
   }
+  // adopt() below checks the space against the part on every rank.
   if (!onEveryRank(*comm_, consistent)) throw Error("distributed space: a rank's space does not match its part");
+  adopt(std::move(part), std::move(mesh), std::move(space));
+}
+
+void DistributedSpace::adopt(detail::MeshPart&& part, std::shared_ptr<const SimplexMesh> mesh,
+                             std::unique_ptr<LagrangeSpace> space) {
+  const int rank = comm_->getRank();
+  mesh_ = std::move(mesh);
+  space_ = std::move(space);
+  // The part's node data follows this space's numbering; a mismatch is a bug, not an input error.
+  if (!onEveryRank(*comm_, space_->numNodes() == static_cast<long long>(part.nodeIds.size())))
+    throw Error("distributed space: a rank's space does not match its part");
   nodeId_ = std::move(part.nodeIds);
   nodeOwner_ = std::move(part.nodeOwners);
   globalCells_ = std::move(part.globalCells);

@@ -92,6 +92,8 @@ class DistributedSpace final : public FiniteElementSpace {
  private:
   // Takes this rank's part: builds the space on it, the owned and overlap maps.
   void adopt(detail::MeshPart&& part, int degree);
+  // The same for a part whose space was built on its mesh already (part.mesh is not read).
+  void adopt(detail::MeshPart&& part, std::shared_ptr<const SimplexMesh> mesh, std::unique_ptr<LagrangeSpace> space);
 
   RCP<const Comm> comm_;
   std::shared_ptr<const SimplexMesh> mesh_;

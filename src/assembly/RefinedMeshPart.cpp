@@ -190,14 +190,16 @@ DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, con
       part.globalCells[c * perCoarse + t] = lattice.globalCell(c) * perCoarse + t;
   result.numGlobalCells = lattice.numGlobalCells() * perCoarse;
 
-  const LagrangeSpace space(part.mesh, degree);
+  result.mesh = std::make_shared<const SimplexMesh>(std::move(part.mesh));
+  result.space = std::make_unique<LagrangeSpace>(*result.mesh, degree);
+  const LagrangeSpace& space = *result.space;
   const long long numNodes = space.numNodes(), n = degree * (1LL << levels);
   std::vector<GlobalOrdinal> keys(numNodes);
   part.nodeOwners.resize(numNodes);
   const std::vector<int>& tags = lattice.boundaryTags();
   std::vector<std::vector<long long>> tagNodes(tags.size());
   std::vector<char> seen(numNodes, 0);
-  const int d = part.mesh.dim;
+  const int d = result.mesh->dim;
   forEachCellNode(space, refinement, [&](long long node, long long, long long coarseCell, const LatticeSimplex& corners,
                                          const std::array<int, 4>& index) {
     if (seen[node]) return;
@@ -212,8 +214,6 @@ DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, con
   part.nodeIds = ownerOrderedIds(lattice.comm(), keys, part.nodeOwners, numGlobalNodes,
                                  nodesByLocality(space, coarseCellsAlongCurve(lattice.mesh()), perCoarse));
   result.numGlobalNodes = numGlobalNodes;
-  part.nodeCoordinates.assign(space.nodeCoordinates().begin() + d * part.mesh.numVertices(),
-                              space.nodeCoordinates().end());
 
   part.boundaryTags = tags;
   part.boundaryStart.push_back(0);
