@@ -1,9 +1,13 @@
 #include "core/RootTask.hpp"
 
+#include <chrono>
 #include <exception>
 #include <string>
+#include <thread>
 
+#include <mpi.h>
 #include <Teuchos_CommHelpers.hpp>
+#include <Teuchos_DefaultMpiComm.hpp>
 
 #include "signorini/core/Error.hpp"
 
@@ -27,6 +31,21 @@ int run(const std::function<void()>& task, std::string& message) {
   return kNone;
 }
 
+// Returns once every rank called it, the waiting ones asleep rather than polling in MPI: where
+// ranks share cores (more ranks than cores, hyperthreads), a polling rank would take the
+// core that rank 0's serial task needs.
+void waitAsleep(const Comm& comm) {
+  const auto* mpi = dynamic_cast<const Teuchos::MpiComm<int>*>(&comm);
+  if (mpi == nullptr || comm.getSize() == 1) return;
+  MPI_Request request;
+  MPI_Ibarrier(*mpi->getRawMpiComm(), &request);
+  for (int done = 0;;) {
+    MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+    if (done) return;
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
+}
+
 // Throws on every rank the error of rank `from` (kind and message as `status` there).
 void throwFrom(const Comm& comm, int from, int status[2], std::string& message) {
   Teuchos::broadcast(comm, from, 2, status);
@@ -46,6 +65,7 @@ void runOnRoot(const Comm& comm, const std::function<void()>& task) {
     status[0] = run(task, message);
     status[1] = static_cast<int>(message.size());
   }
+  waitAsleep(comm);
   throwFrom(comm, 0, status, message);
 }
 
