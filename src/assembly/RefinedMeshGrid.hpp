@@ -32,8 +32,8 @@ class RefinedMeshGrid : public GeometricGrid {
   // the coarser levels below it down to the coarse mesh; `delaunayBelow`: and below that the
   // Delaunay coarse grids of the coarse mesh's vertices (DelaunayCoarseGrid), so that a large
   // coarse mesh, which the direct solver does not take, need not be left to MueLu.
-  // The finest grid keeps `space` for its answers.
-  // The finest grid takes `finest`'s vertex ids and coordinates.
+  // The finest grid keeps `space` for its answers and takes `finest`'s vertex ids and
+  // coordinates.
   static std::shared_ptr<const RefinedMeshGrid> hierarchy(std::shared_ptr<const detail::CoarseMeshLattice> lattice,
                                                           const SimplexRefinement& refinement,
                                                           std::shared_ptr<const DistributedSpace> space,

@@ -1,6 +1,7 @@
 #include "fe/SimplexRefinement.hpp"
 
 #include <algorithm>
+#include <map>
 #include <string>
 #include <utility>
 
@@ -59,19 +60,18 @@ SimplexRefinement::SimplexRefinement(int dim, int levels) : dim_(dim) {
   for (int i = 0; i <= dim; ++i) reference[i][i] = 1;
   std::vector<LatticeSimplex> bey{reference};  // the cells of a level in Bey's order, to refine
   cells_.push_back(bey);
-  parents_.emplace_back();
+  std::vector<std::map<LatticePoint, std::array<LatticePoint, 2>>> parents(1);
   for (int level = 1; level <= levels; ++level) {
     std::vector<LatticeSimplex> next;
-    std::map<LatticePoint, std::array<LatticePoint, 2>> parents;
+    auto& ofPoint = parents.emplace_back();
     for (const LatticeSimplex& cell : bey) {
       for (const LatticeSimplex& child : children(dim, cell)) next.push_back(child);
       for (int i = 0; i <= dim; ++i)
-        for (int j = i; j <= dim; ++j) parents[sum(cell[i], cell[j])] = {cell[i], cell[j]};
+        for (int j = i; j <= dim; ++j) ofPoint[sum(cell[i], cell[j])] = {cell[i], cell[j]};
     }
     bey = std::move(next);
     cells_.emplace_back();
     for (const LatticeSimplex& cell : bey) cells_.back().push_back(oriented(dim, cell));
-    parents_.push_back(std::move(parents));
   }
   for (const std::vector<LatticeSimplex>& cells : cells_) {
     std::vector<LatticePoint> points;
@@ -88,13 +88,21 @@ SimplexRefinement::SimplexRefinement(int dim, int levels) : dim_(dim) {
     points_.push_back(std::move(points));
     cellPoints_.push_back(std::move(cellPoints));
   }
+  for (const auto& ofPoint : parents) {  // the keys are points(level), in its order
+    parents_.emplace_back();
+    for (const auto& [point, ends] : ofPoint) parents_.back().push_back(ends);
+  }
+  for (int level = 1; level <= levels; ++level)
+    if (parents_[level].size() != points_[level].size()) throw Error("simplex refinement: parents do not match points");
 }
 
 const std::array<LatticePoint, 2>& SimplexRefinement::parents(int level, const LatticePoint& point) const {
   if (level < 1 || level > levels()) throw Error("simplex refinement: no parents at level " + std::to_string(level));
-  const auto it = parents_[level].find(point);
-  if (it == parents_[level].end()) throw Error("simplex refinement: not a vertex of level " + std::to_string(level));
-  return it->second;
+  const std::vector<LatticePoint>& points = points_[level];
+  const auto it = std::lower_bound(points.begin(), points.end(), point);
+  if (it == points.end() || *it != point)
+    throw Error("simplex refinement: not a vertex of level " + std::to_string(level));
+  return parents_[level][it - points.begin()];
 }
 
 }  // namespace signorini

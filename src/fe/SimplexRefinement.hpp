@@ -12,7 +12,6 @@
 // of exactly one edge of the level-l cells: refinement needs no coordinates, and neighbouring
 // simplices refined alone agree on their shared facets (red refinement of a triangle is unique).
 #include <array>
-#include <map>
 #include <vector>
 
 namespace signorini {
@@ -45,7 +44,8 @@ class SimplexRefinement {
   std::vector<std::vector<LatticeSimplex>> cells_;
   std::vector<std::vector<LatticePoint>> points_;
   std::vector<std::vector<std::array<int, 4>>> cellPoints_;
-  std::vector<std::map<LatticePoint, std::array<LatticePoint, 2>>> parents_;  // per level
+  // Per level, the parents of each of points(level), in its order: found by binary search.
+  std::vector<std::vector<std::array<LatticePoint, 2>>> parents_;
 };
 
 }  // namespace signorini
