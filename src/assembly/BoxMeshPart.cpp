@@ -2,9 +2,6 @@
 
 #include <array>
 
-
-#include "fe/LagrangeSpace.hpp"
-
 namespace signorini::detail {
 namespace {
 
@@ -46,9 +43,10 @@ DistributedBoxPart makeBoxMeshPart(const RCP<const Comm>& comm, const BoxGrid& b
   const BoxBlock block = blocks.block(rank);
   DistributedBoxPart result;
   MeshPart& part = result.part;
-  part.mesh = makeBoxMesh(dim, box.cells, box.lengths, block);
+  result.mesh = std::make_shared<const SimplexMesh>(makeBoxMesh(dim, box.cells, box.lengths, block));
   part.globalCells = boxBlockCells(dim, box.cells, block);
-  const LagrangeSpace space(part.mesh, degree);
+  result.space = std::make_unique<LagrangeSpace>(*result.mesh, degree);
+  const LagrangeSpace& space = *result.space;
   const long long numNodes = space.numNodes();
 
   // Lattice points, their keys (the point's index on the whole lattice) and owners.
@@ -61,8 +59,6 @@ DistributedBoxPart makeBoxMeshPart(const RCP<const Comm>& comm, const BoxGrid& b
     part.nodeOwners[n] = blocks.lowestBlockHolding(point[n], degree);
   }
   part.nodeIds = ownerOrderedIds(comm, key, part.nodeOwners, result.numGlobalNodes);
-  part.nodeCoordinates.assign(space.nodeCoordinates().begin() + dim * part.mesh.numVertices(),
-                              space.nodeCoordinates().end());
 
   // Boundary nodes by their lattice point: tag 2a + 1 is the plane x_a = 0, 2a + 2 is x_a = L_a.
   part.boundaryStart.push_back(0);

@@ -101,7 +101,7 @@ DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, const BoxGrid& b
   detail::DistributedBoxPart part = detail::makeBoxMeshPart(comm_, box, blocks, degree);
   numGlobalNodes_ = part.numGlobalNodes;
   numGlobalCells_ = part.numGlobalCells;
-  adopt(std::move(part.part), degree);
+  adopt(std::move(part.part), std::move(part.mesh), std::move(part.space));
 }
 
 DistributedSpace::DistributedSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
