@@ -37,11 +37,11 @@ std::vector<Point> latticePoints(const LagrangeSpace& space, const BoxBlock& blo
 
 }  // namespace
 
-DistributedBoxPart makeBoxMeshPart(const RCP<const Comm>& comm, const BoxGrid& box, const BoxDecomposition& blocks,
+PartWithSpace makeBoxMeshPart(const RCP<const Comm>& comm, const BoxGrid& box, const BoxDecomposition& blocks,
                                    int degree) {
   const int rank = comm->getRank(), dim = box.dim;
   const BoxBlock block = blocks.block(rank);
-  DistributedBoxPart result;
+  PartWithSpace result;
   MeshPart& part = result.part;
   result.mesh = std::make_shared<const SimplexMesh>(makeBoxMesh(dim, box.cells, box.lengths, block));
   part.globalCells = boxBlockCells(dim, box.cells, block);

@@ -98,7 +98,7 @@ DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, const BoxGrid& b
     *this = DistributedSpace(comm, std::move(global), degree);
     return;
   }
-  detail::DistributedBoxPart part = detail::makeBoxMeshPart(comm_, box, blocks, degree);
+  detail::PartWithSpace part = detail::makeBoxMeshPart(comm_, box, blocks, degree);
   numGlobalNodes_ = part.numGlobalNodes;
   numGlobalCells_ = part.numGlobalCells;
   adopt(std::move(part.part), std::move(part.mesh), std::move(part.space));
@@ -107,7 +107,7 @@ DistributedSpace::DistributedSpace(const RCP<const Comm>& comm, const BoxGrid& b
 DistributedSpace::DistributedSpace(const detail::CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
                                    int degree, detail::RefinedLevel& finest)
     : comm_(lattice.comm()) {
-  detail::DistributedRefinedPart part = detail::makeRefinedMeshPart(lattice, refinement, degree, finest);
+  detail::PartWithSpace part = detail::makeRefinedMeshPart(lattice, refinement, degree, finest);
   numGlobalNodes_ = part.numGlobalNodes;
   numGlobalCells_ = part.numGlobalCells;
   serialPhaseBytes_ = lattice.serialPhaseBytes();

@@ -3,8 +3,10 @@
 // cells form a mesh of their own; the P_k space built on it numbers its nodes like any
 // LagrangeSpace, and the part says for each of those nodes its renumbered global id and
 // its owner.
+#include <memory>
 #include <vector>
 
+#include "fe/LagrangeSpace.hpp"
 #include "fe/SimplexMesh.hpp"
 #include "signorini/core/TpetraTypes.hpp"
 
@@ -40,6 +42,15 @@ struct MeshPart {
   // those with at least two vertices among the part's, with their geometry entities.
   std::vector<long long> nearGeometryFacets, nearGeometryEdges;
   std::vector<int> nearGeometryFacetEntities, nearGeometryEdgeEntities;
+};
+
+// A part that its rank made for itself (a box block, refined coarse cells), with the P_k space
+// that numbered its nodes, so that the distributed space need not build it again.
+struct PartWithSpace {
+  MeshPart part;  // without its mesh and node coordinates: `mesh` and `space` hold them
+  std::shared_ptr<const SimplexMesh> mesh;
+  std::unique_ptr<LagrangeSpace> space;
+  long long numGlobalNodes = 0, numGlobalCells = 0;
 };
 
 // The renumbered ids of a part's nodes, each named by a global `key` (the same on every rank

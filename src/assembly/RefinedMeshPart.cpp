@@ -165,10 +165,10 @@ RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefine
   return result;
 }
 
-DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                                           int degree, RefinedLevel& finest) {
+PartWithSpace makeRefinedMeshPart(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int degree,
+                                  RefinedLevel& finest) {
   const int levels = refinement.levels();
-  DistributedRefinedPart result;
+  PartWithSpace result;
   MeshPart& part = result.part;
   part.mesh.dim = finest.mesh.dim;
   part.mesh.vertices = finest.mesh.vertices;

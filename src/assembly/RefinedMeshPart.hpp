@@ -5,7 +5,6 @@
 // space on the finest level those of resolution k 2^levels: their ids and owners come from
 // the coarse entities, and the fine nodes are renumbered owner by owner as for any mesh.
 #include <array>
-#include <memory>
 #include <vector>
 
 #include "assembly/CoarseMeshLattice.hpp"
@@ -32,19 +31,12 @@ struct RefinedLevel {
 RefinedLevel refineLocally(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int level,
                            bool withFacets);
 
-struct DistributedRefinedPart {
-  MeshPart part;  // without its mesh and node coordinates: `mesh` and `space` hold them
-  std::shared_ptr<const SimplexMesh> mesh;
-  std::unique_ptr<LagrangeSpace> space;  // the P_k space on `mesh`, which numbered the part's nodes
-  long long numGlobalNodes = 0, numGlobalCells = 0;
-};
-
 // The part of the P_k space on level refinement.levels(), whose refinement `finest` is (made
 // with its facets): the part's mesh takes its cells and facets, its vertices in order of first
 // appearance over the cells, `finest` keeps its vertex data for the multigrid's grids and
 // learns the part's vertex ids. Collective.
-DistributedRefinedPart makeRefinedMeshPart(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement,
-                                           int degree, RefinedLevel& finest);
+PartWithSpace makeRefinedMeshPart(const CoarseMeshLattice& lattice, const SimplexRefinement& refinement, int degree,
+                                  RefinedLevel& finest);
 
 // The coarse cells in the order of their centroids along a Morton (Z-order) curve: a Gmsh
 // mesh's cells come in the mesher's order, which scatters neighbours in memory.
