@@ -67,8 +67,8 @@ void validateInto(const Teuchos::ParameterList& user, Teuchos::ParameterList& me
     }
     if (!merged.isParameter(name)) {
       std::string hint = closestName(name, merged);
-      throw InputError(where + ": unknown parameter" +
-                       (hint.empty() ? std::string() : "; did you mean \"" + hint + "\"?") +
+      throw InputError(where + (entry.isList() ? ": unknown sublist" : ": unknown parameter") +
+                       (hint.empty() ? std::string(".") : "; did you mean \"" + hint + "\"?") +
                        " Valid names here: " + validNames(merged));
     }
     Teuchos::ParameterEntry& target = merged.getEntry(name);

@@ -157,6 +157,16 @@ TEST(Application, MisspelledNamesGetAHint) {
   EXPECT_NE(nestedMessage.find("did you mean \"gap: value\""), std::string::npos) << nestedMessage;
 }
 
+// A sublist the list does not have is named as one, its clause ended before the valid names.
+TEST(Application, UnknownSublistIsNamedAsOne) {
+  const Teuchos::ParameterList valid = validTopLevelParameters();
+  Teuchos::ParameterList user;
+  user.sublist("Solver").sublist("Newton").set("maximum iterations", 0);
+  const std::string message = inputErrorOf([&] { validatedParameters(user, valid, ""); });
+  EXPECT_NE(message.find("Solver/Newton: unknown sublist. Valid names here: "), std::string::npos) << message;
+  EXPECT_NE(message.find("\"Krylov\""), std::string::npos) << message;
+}
+
 TEST(Application, BadValuesNameTheParameterAndTheAcceptedRange) {
   const Teuchos::ParameterList valid = validTopLevelParameters();
   struct Case {
