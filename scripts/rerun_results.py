@@ -65,6 +65,7 @@ COMMANDS = {
                                      "default,unfiltered", "--name", "preconditioners-forcing-p2p3"],
     "qp-handover": ["bench/qp_handover.py"],
     "reference-solve": ["bench/reference_solve.py"],
+    "refined-levels": ["bench/refined_levels.py"],
     "scaling": ["scripts/scaling.py", "--ranks", "1,2"],
     "table2": ["scripts/table2.py"],
     "table2-fixed-centering": ["scripts/table2.py", "--methods", "primal-dual", "--set",
