@@ -38,7 +38,7 @@ std::vector<Point> latticePoints(const LagrangeSpace& space, const BoxBlock& blo
 }  // namespace
 
 PartWithSpace makeBoxMeshPart(const RCP<const Comm>& comm, const BoxGrid& box, const BoxDecomposition& blocks,
-                                   int degree) {
+                              int degree) {
   const int rank = comm->getRank(), dim = box.dim;
   const BoxBlock block = blocks.block(rank);
   PartWithSpace result;

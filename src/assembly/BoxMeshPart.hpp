@@ -14,6 +14,6 @@ namespace signorini::detail {
 
 // Collective; `blocks` has one block per rank of comm.
 PartWithSpace makeBoxMeshPart(const RCP<const Comm>& comm, const BoxGrid& box, const BoxDecomposition& blocks,
-                                   int degree);
+                              int degree);
 
 }  // namespace signorini::detail
