@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstddef>
+#include <cstdio>
 #include <cstdint>
 #include <fstream>
 #include <string>
@@ -12,9 +13,20 @@
 #include "fe/GmshMesh.hpp"
 #include "fuzz/FuzzInput.hpp"
 
+namespace {
+
+// The file every input is written to in turn, removed when the fuzzer exits.
+struct InputFile {
+  std::string path = "/tmp/signorini-fuzz-" + std::to_string(getpid()) + ".msh";
+  ~InputFile() { std::remove(path.c_str()); }
+};
+
+}  // namespace
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  static const std::string path = "/tmp/signorini-fuzz-" + std::to_string(getpid()) + ".msh";
-  std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-  signorini::fuzz::expectInputErrorOrNothing([&] { signorini::readGmshMesh(path); });
+  static const InputFile file;
+  std::ofstream(file.path, std::ios::binary)
+      .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  signorini::fuzz::expectInputErrorOrNothing([&] { signorini::readGmshMesh(file.path); });
   return 0;
 }
