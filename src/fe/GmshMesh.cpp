@@ -608,6 +608,20 @@ void addVertexSharers(const RawMesh& raw, const std::vector<Tag>& vertexTags, Gm
   part.vertexTags.assign(vertexTags.begin(), vertexTags.end());
 }
 
+// What the user should hear of the options of the .geo file at `path`, open in Gmsh: HXT
+// (Mesh.Algorithm3D = 10) meshes in parallel and, in Gmsh 4.8.4 even on one thread, makes a
+// different mesh at every run.
+std::vector<std::string> meshingNotes(const std::string& path) {
+  double algorithm = 0;
+  gmsh::option::getNumber("Mesh.Algorithm3D", algorithm);
+  if (gmsh::model::getDimension() != 3 || algorithm != 10) return {};
+  std::string version;
+  gmsh::option::getString("General.Version", version);
+  return {"Gmsh geometry '" + path + "' selects Gmsh's HXT 3D mesher (Mesh.Algorithm3D = 10), which in Gmsh " +
+          version + " may make a different mesh at every run: the number of unknowns and the results then vary "
+          "between runs; Gmsh's default 3D mesher (Delaunay, 1) makes the same mesh every time"};
+}
+
 // The mesh in this process; readGmshMesh runs it in a child. With `part`, the file is one
 // part of a partitioned mesh, and `part` receives the mesh and what it shares.
 SimplexMesh readInThisProcess(const std::string& path, double sizeFactor, GmshMeshPart* part = nullptr) {
@@ -626,11 +640,13 @@ SimplexMesh readInThisProcess(const std::string& path, double sizeFactor, GmshMe
   }
 
   RawMesh raw;
+  std::vector<std::string> notes;
   {
     std::lock_guard<std::mutex> lock(gmshMutex());
     try {
       openInThisProcess(path);
       if (geometry) {
+        notes = meshingNotes(path);
         gmsh::option::setNumber("Mesh.MeshSizeFactor", sizeFactor);
         gmsh::option::setNumber("Mesh.ElementOrder", 1);
         gmsh::model::mesh::generate(gmsh::model::getDimension());
@@ -664,37 +680,52 @@ SimplexMesh readInThisProcess(const std::string& path, double sizeFactor, GmshMe
       throw InputError(prefix + "Gmsh cannot read it");
     }
   }
-  if (!part) return buildMesh(raw, prefix);
   std::vector<Tag> vertexTags;
-  SimplexMesh mesh = buildMesh(raw, prefix, &vertexTags);
-  addVertexSharers(raw, vertexTags, *part);
+  SimplexMesh mesh = buildMesh(raw, prefix, part ? &vertexTags : nullptr);
+  mesh.notes = std::move(notes);
+  if (part) addVertexSharers(raw, vertexTags, *part);
   return mesh;
 }
 
-// Names and their tags through the pipe: the names, each ended by '\0', then the tags.
+// Strings through the pipe, each ended by '\0'.
+void sendStrings(int fd, const std::vector<std::string>& strings) {
+  std::vector<char> chars;
+  for (const std::string& string : strings) {
+    chars.insert(chars.end(), string.begin(), string.end());
+    chars.push_back('\0');
+  }
+  sendArray(fd, chars);
+}
+
+bool receiveStrings(int fd, std::vector<std::string>& strings) {
+  std::vector<char> chars;
+  if (!receiveArray(fd, chars)) return false;
+  for (auto start = chars.begin(); start != chars.end();) {
+    const auto end = std::find(start, chars.end(), '\0');
+    if (end == chars.end()) return false;
+    strings.emplace_back(start, end);
+    start = end + 1;
+  }
+  return true;
+}
+
+// Names and their tags through the pipe: the names, then the tags.
 void sendNames(int fd, const std::map<std::string, int>& named) {
-  std::vector<char> names;
+  std::vector<std::string> names;
   std::vector<int> tags;
   for (const auto& [name, tag] : named) {
-    names.insert(names.end(), name.begin(), name.end());
-    names.push_back('\0');
+    names.push_back(name);
     tags.push_back(tag);
   }
-  sendArray(fd, names);
+  sendStrings(fd, names);
   sendArray(fd, tags);
 }
 
 bool receiveNames(int fd, std::map<std::string, int>& named) {
-  std::vector<char> names;
+  std::vector<std::string> names;
   std::vector<int> tags;
-  if (!receiveArray(fd, names) || !receiveArray(fd, tags)) return false;
-  std::size_t start = 0;
-  for (int tag : tags) {
-    const std::size_t end = std::find(names.begin() + start, names.end(), '\0') - names.begin();
-    if (end == names.size()) return false;
-    named[std::string(names.begin() + start, names.begin() + end)] = tag;
-    start = end + 1;
-  }
+  if (!receiveStrings(fd, names) || !receiveArray(fd, tags) || names.size() != tags.size()) return false;
+  for (std::size_t i = 0; i < names.size(); ++i) named[names[i]] = tags[i];
   return true;
 }
 
@@ -711,6 +742,7 @@ void sendMesh(int fd, const SimplexMesh& mesh) {
   sendArray(fd, mesh.cellTags);
   sendNames(fd, mesh.boundaryTags);
   sendNames(fd, mesh.bodyTags);
+  sendStrings(fd, mesh.notes);
 }
 
 bool receiveMesh(int fd, SimplexMesh& mesh) {
@@ -718,7 +750,7 @@ bool receiveMesh(int fd, SimplexMesh& mesh) {
          receiveArray(fd, mesh.facets) && receiveArray(fd, mesh.facetTags) && receiveArray(fd, mesh.geometryFacets) &&
          receiveArray(fd, mesh.geometryFacetEntities) && receiveArray(fd, mesh.geometryEdges) &&
          receiveArray(fd, mesh.geometryEdgeEntities) && receiveArray(fd, mesh.cellTags) &&
-         receiveNames(fd, mesh.boundaryTags) && receiveNames(fd, mesh.bodyTags);
+         receiveNames(fd, mesh.boundaryTags) && receiveNames(fd, mesh.bodyTags) && receiveStrings(fd, mesh.notes);
 }
 
 double defaultTimeLimit(const std::string& path) {

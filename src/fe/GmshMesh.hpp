@@ -21,6 +21,8 @@ namespace signorini {
 // - In 2D the vertices keep x and y; every |z| must be <= 1e-12 times the mesh's extent.
 // - The vertices are the nodes used by the cells, numbered 0.. in increasing Gmsh node tag.
 // - Every cell is positively oriented (two vertices swapped where Gmsh's order is not).
+// - notes: of a .geo file that selects Gmsh's HXT 3D mesher (Mesh.Algorithm3D = 10), that
+//   its mesh changes from run to run (Gmsh 4.8.4's does, even on one thread).
 // - The boundary facets are the elements of the physical groups of dimension dim - 1, one
 //   entry per (group, element): a facet in two groups is listed twice. Each must be a face
 //   of a cell (not necessarily on the boundary: interfaces are allowed). Their vertex order

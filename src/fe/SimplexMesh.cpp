@@ -31,6 +31,7 @@ std::size_t SimplexMesh::bytes() const {
   std::size_t names = 0;
   for (const auto* tags : {&boundaryTags, &bodyTags})
     for (const auto& [name, value] : *tags) names += sizeof(value) + sizeof(name) + name.capacity() + 32;  // 32: tree node
+  for (const std::string& note : notes) names += sizeof(note) + note.capacity();
   return vertices.capacity() * sizeof(double) +
          (cells.capacity() + facets.capacity() + geometryFacets.capacity() + geometryEdges.capacity()) * sizeof(long long) +
          (facetTags.capacity() + cellTags.capacity() + geometryFacetEntities.capacity() + geometryEdgeEntities.capacity()) * sizeof(int) + names;

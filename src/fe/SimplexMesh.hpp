@@ -26,6 +26,9 @@ struct SimplexMesh {
   // left out: the new vertices already lie on them.
   std::vector<long long> geometryFacets, geometryEdges;
   std::vector<int> geometryFacetEntities, geometryEdgeEntities;
+  // What its reader found that the user should hear of, one line each: of a .geo, meshing
+  // options that make the mesh change from run to run.
+  std::vector<std::string> notes;
 
   long long numVertices() const { return dim > 0 ? static_cast<long long>(vertices.size()) / dim : 0; }
   long long numCells() const { return dim > 0 ? static_cast<long long>(cells.size()) / (dim + 1) : 0; }
@@ -41,7 +44,7 @@ struct SimplexMesh {
   // element routines expect.
   void cellVertexCoordinates(long long cell, double* coords) const;
 
-  // Heap bytes held by the arrays (their capacities) and the boundary names.
+  // Heap bytes held by the arrays (their capacities), the boundary names and the notes.
   std::size_t bytes() const;
 };
 

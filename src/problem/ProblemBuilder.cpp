@@ -205,6 +205,8 @@ std::shared_ptr<const GeometricGrid> makeSpace(const Teuchos::ParameterList& pro
     const Teuchos::TimeMonitor timer(*setupTimer("mesh read"));
     detail::runOnRoot(*comm, [&] { mesh = std::make_shared<SimplexMesh>(readGmshMesh(file.string(), gmsh.sizeFactor)); });
   }
+  if (mesh)
+    for (const std::string& note : mesh->notes) report.onNote(note);
   int dim = mesh ? mesh->dim : 0;
   Teuchos::broadcast(*comm, 0, 1, &dim);
   std::shared_ptr<detail::CoarseMeshLattice> lattice;

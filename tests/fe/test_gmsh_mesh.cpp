@@ -761,6 +761,25 @@ TEST(GmshGeometry, GeometryFacetsAreThoseOnCurvedEntities) {
     EXPECT_NEAR(std::hypot(mesh.vertices[2 * vertex], mesh.vertices[2 * vertex + 1]), 1.0, 1e-12);
 }
 
+// A .geo that selects Gmsh's HXT 3D mesher is meshed as it asks, with a note that its mesh may
+// change from run to run; one meshed by the default Delaunay mesher has no note.
+TEST(GmshGeometry, HxtMesherIsNotedAsChangingFromRunToRun) {
+  TempDir dir;
+  const std::string box = "SetFactory(\"OpenCASCADE\");\nBox(1) = {0, 0, 0, 1, 1, 1};\n"
+                          "MeshSize{ PointsOf{ Volume{1}; } } = 0.3;\n";
+  std::ofstream(dir.file("delaunay.geo")) << box;
+  std::ofstream(dir.file("hxt.geo")) << box << "Mesh.Algorithm3D = 10;\n";
+  const SimplexMesh delaunay = readGmshMesh(dir.file("delaunay.geo"));
+  const SimplexMesh hxt = readGmshMesh(dir.file("hxt.geo"));
+  EXPECT_TRUE(delaunay.notes.empty());
+  EXPECT_GT(hxt.numCells(), 0);
+  ASSERT_EQ(hxt.notes.size(), 1u);
+  EXPECT_NE(hxt.notes[0].find("'" + dir.file("hxt.geo") + "' selects Gmsh's HXT 3D mesher (Mesh.Algorithm3D = 10)"),
+            std::string::npos)
+      << hxt.notes[0];
+  EXPECT_NE(hxt.notes[0].find("different mesh at every run"), std::string::npos) << hxt.notes[0];
+}
+
 // A reader that does not answer within the time limit is stopped: an InputError naming the
 // file and the limit, and the next file is read as usual. (Meshing this geometry 200 times
 // finer than its sizes takes seconds; the limit is a tenth of one.)
