@@ -176,6 +176,10 @@ py::dict summaryOf(const SolveResult& r) {
   s["newton_steps"] = r.newtonSteps;
   s["krylov_iterations"] = r.krylovIterations;
   s["preconditioner_setups"] = r.preconditionerSetups;
+  py::list nonzeros;
+  for (long long count : r.multigridNonzeros) nonzeros.append(count);
+  s["multigrid_nonzeros"] = nonzeros;
+  s["operator_complexity"] = r.operatorComplexity();
   s["kkt"] = kkt;
   s["seconds"] = r.seconds;
   return s;

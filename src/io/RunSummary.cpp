@@ -35,6 +35,12 @@ std::string quoted(const std::string& s) {
   return out + "\"";
 }
 
+std::string integerArray(const std::vector<long long>& values) {
+  std::string out = "[";
+  for (std::size_t i = 0; i < values.size(); ++i) out += (i ? ", " : "") + std::to_string(values[i]);
+  return out + "]";
+}
+
 std::string kktJson(double stationarity, double complementarity, double primal, double dual) {
   return "{\"stationarity\": " + number(stationarity) + ", \"complementarity\": " + number(complementarity) +
          ", \"primal_feasibility\": " + number(primal) + ", \"dual_feasibility\": " + number(dual) + "}";
@@ -83,6 +89,8 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
     << "  \"krylov_iterations\": " << r.krylovIterations << ",\n"
     << "  \"max_krylov_per_newton\": " << r.maxKrylovPerNewton << ",\n"
     << "  \"preconditioner_setups\": " << r.preconditionerSetups << ",\n"
+    << "  \"multigrid_nonzeros\": " << integerArray(r.multigridNonzeros) << ",\n"
+    << "  \"operator_complexity\": " << (r.operatorComplexity() > 0 ? number(r.operatorComplexity()) : "null") << ",\n"
     << "  \"active_set_finish\": {\"attempts\": " << record.activeSetFinishes().size()
     << ", \"accepted\": " << (record.finishedOnActiveSet() ? "true" : "false")
     << ", \"krylov_iterations\": " << record.activeSetFinishKrylov() << "},\n"
@@ -114,9 +122,7 @@ void writeSummaryJson(const RunSummary& s, const std::string& path) {
   for (std::size_t i = 0; i < s.setupPeakMiBPerRank.size(); ++i) j << (i ? ", " : "") << number(s.setupPeakMiBPerRank[i]);
   j << "],\n  \"notes\": [";
   for (std::size_t i = 0; i < s.notes.size(); ++i) j << (i ? ", " : "") << quoted(s.notes[i]);
-  j << "],\n  \"grid_vertices\": [";
-  for (std::size_t i = 0; i < s.gridVertices.size(); ++i) j << (i ? ", " : "") << s.gridVertices[i];
-  j << "],\n"
+  j << "],\n  \"grid_vertices\": " << integerArray(s.gridVertices) << ",\n"
     << "  \"time\": {\"setup\": " << number(s.setupSeconds) << ", \"assembly\": " << number(s.assemblySeconds)
     << ", \"solve\": " << number(s.solveSeconds) << ", \"total\": " << number(s.totalSeconds) << "}\n"
     << "}\n";

@@ -331,6 +331,22 @@ TEST(Application, RunWritesSummaryHistoryAndQp) {
   EXPECT_TRUE(has("\"krylov_iterations\": " + std::to_string(r.krylovIterations) + ","));
   EXPECT_TRUE(has("\"max_krylov_per_newton\": " + std::to_string(r.maxKrylovPerNewton) + ","));
   EXPECT_TRUE(has("\"preconditioner_setups\": " + std::to_string(r.preconditionerSetups) + ","));
+  {  // the multigrid's matrix entries per level, finest first, and their sum over the first
+    ASSERT_FALSE(r.multigridNonzeros.empty());
+    std::string entries;
+    for (long long count : r.multigridNonzeros) entries += (entries.empty() ? "" : ", ") + std::to_string(count);
+    EXPECT_TRUE(has("\"multigrid_nonzeros\": [" + entries + "],")) << summary;
+    EXPECT_NE(log.str().find("multigrid: matrix entries per level " + entries + " (operator complexity "),
+              std::string::npos)
+        << log.str();
+    const std::size_t at = summary.find("\"operator_complexity\": ");
+    ASSERT_NE(at, std::string::npos);
+    const double complexity = std::stod(summary.substr(at + std::string("\"operator_complexity\": ").size()));
+    double sum = 0;
+    for (long long count : r.multigridNonzeros) sum += static_cast<double>(count);
+    EXPECT_NEAR(complexity, sum / static_cast<double>(r.multigridNonzeros[0]), 1e-12);
+    EXPECT_GE(complexity, 1.0);
+  }
   EXPECT_TRUE(has("\"n\": 242,"));
   EXPECT_TRUE(has("\"m\": 11,"));
   EXPECT_TRUE(has("\"converged\": true"));

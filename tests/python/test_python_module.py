@@ -56,6 +56,10 @@ def p2_with_cells(qp_dir, summary_path):
     assert abs(summary["objective"] - program["objective"]) <= 1e-10 * abs(program["objective"])
     assert summary["krylov_iterations"] <= 1.3 * program["krylov_iterations"], \
         (summary["krylov_iterations"], program["krylov_iterations"])
+    levels = summary["multigrid_nonzeros"]
+    assert len(levels) >= 2 and all(count > 0 for count in levels[1:]), levels
+    if levels[0] > 0:
+        assert abs(summary["operator_complexity"] - sum(levels) / levels[0]) <= 1e-12 * sum(levels), summary
     refused(lambda: signorini.solve(Q[rows], b[rows], A[constraints], d[constraints], cells=cells), "coordinates")
     return summary["krylov_iterations"], program["krylov_iterations"]
 

@@ -3,7 +3,9 @@
 /// What an interior point solve returns: the solution, its KKT measures and the counters of
 /// the paper's Table 2, which every method has. The history of the Newton steps and the
 /// method-specific counters go to observers (IterationObserver, SolveRecorder).
+#include <numeric>
 #include <string>
+#include <vector>
 
 #include "signorini/core/TpetraTypes.hpp"
 #include "signorini/solver/KKTMeasures.hpp"
@@ -51,6 +53,16 @@ struct SolveResult {
   long long krylovIterations = 0;  ///< CG iterations of the whole solve, the active-set finish's included
   int maxKrylovPerNewton = 0;      ///< largest CG count of one Newton system of the barrier steps
   int preconditionerSetups = 0;  ///< AMG hierarchies built
+  /// Entries of each multigrid level's matrix in the last build, finest first (0 for a fine
+  /// P2/P3 level applied without a matrix); empty without a multigrid preconditioner.
+  std::vector<long long> multigridNonzeros;
+  /// The sum of multigridNonzeros over its first: the cost of a cycle against the fine level's
+  /// (MueLu's "operator complexity"); 0 where the fine level has no matrix.
+  double operatorComplexity() const {
+    if (multigridNonzeros.empty() || multigridNonzeros.front() == 0) return 0.0;
+    return static_cast<double>(std::accumulate(multigridNonzeros.begin(), multigridNonzeros.end(), 0LL)) /
+           static_cast<double>(multigridNonzeros.front());
+  }
   double seconds = 0;
 
   bool converged() const { return status == SolveStatus::Converged; }

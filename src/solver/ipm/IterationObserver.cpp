@@ -54,6 +54,13 @@ void IterationLog::onFinish(const SolveResult& r) {
   if (finishAttempts_ > 0)
     out_ << "  active-set finish: " << finishAttempts_ << " tried, "
          << (finishAccepted_ ? "the last step" : "none accepted") << ", " << finishKrylov_ << " Krylov iterations\n";
+  if (!r.multigridNonzeros.empty()) {
+    out_ << "  multigrid: matrix entries per level";
+    for (std::size_t l = 0; l < r.multigridNonzeros.size(); ++l) out_ << (l ? ", " : " ") << r.multigridNonzeros[l];
+    char complexity[64];
+    std::snprintf(complexity, sizeof complexity, " (operator complexity %.2f)", r.operatorComplexity());
+    out_ << (r.operatorComplexity() > 0 ? complexity : "") << "\n";
+  }
   if (!r.converged()) out_ << "  " << r.message << "\n";
   out_ << std::flush;
 }

@@ -224,6 +224,7 @@ SolveResult PrimalBarrierMethod::run(IterationObserver& observer, Teuchos::Time&
     nextSubproblem();
   }
   result_.preconditionerSetups = newton_.preconditionerSetups();
+  result_.multigridNonzeros = newton_.multigridNonzeros();
   finishResult(qp_, *v_, lambda_, s_, result_);
   result_.seconds = timer.totalElapsedTime(true);
   observer.onFinish(result_);

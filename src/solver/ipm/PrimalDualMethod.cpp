@@ -157,6 +157,7 @@ SolveResult PrimalDualMethod::run(IterationObserver& observer, Teuchos::Time& ti
   qp_.A->apply(*v_, slack);
   slack.update(1.0, *qp_.d, -1.0);
   result_.preconditionerSetups = newton_.preconditionerSetups();
+  result_.multigridNonzeros = newton_.multigridNonzeros();
   finishResult(qp_, *v_, lambda_, slack, result_);
   result_.seconds = timer.totalElapsedTime(true);
   observer.onFinish(result_);

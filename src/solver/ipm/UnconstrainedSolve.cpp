@@ -30,6 +30,7 @@ SolveResult solveUnconstrained(const ContactQP& qp, const MultigridInput& multig
   ++result.newtonSteps;
   countKrylovSolve(result, kr.iterations, kr.iterations);
   result.preconditionerSetups = newton.preconditionerSetups();
+  result.multigridNonzeros = newton.multigridNonzeros();
   const Vector none(qp.A->getRangeMap());
   finishResult(qp, *v, none, none, result);
 

@@ -76,6 +76,9 @@ class NewtonSystemSolver {
   int maxIterations() const { return maxIterations_; }
   // Number of AMG hierarchies built so far.
   int preconditionerSetups() const { return amgBuilds_ + (strategy_ == PreconditionerType::AmgOfQ ? 1 : 0); }
+  // The entries of the multigrid levels' matrices in its last build, finest first (empty
+  // without one). Collective.
+  std::vector<long long> multigridNonzeros() const { return amg_ ? amg_->levelNonzeros() : std::vector<long long>(); }
 
  private:
   Teuchos::ParameterList params_;  // the validated "Krylov" and "Preconditioner" sublists

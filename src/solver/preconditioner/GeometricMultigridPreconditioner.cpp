@@ -723,6 +723,18 @@ RCP<const CrsMatrix> GeometricMultigridPreconditioner::levelMatrix(int level) co
   return levels_[level]->A;
 }
 
+std::vector<long long> GeometricMultigridPreconditioner::levelNonzeros() const {
+  if (cycle_.is_null()) return {};
+  std::vector<long long> nonzeros;
+  for (const auto& level : levels_) {
+    const RCP<const CrsMatrix> A = level->A.is_null() && level == levels_.front() ? fineStiffness_ : RCP<const CrsMatrix>(level->A);
+    nonzeros.push_back(A.is_null() ? 0 : static_cast<long long>(A->getGlobalNumEntries()));
+  }
+  const std::vector<long long> below = coarse_ ? coarse_->levelNonzeros() : std::vector<long long>();
+  if (below.size() > 1) nonzeros.insert(nonzeros.end(), below.begin() + 1, below.end());  // its first is ours
+  return nonzeros;
+}
+
 RCP<Operator> GeometricMultigridPreconditioner::getOperator() const {
   if (cycle_.is_null()) throw Error("GeometricMultigridPreconditioner::getOperator called before compute()");
   return cycle_;

@@ -89,6 +89,9 @@ class GeometricMultigridPreconditioner : public MultilevelPreconditioner {
   void computeForSum(const RCP<const Operator>& H, const Vector& diagonal, const RCP<const CrsMatrix>& C,
                      bool reuse = false);
   RCP<Operator> getOperator() const override;
+  // A fine level given as an operator counts Q's entries (those of C lie in Q's pattern), or 0
+  // for a P_k space whose Q is not assembled; MueLu as the coarse solver adds its levels.
+  std::vector<long long> levelNonzeros() const override;
   // Below a coarsest grid too large to factor, MueLu is by default the coarse solver, its
   // hierarchy set up again at every build. After keepAlgebraicLevels() (before the first
   // build) MueLu's levels join the cycle instead: its hierarchy of the coarsest grid's matrix

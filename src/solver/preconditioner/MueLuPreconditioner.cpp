@@ -172,6 +172,13 @@ std::vector<MueLuPreconditioner::CoarseLevel> MueLuPreconditioner::coarseLevels(
   return levels;
 }
 
+std::vector<long long> MueLuPreconditioner::levelNonzeros() const {
+  if (built_.is_null()) return {};
+  std::vector<long long> nonzeros{static_cast<long long>(built_->getGlobalNumEntries())};
+  for (const CoarseLevel& level : coarseLevels()) nonzeros.push_back(static_cast<long long>(level.A->getGlobalNumEntries()));
+  return nonzeros;
+}
+
 RCP<Operator> MueLuPreconditioner::getOperator() const {
   if (op_.is_null()) throw Error("MueLuPreconditioner::getOperator called before compute()");
   return op_;

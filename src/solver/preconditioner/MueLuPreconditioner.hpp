@@ -42,6 +42,7 @@ class MueLuPreconditioner : public MultilevelPreconditioner {
   void compute(const RCP<CrsMatrix>& A, bool reuse = false) override;
 
   RCP<Operator> getOperator() const override;
+  std::vector<long long> levelNonzeros() const override;
   const Teuchos::ParameterList& parameters() const { return params_; }
   // The coarse levels of the last hierarchy built, finest first: each one's matrix and the
   // prolongator from it to the level above (the first: to the matrix given to compute()).

@@ -1,6 +1,8 @@
 #pragma once
 // A multigrid preconditioner built from an assembled matrix: what the Newton system solver
 // needs of MueLu's algebraic hierarchy and of the geometric one alike.
+#include <vector>
+
 #include "signorini/core/TpetraTypes.hpp"
 
 namespace signorini {
@@ -20,6 +22,10 @@ class MultilevelPreconditioner {
   }
   // One cycle, an approximate inverse of the last A computed.
   virtual RCP<Operator> getOperator() const = 0;
+  // The entries of each level's matrix in the last build, finest first, the levels of a
+  // coarse solver that is a hierarchy itself included; empty where there are no levels.
+  // Collective.
+  virtual std::vector<long long> levelNonzeros() const { return {}; }
 };
 
 }  // namespace signorini

@@ -389,6 +389,41 @@ TEST(GeometricMultigrid, FineOperatorGivesTheHierarchyOfTheAssembledSum) {
   }
 }
 
+// levelNonzeros counts each level's matrix: the fine one given to compute() (Q's, for a fine
+// level given as the operator Q + C), the Galerkin products, and MueLu's coarser levels where
+// MueLu is the coarse solver; nothing before a build.
+TEST(GeometricMultigrid, LevelNonzerosCountEveryLevelsMatrix) {
+  ContactBox box(2, 32);
+  const ContactQP& qp = box.problem.qp;
+  const MultigridInput& mg = box.problem.multigrid;
+  const RCP<CrsMatrix> H = box.hessian(2);
+  const auto entries = [](const CrsMatrix& A) { return static_cast<long long>(A.getGlobalNumEntries()); };
+  for (long long directSolveSize : {1000LL, 0LL}) {  // a direct coarsest solve, MueLu below the grids
+    const std::string label = "direct solve size " + std::to_string(directSolveSize);
+    GeometricMultigridPreconditioner gmg = multigrid(qp, mg, 150, 3, directSolveSize);
+    EXPECT_TRUE(gmg.levelNonzeros().empty()) << label;
+    gmg.compute(H);
+    const std::vector<long long> nonzeros = gmg.levelNonzeros();
+    ASSERT_GE(nonzeros.size(), static_cast<std::size_t>(gmg.geometricLevels() + 1)) << label;
+    EXPECT_EQ(nonzeros[0], entries(*H)) << label;
+    for (int l = 1; l <= gmg.geometricLevels(); ++l) EXPECT_EQ(nonzeros[l], entries(*gmg.levelMatrix(l))) << label;
+    const std::size_t below = nonzeros.size() - (gmg.geometricLevels() + 1);
+    if (directSolveSize > 0) EXPECT_EQ(below, 0u) << label;
+    else EXPECT_GE(below, 1u) << label << ": MueLu's levels below the coarsest grid";
+    for (std::size_t l = 1; l < nonzeros.size(); ++l) EXPECT_LT(nonzeros[l], nonzeros[l - 1]) << label;
+  }
+  const RCP<const CrsMatrix> Q = assembledStiffness(qp, mg);
+  Vector diagonalOfQ(qp.Q->getRangeMap());
+  Q->getLocalDiagCopy(diagonalOfQ);
+  GeometricMultigridPreconditioner sum = multigrid(qp, mg, 150, 3, 1000);
+  sum.setFineStiffness(Q);
+  const ContactBox::Sum terms = box.sum(2, diagonalOfQ);
+  sum.computeForSum(Teuchos::rcpFromRef(box.H), terms.diagonal, terms.C);
+  ASSERT_EQ(sum.levelNonzeros().size(), static_cast<std::size_t>(sum.geometricLevels() + 1));
+  EXPECT_EQ(sum.levelNonzeros()[0], entries(*Q));
+  EXPECT_EQ(sum.levelNonzeros()[1], entries(*sum.levelMatrix(1)));
+}
+
 // After a Galerkin update the smoothers' eigenvalue estimates take 3 Lanczos steps from the
 // previous Ritz vectors instead of 15 from scratch, and must be as good: CG needs no more
 // iterations than with a fresh build, at every step of a sequence whose weights grow by two
