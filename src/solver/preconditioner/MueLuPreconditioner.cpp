@@ -172,10 +172,15 @@ std::vector<MueLuPreconditioner::CoarseLevel> MueLuPreconditioner::coarseLevels(
   return levels;
 }
 
+// Counting stops at a level whose matrix MueLu did not keep (as the user's list may ask for
+// its coarsest): a count is no reason to fail a solve.
 std::vector<long long> MueLuPreconditioner::levelNonzeros() const {
-  if (built_.is_null()) return {};
+  using XpetraMatrix = Xpetra::Matrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
+  if (op_.is_null() || built_.is_null()) return {};
+  const RCP<Hierarchy> hierarchy = Teuchos::rcp_dynamic_cast<MueLuOperator>(op_, true)->GetHierarchy();
   std::vector<long long> nonzeros{static_cast<long long>(built_->getGlobalNumEntries())};
-  for (const CoarseLevel& level : coarseLevels()) nonzeros.push_back(static_cast<long long>(level.A->getGlobalNumEntries()));
+  for (int l = 1; l < hierarchy->GetNumLevels() && hierarchy->GetLevel(l)->IsAvailable("A"); ++l)
+    nonzeros.push_back(static_cast<long long>(hierarchy->GetLevel(l)->Get<RCP<XpetraMatrix>>("A")->getGlobalNumEntries()));
   return nonzeros;
 }
 

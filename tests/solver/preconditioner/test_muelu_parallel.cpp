@@ -4,6 +4,8 @@
 // reuse of a hierarchy.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include <Galeri_XpetraMaps.hpp>
 #include <Galeri_XpetraProblemFactory.hpp>
 #include <Tpetra_Core.hpp>
@@ -83,6 +85,24 @@ TEST(MueLuParallel, Elasticity2DDefaultsConvergeFast) {
                 Tpetra::getDefaultComm()->getSize(), r.iterations);
   EXPECT_TRUE(r.converged);
   EXPECT_LE(r.iterations, 40);
+}
+
+// levelNonzeros counts the matrix given to compute() and each coarse level's, fewer at each
+// level; nothing before a build.
+TEST(MueLuParallel, LevelNonzerosCountEveryLevelsMatrix) {
+  const ElasticityProblem p = galeriElasticity(3, 16);
+  MueLuPreconditioner amg(Teuchos::ParameterList(), 3, p.nullspace, Teuchos::null);
+  EXPECT_TRUE(amg.levelNonzeros().empty());
+  amg.compute(p.A);
+  const std::vector<long long> nonzeros = amg.levelNonzeros();
+  const std::vector<MueLuPreconditioner::CoarseLevel> coarse = amg.coarseLevels();
+  ASSERT_GE(coarse.size(), 1u);
+  ASSERT_EQ(nonzeros.size(), coarse.size() + 1);
+  EXPECT_EQ(nonzeros[0], static_cast<long long>(p.A->getGlobalNumEntries()));
+  for (std::size_t l = 0; l < coarse.size(); ++l) {
+    EXPECT_EQ(nonzeros[l + 1], static_cast<long long>(coarse[l].A->getGlobalNumEntries()));
+    EXPECT_LT(nonzeros[l + 1], nonzeros[l]);
+  }
 }
 
 TEST(MueLuParallel, Elasticity3DDefaultsConvergeFast) {
