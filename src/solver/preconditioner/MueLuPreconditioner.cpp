@@ -19,6 +19,7 @@ namespace signorini {
 using MueLuOperator = MueLu::TpetraOperator<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
 using Hierarchy = MueLu::Hierarchy<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
 using Interpreter = MueLu::ParameterListInterpreter<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
+using XpetraMatrix = Xpetra::Matrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
 
 Teuchos::ParameterList MueLuPreconditioner::defaultParameters(int blockSize) {
   Teuchos::ParameterList p("MueLu");
@@ -117,6 +118,11 @@ int highValenceRowSize(const CrsMatrix& A, int blockSize) {
   return kLargest;
 }
 
+// The hierarchy behind the operator compute() made.
+RCP<Hierarchy> hierarchyOf(const RCP<Operator>& op) {
+  return Teuchos::rcp_dynamic_cast<MueLuOperator>(op, true)->GetHierarchy();
+}
+
 }  // namespace
 
 void MueLuPreconditioner::compute(const RCP<CrsMatrix>& A, bool reuse) {
@@ -157,10 +163,9 @@ void MueLuPreconditioner::compute(const RCP<CrsMatrix>& A, bool reuse) {
 }
 
 std::vector<MueLuPreconditioner::CoarseLevel> MueLuPreconditioner::coarseLevels() const {
-  using XpetraMatrix = Xpetra::Matrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
   using Utilities = MueLu::Utilities<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
   if (op_.is_null()) throw Error("MueLuPreconditioner::coarseLevels called before compute()");
-  const RCP<Hierarchy> hierarchy = Teuchos::rcp_dynamic_cast<MueLuOperator>(op_, true)->GetHierarchy();
+  const RCP<Hierarchy> hierarchy = hierarchyOf(op_);
   std::vector<CoarseLevel> levels;
   for (int l = 1; l < hierarchy->GetNumLevels(); ++l) {
     const RCP<MueLu::Level> level = hierarchy->GetLevel(l);
@@ -175,9 +180,8 @@ std::vector<MueLuPreconditioner::CoarseLevel> MueLuPreconditioner::coarseLevels(
 // Counting stops at a level whose matrix MueLu did not keep (as the user's list may ask for
 // its coarsest): a count is no reason to fail a solve.
 std::vector<long long> MueLuPreconditioner::levelNonzeros() const {
-  using XpetraMatrix = Xpetra::Matrix<Scalar, LocalOrdinal, GlobalOrdinal, Node>;
   if (op_.is_null() || built_.is_null()) return {};
-  const RCP<Hierarchy> hierarchy = Teuchos::rcp_dynamic_cast<MueLuOperator>(op_, true)->GetHierarchy();
+  const RCP<Hierarchy> hierarchy = hierarchyOf(op_);
   std::vector<long long> nonzeros{static_cast<long long>(built_->getGlobalNumEntries())};
   for (int l = 1; l < hierarchy->GetNumLevels() && hierarchy->GetLevel(l)->IsAvailable("A"); ++l)
     nonzeros.push_back(static_cast<long long>(hierarchy->GetLevel(l)->Get<RCP<XpetraMatrix>>("A")->getGlobalNumEntries()));
